@@ -1,0 +1,426 @@
+//! The experiment runner: scenarios × a grid of overrides × seeds, one [`Row`] per run.
+//!
+//! ```json
+//! {
+//!   "version": 1,
+//!   "name": "amas-fig23",
+//!   "title": "Total steps against the number of robots",
+//!   "scenarios": ["amas-L", "amas-T"],
+//!   "grid": { "robots": [1, 2, 3], "field": ["continuous", "discrete"] },
+//!   "set": { "max_steps": 50000 },
+//!   "seeds": 10,
+//!   "trace": { "every": 10, "metrics": ["built"] },
+//!   "plot": { "...": "read by the page only" }
+//! }
+//! ```
+//! `scenarios` holds preset names or whole scenario objects; `grid` keys are dotted scenario paths,
+//! combined in every way (keys in sorted order, the last varying fastest); `set` applies to every
+//! run; `seeds` is a count (seeds 1..=N) or a list. Jobs are numbered scenario-major, then grid,
+//! then seed, and every runner reports rows in that order.
+
+use serde::{Deserialize, Serialize};
+use serde_json::{Map, Value};
+
+use crate::error::{Error, Result};
+use crate::hash;
+use crate::models::Metrics;
+use crate::presets;
+use crate::run::Run;
+use crate::scenario::{canonical, Scenario, MAX_SEED};
+
+/// The version of this program, carried by every row.
+pub const PROGRAM_VERSION: &str = concat!("kumiki ", env!("CARGO_PKG_VERSION"));
+const MAX_JOBS: usize = 1_000_000;
+
+#[derive(Clone, Debug)]
+pub struct Experiment {
+    pub name: String,
+    pub title: String,
+    pub description: String,
+    pub scenarios: Vec<Scenario>,
+    pub grid: Vec<(String, Vec<Value>)>,
+    pub set: Vec<(String, Value)>,
+    pub seeds: Vec<u64>,
+    pub trace: Option<TraceSpec>,
+    /// How the page draws the result; opaque to the core.
+    pub plot: Value,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct TraceSpec {
+    pub every: u64,
+    pub metrics: Vec<String>,
+}
+
+/// One run to do.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Job {
+    pub index: usize,
+    pub scenario: usize,
+    pub params: Vec<(String, Value)>,
+    pub seed: u64,
+}
+
+/// A metric sampled during a run: `step[i]` and `values[name][i]`.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Trace {
+    pub step: Vec<u64>,
+    pub values: Map<String, Value>,
+}
+
+/// The result of one run, traceable to its scenario and program.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Row {
+    pub scenario: String,
+    pub seed: u64,
+    pub completed: bool,
+    pub steps: u64,
+    pub hash: String,
+    pub metrics: Metrics,
+    pub params: Map<String, Value>,
+    pub scenario_hash: String,
+    pub version: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trace: Option<Trace>,
+}
+
+impl Experiment {
+    pub fn from_json(text: &str) -> Result<Experiment> {
+        let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
+        Experiment::from_value(value)
+    }
+
+    /// A built-in experiment by name, or an experiment file's text.
+    pub fn named_or_json(name_or_text: &str) -> Result<Experiment> {
+        if name_or_text.trim_start().starts_with('{') {
+            Experiment::from_json(name_or_text)
+        } else {
+            Experiment::from_json(presets::experiment_json(name_or_text)?)
+        }
+    }
+
+    pub fn from_value(value: Value) -> Result<Experiment> {
+        let Value::Object(mut map) = value else {
+            return Err(Error::field("", "an experiment is a JSON object"));
+        };
+        match map.remove("version") {
+            Some(v) if v == 1u64 => {}
+            Some(v) => return Err(Error::field("version", format!("expected 1, found {v}"))),
+            None => return Err(Error::field("version", "is required")),
+        }
+        let text = |map: &mut Map<String, Value>, key: &str| -> Result<String> {
+            match map.remove(key) {
+                None => Ok(String::new()),
+                Some(Value::String(s)) => Ok(s),
+                Some(_) => Err(Error::field(key, "expected text")),
+            }
+        };
+        let name = text(&mut map, "name")?;
+        if name.is_empty() {
+            return Err(Error::field("name", "is required"));
+        }
+        let title = text(&mut map, "title")?;
+        let description = text(&mut map, "description")?;
+
+        let scenarios = match map.remove("scenarios") {
+            Some(Value::Array(list)) if !list.is_empty() => {
+                list.into_iter()
+                    .enumerate()
+                    .map(|(i, item)| {
+                        let path = format!("scenarios[{i}]");
+                        match item {
+                            Value::String(name) => presets::scenario(&name)
+                                .map_err(|e| Error::field(&path, e.to_string())),
+                            obj @ Value::Object(_) => {
+                                Scenario::from_value(obj).map_err(|e| e.within(&path))
+                            }
+                            _ => Err(Error::field(
+                                path,
+                                "expected a preset name or a scenario object",
+                            )),
+                        }
+                    })
+                    .collect::<Result<Vec<_>>>()?
+            }
+            _ => return Err(Error::field("scenarios", "expected a non-empty list")),
+        };
+
+        let grid = match map.remove("grid") {
+            None => Vec::new(),
+            Some(Value::Object(g)) => g
+                .into_iter()
+                .map(|(k, v)| match v {
+                    Value::Array(values) if !values.is_empty() => Ok((k, values)),
+                    _ => Err(Error::field(
+                        format!("grid.{k}"),
+                        "expected a non-empty list of values",
+                    )),
+                })
+                .collect::<Result<Vec<_>>>()?,
+            Some(_) => return Err(Error::field("grid", "expected an object of path: [values]")),
+        };
+        let set = match map.remove("set") {
+            None => Vec::new(),
+            Some(Value::Object(s)) => s.into_iter().collect(),
+            Some(_) => return Err(Error::field("set", "expected an object of path: value")),
+        };
+        let seeds = match map.remove("seeds") {
+            None => vec![1],
+            Some(Value::Number(n)) => match n.as_u64() {
+                Some(k) if (1..=MAX_JOBS as u64).contains(&k) => (1..=k).collect(),
+                _ => {
+                    return Err(Error::field(
+                        "seeds",
+                        format!("expected a count from 1 to {MAX_JOBS}"),
+                    ))
+                }
+            },
+            Some(Value::Array(list)) if !list.is_empty() => list
+                .iter()
+                .enumerate()
+                .map(|(i, v)| match v.as_u64() {
+                    Some(s) if s <= MAX_SEED => Ok(s),
+                    _ => Err(Error::field(
+                        format!("seeds[{i}]"),
+                        "expected a seed (a whole number)",
+                    )),
+                })
+                .collect::<Result<Vec<_>>>()?,
+            Some(_) => return Err(Error::field("seeds", "expected a count or a list of seeds")),
+        };
+        let trace = match map.remove("trace") {
+            None => None,
+            Some(Value::Object(mut t)) => {
+                let every = match t.remove("every") {
+                    None => 1,
+                    Some(v) => v.as_u64().filter(|&e| e > 0).ok_or_else(|| {
+                        Error::field("trace.every", "expected a whole number of at least 1")
+                    })?,
+                };
+                let metrics = match t.remove("metrics") {
+                    Some(Value::Array(list)) if !list.is_empty() => list
+                        .into_iter()
+                        .map(|m| match m {
+                            Value::String(s) => Ok(s),
+                            _ => Err(Error::field("trace.metrics", "expected metric names")),
+                        })
+                        .collect::<Result<Vec<_>>>()?,
+                    _ => {
+                        return Err(Error::field(
+                            "trace.metrics",
+                            "expected a non-empty list of metric names",
+                        ))
+                    }
+                };
+                if let Some(k) = t.keys().next() {
+                    return Err(Error::field(
+                        format!("trace.{k}"),
+                        "unknown field; expected every or metrics",
+                    ));
+                }
+                Some(TraceSpec { every, metrics })
+            }
+            Some(_) => {
+                return Err(Error::field(
+                    "trace",
+                    "expected {\"every\": N, \"metrics\": [...]}",
+                ))
+            }
+        };
+        let plot = map.remove("plot").unwrap_or(Value::Null);
+        if let Some(k) = map.keys().next() {
+            return Err(Error::field(
+                k.as_str(),
+                "unknown field; expected version, name, title, description, scenarios, grid, set, seeds, trace or plot",
+            ));
+        }
+        let experiment = Experiment {
+            name,
+            title,
+            description,
+            scenarios,
+            grid,
+            set,
+            seeds,
+            trace,
+            plot,
+        };
+        let combos = experiment.scenarios.len() * experiment.combinations().len();
+        if combos.saturating_mul(experiment.seeds.len()) > MAX_JOBS {
+            return Err(Error::field("grid", format!("more than {MAX_JOBS} runs")));
+        }
+        // Every combination must give a valid scenario; say which one does not.
+        for (s, scenario) in experiment.scenarios.iter().enumerate() {
+            for params in experiment.combinations() {
+                experiment.scenario_for(s, &params).map_err(|e| {
+                    let at: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                    Error::field(
+                        "grid",
+                        format!("{} with {}: {e}", scenario.name, at.join(", ")),
+                    )
+                })?;
+            }
+        }
+        Ok(experiment)
+    }
+
+    /// Every combination of grid values, the last key varying fastest.
+    fn combinations(&self) -> Vec<Vec<(String, Value)>> {
+        let mut combos: Vec<Vec<(String, Value)>> = vec![Vec::new()];
+        for (key, values) in &self.grid {
+            combos = combos
+                .into_iter()
+                .flat_map(|prefix| {
+                    values.iter().map(move |v| {
+                        let mut c = prefix.clone();
+                        c.push((key.clone(), v.clone()));
+                        c
+                    })
+                })
+                .collect();
+        }
+        combos
+    }
+
+    pub fn jobs(&self) -> Vec<Job> {
+        let combos = self.combinations();
+        let mut jobs = Vec::with_capacity(self.scenarios.len() * combos.len() * self.seeds.len());
+        for s in 0..self.scenarios.len() {
+            for params in &combos {
+                for &seed in &self.seeds {
+                    jobs.push(Job {
+                        index: jobs.len(),
+                        scenario: s,
+                        params: params.clone(),
+                        seed,
+                    });
+                }
+            }
+        }
+        jobs
+    }
+
+    fn scenario_for(&self, s: usize, params: &[(String, Value)]) -> Result<Scenario> {
+        let mut overrides = self.set.clone();
+        overrides.extend(params.iter().cloned());
+        self.scenarios[s].with_overrides(&overrides)
+    }
+
+    pub fn run_job(&self, job: &Job) -> Result<Row> {
+        let mut scenario = self.scenario_for(job.scenario, &job.params)?;
+        scenario.seed = job.seed;
+        let scenario_hash = hash::hex(scenario.hash_without_seed());
+        let mut run = Run::new(scenario)?;
+        let trace = self.trace.as_ref().map(|spec| {
+            let mut trace = Trace::default();
+            loop {
+                let steps = run.steps();
+                let finished = run.finished();
+                if steps % spec.every == 0 || finished {
+                    trace.sample(steps, &run.model().metrics(), &spec.metrics);
+                }
+                if !run.step() {
+                    break;
+                }
+            }
+            trace
+        });
+        run.run_to_end();
+        let outcome = run.outcome();
+        Ok(Row {
+            scenario: outcome.scenario,
+            seed: outcome.seed,
+            completed: outcome.completed,
+            steps: outcome.steps,
+            hash: outcome.hash,
+            metrics: outcome.metrics,
+            params: canonical_params(&job.params),
+            scenario_hash,
+            version: PROGRAM_VERSION.to_string(),
+            trace,
+        })
+    }
+}
+
+impl Trace {
+    fn sample(&mut self, step: u64, metrics: &Metrics, names: &[String]) {
+        if self.step.last() == Some(&step) {
+            return;
+        }
+        self.step.push(step);
+        for name in names {
+            let v = metrics.get(name).cloned().unwrap_or(Value::Null);
+            match self
+                .values
+                .entry(name.clone())
+                .or_insert_with(|| Value::Array(Vec::new()))
+            {
+                Value::Array(list) => list.push(v),
+                _ => unreachable!("trace values are lists"),
+            }
+        }
+    }
+}
+
+fn canonical_params(params: &[(String, Value)]) -> Map<String, Value> {
+    match canonical(Value::Object(params.iter().cloned().collect())) {
+        Value::Object(m) => m,
+        _ => unreachable!(),
+    }
+}
+
+/// Rows as CSV: fixed columns, then `params.*` and `metrics.*` columns in sorted order.
+pub fn to_csv(rows: &[Row]) -> String {
+    let mut params: Vec<&String> = rows.iter().flat_map(|r| r.params.keys()).collect();
+    params.sort();
+    params.dedup();
+    let mut metrics: Vec<&String> = rows.iter().flat_map(|r| r.metrics.keys()).collect();
+    metrics.sort();
+    metrics.dedup();
+    let mut out = String::from("scenario,seed,completed,steps,hash,scenario_hash,version");
+    for p in &params {
+        out.push_str(&format!(",{}", csv_field(&format!("params.{p}"))));
+    }
+    for m in &metrics {
+        out.push_str(&format!(",{}", csv_field(&format!("metrics.{m}"))));
+    }
+    out.push('\n');
+    for r in rows {
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{}",
+            csv_field(&r.scenario),
+            r.seed,
+            r.completed,
+            r.steps,
+            r.hash,
+            r.scenario_hash,
+            csv_field(&r.version)
+        ));
+        for p in &params {
+            out.push(',');
+            out.push_str(&csv_value(r.params.get(*p)));
+        }
+        for m in &metrics {
+            out.push(',');
+            out.push_str(&csv_value(r.metrics.get(*m)));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn csv_value(v: Option<&Value>) -> String {
+    match v {
+        None | Some(Value::Null) => String::new(),
+        Some(Value::String(s)) => csv_field(s),
+        Some(other) => csv_field(&other.to_string()),
+    }
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}

@@ -1,0 +1,158 @@
+//! The model interface and the registry of models, one module per model.
+//!
+//! A model owns its state and its [`Rng`](crate::rng::Rng); the [`Run`](crate::run::Run) drives
+//! it. Everything a renderer needs is described once by [`Layout`] and then read each frame as
+//! flat buffers ([`Model::cells`], [`Model::field`]) plus small lists ([`Model::agents`],
+//! [`Model::events`]).
+
+use std::borrow::Cow;
+
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+use crate::error::{Error, Result};
+use crate::hash::StateHasher;
+use crate::lattice::LatticeKind;
+use crate::scenario::Scenario;
+
+pub mod amas;
+
+/// Named metric values, sorted by name. Counts are integers, ratios floats.
+pub type Metrics = Map<String, Value>;
+
+/// A model action (a disturbance), as written in a scenario or sent by a click in the page.
+pub type Action = Map<String, Value>;
+
+/// A code in the cell buffer, an agent kind or an event kind, with its name and colour.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct LegendEntry {
+    pub code: u8,
+    pub name: String,
+    /// CSS colour.
+    pub color: String,
+}
+
+impl LegendEntry {
+    pub fn new(code: u8, name: &str, color: &str) -> Self {
+        LegendEntry {
+            code,
+            name: name.into(),
+            color: color.into(),
+        }
+    }
+}
+
+/// A scalar field defined on the cells, drawn as an overlay.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FieldInfo {
+    pub name: String,
+    pub label: String,
+    /// Draw gradient arrows on top of the heatmap.
+    pub arrows: bool,
+}
+
+/// A click tool the page offers for this model. Clicking a cell sends `action` with the cell's
+/// index added as `"cells": [i]`.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct ToolInfo {
+    pub name: String,
+    pub label: String,
+    pub action: Action,
+}
+
+/// What a renderer needs to know once per run.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Layout {
+    pub lattice: LatticeKind,
+    /// Width, height, depth in cells.
+    pub dims: [u32; 3],
+    /// Meaning of each code in the cell buffer. Code 0 is "nothing here" and is not drawn.
+    pub cells: Vec<LegendEntry>,
+    pub agents: Vec<LegendEntry>,
+    pub events: Vec<LegendEntry>,
+    pub fields: Vec<FieldInfo>,
+    pub tools: Vec<ToolInfo>,
+}
+
+/// An agent standing on a cell (a robot on a module).
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+pub struct Agent {
+    pub cell: u32,
+    pub kind: u8,
+}
+
+/// Something that happened at a cell during the last step (a collision, a relay).
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+pub struct Event {
+    pub cell: u32,
+    pub kind: u8,
+}
+
+/// A simulation model. Implementations are deterministic functions of their scenario and seed.
+pub trait Model {
+    fn layout(&self) -> Layout;
+    /// Advances one step.
+    fn step(&mut self);
+    /// Steps taken so far.
+    fn steps(&self) -> u64;
+    /// True when the model's goal is reached.
+    fn completed(&self) -> bool;
+    fn metrics(&self) -> Metrics;
+    /// Feeds every part of the state that later steps depend on.
+    fn hash_state(&self, h: &mut StateHasher);
+    /// One code per lattice cell; see [`Layout::cells`].
+    fn cells(&self) -> Cow<'_, [u8]>;
+    /// One value per lattice cell for a field named in [`Layout::fields`]; NaN where undefined.
+    fn field(&self, name: &str) -> Option<Cow<'_, [f32]>>;
+    fn agents(&self) -> Vec<Agent>;
+    /// Events of the last step.
+    fn events(&self) -> Vec<Event>;
+    /// Checks an action without applying it.
+    fn check_action(&self, action: &Action) -> Result<()>;
+    /// Applies an action now (a scheduled disturbance or a click).
+    fn apply(&mut self, action: &Action) -> Result<()>;
+    /// A few facts about one cell, for the page's inspector.
+    fn inspect(&self, _cell: usize) -> Map<String, Value> {
+        Map::new()
+    }
+}
+
+/// A registered model.
+pub struct ModelEntry {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub default_max_steps: u64,
+    /// Builds the model from a scenario whose envelope is already checked.
+    pub build: fn(&Scenario) -> Result<Box<dyn Model>>,
+}
+
+/// Every model, in gallery order.
+pub const MODELS: &[ModelEntry] = &[amas::ENTRY];
+
+pub fn entry(name: &str) -> Result<&'static ModelEntry> {
+    MODELS.iter().find(|m| m.name == name).ok_or_else(|| {
+        Error::field(
+            "model",
+            format!(
+                "unknown model '{name}'; known: {}",
+                MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
+            ),
+        )
+    })
+}
+
+/// Builds a model and checks its scheduled actions.
+pub fn build(scenario: &Scenario) -> Result<Box<dyn Model>> {
+    let model = (entry(&scenario.model)?.build)(scenario)?;
+    for (i, d) in scenario.disturbances.iter().enumerate() {
+        model
+            .check_action(&d.action)
+            .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
+    }
+    Ok(model)
+}
+
+/// Reads a model's typed body, naming unknown and invalid fields.
+pub fn body<T: serde::de::DeserializeOwned>(scenario: &Scenario) -> Result<T> {
+    crate::error::from_value(Value::Object(scenario.body.clone()))
+}

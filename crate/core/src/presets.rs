@@ -1,0 +1,86 @@
+//! Built-in scenarios and experiments: one JSON file each under `presets/` and `experiments/`,
+//! registered by file name.
+
+use crate::error::{Error, Result};
+use crate::scenario::Scenario;
+
+include!(concat!(env!("OUT_DIR"), "/registry.rs"));
+
+/// Names of the built-in scenarios, sorted.
+pub fn names() -> impl Iterator<Item = &'static str> {
+    PRESET_FILES.iter().map(|(name, _)| *name)
+}
+
+/// The JSON text of a preset.
+pub fn json(name: &str) -> Result<&'static str> {
+    lookup(PRESET_FILES, "preset", name)
+}
+
+pub fn scenario(name: &str) -> Result<Scenario> {
+    Scenario::from_json(json(name)?).map_err(|e| match e {
+        Error::Field { path, reason } => {
+            Error::field(path, format!("{reason} (in preset '{name}')"))
+        }
+        other => other,
+    })
+}
+
+/// Names of the built-in experiments, sorted.
+pub fn experiment_names() -> impl Iterator<Item = &'static str> {
+    EXPERIMENT_FILES.iter().map(|(name, _)| *name)
+}
+
+pub fn experiment_json(name: &str) -> Result<&'static str> {
+    lookup(EXPERIMENT_FILES, "experiment", name)
+}
+
+fn lookup(table: &'static [(&str, &str)], kind: &'static str, name: &str) -> Result<&'static str> {
+    table
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, text)| *text)
+        .ok_or_else(|| Error::Unknown {
+            kind,
+            name: name.to_string(),
+            known: table.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", "),
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::models;
+
+    #[test]
+    fn every_preset_is_valid_and_named_after_its_file() {
+        assert!(names().count() > 0);
+        for name in names() {
+            let s = scenario(name).unwrap_or_else(|e| panic!("preset {name}: {e}"));
+            assert_eq!(
+                s.name, name,
+                "preset file {name}.json must carry \"name\": \"{name}\""
+            );
+            assert!(
+                !s.description.is_empty(),
+                "preset {name} needs a description"
+            );
+            models::entry(&s.model).unwrap();
+        }
+    }
+
+    #[test]
+    fn every_experiment_is_valid() {
+        for name in experiment_names() {
+            let e = crate::experiment::Experiment::from_json(experiment_json(name).unwrap())
+                .unwrap_or_else(|e| panic!("experiment {name}: {e}"));
+            assert_eq!(e.name, name);
+            assert!(!e.jobs().is_empty());
+        }
+    }
+
+    #[test]
+    fn unknown_preset_lists_the_known_ones() {
+        let err = json("no-such").unwrap_err().to_string();
+        assert!(err.contains("no-such") && err.contains("known"), "{err}");
+    }
+}

@@ -1,0 +1,122 @@
+//! A run: a model driven through its scenario's schedule up to its step limit.
+
+use serde::Serialize;
+
+use crate::error::Result;
+use crate::hash::{self, StateHasher};
+use crate::models::{self, Action, Metrics, Model};
+use crate::scenario::{Disturbance, Scenario};
+
+pub struct Run {
+    scenario: Scenario,
+    model: Box<dyn Model>,
+    /// Index of the next scheduled disturbance.
+    next: usize,
+}
+
+/// The summary of a run, as the CLI prints it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Outcome {
+    pub scenario: String,
+    pub seed: u64,
+    pub completed: bool,
+    pub steps: u64,
+    pub hash: String,
+    pub metrics: Metrics,
+}
+
+impl Run {
+    pub fn new(scenario: Scenario) -> Result<Run> {
+        let model = models::build(&scenario)?;
+        Ok(Run {
+            scenario,
+            model,
+            next: 0,
+        })
+    }
+
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+
+    pub fn model(&self) -> &dyn Model {
+        self.model.as_ref()
+    }
+
+    pub fn steps(&self) -> u64 {
+        self.model.steps()
+    }
+
+    /// Finished at the step limit, or when the goal is reached and nothing is left to happen.
+    pub fn finished(&self) -> bool {
+        self.model.steps() >= self.scenario.max_steps
+            || (self.model.completed() && self.next >= self.scenario.disturbances.len())
+    }
+
+    /// Applies the disturbances due now, then takes one step. Returns false, doing nothing, once
+    /// the run is finished.
+    pub fn step(&mut self) -> bool {
+        self.apply_due();
+        if self.finished() {
+            return false;
+        }
+        self.model.step();
+        true
+    }
+
+    /// Up to `n` steps; returns how many were taken.
+    pub fn advance(&mut self, n: u64) -> u64 {
+        let mut done = 0;
+        while done < n && self.step() {
+            done += 1;
+        }
+        done
+    }
+
+    pub fn run_to_end(&mut self) {
+        while self.step() {}
+    }
+
+    fn apply_due(&mut self) {
+        let now = self.model.steps();
+        while let Some(d) = self.scenario.disturbances.get(self.next) {
+            if d.at > now {
+                break;
+            }
+            // Scheduled actions were checked when the scenario was read.
+            let _ = self.model.apply(&d.action);
+            self.next += 1;
+        }
+    }
+
+    /// Applies an action now and records it in the scenario, so the share link replays it.
+    pub fn apply_now(&mut self, action: Action) -> Result<()> {
+        self.model.check_action(&action)?;
+        self.apply_due();
+        self.model.apply(&action)?;
+        let at = self.model.steps();
+        self.scenario
+            .disturbances
+            .insert(self.next, Disturbance { at, action });
+        self.next += 1;
+        Ok(())
+    }
+
+    pub fn state_hash(&self) -> u64 {
+        let mut h = StateHasher::new();
+        h.u64(self.model.steps());
+        self.model.hash_state(&mut h);
+        h.finish()
+    }
+
+    pub fn outcome(&self) -> Outcome {
+        Outcome {
+            scenario: self.scenario.name.clone(),
+            seed: self.scenario.seed,
+            completed: self.model.completed(),
+            steps: self.model.steps(),
+            hash: hash::hex(self.state_hash()),
+            metrics: self.model.metrics(),
+        }
+    }
+}

@@ -1,0 +1,364 @@
+//! The scenario: one versioned JSON document that fully determines a run.
+//!
+//! ```json
+//! {
+//!   "version": 1,
+//!   "model": "amas",
+//!   "name": "amas-L",
+//!   "description": "The L-shaped benchmark of section 5.",
+//!   "seed": 1,
+//!   "max_steps": 20000,
+//!   "disturbances": [{ "at": 360, "kind": "remove", "count": 10 }],
+//!   "...": "every other key belongs to the model and is checked by it"
+//! }
+//! ```
+//!
+//! The envelope keys are read here; the rest (the model's "body") is handed to the model, which
+//! rejects unknown keys and invalid values by name. A disturbance is applied after `at` steps have
+//! run; its other keys are the model's action.
+
+use serde_json::{Map, Value};
+
+use crate::error::{Error, Result};
+use crate::models;
+
+/// The scenario format version this build reads and writes.
+pub const FORMAT_VERSION: u64 = 1;
+/// Seeds travel through JavaScript numbers, so they stay exact integers there.
+pub const MAX_SEED: u64 = (1 << 53) - 1;
+/// No run may ask for more steps than this.
+pub const MAX_STEPS: u64 = 100_000_000;
+
+const ENVELOPE: [&str; 7] = [
+    "version",
+    "model",
+    "name",
+    "description",
+    "seed",
+    "max_steps",
+    "disturbances",
+];
+
+/// A model action scheduled at a step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Disturbance {
+    pub at: u64,
+    pub action: Map<String, Value>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scenario {
+    pub model: String,
+    pub name: String,
+    pub description: String,
+    pub seed: u64,
+    pub max_steps: u64,
+    pub disturbances: Vec<Disturbance>,
+    /// The model's own keys.
+    pub body: Map<String, Value>,
+}
+
+impl Scenario {
+    /// Reads and fully validates a scenario from JSON text.
+    pub fn from_json(text: &str) -> Result<Scenario> {
+        let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
+        Scenario::from_value(value)
+    }
+
+    /// Reads and fully validates a scenario from a JSON value.
+    pub fn from_value(value: Value) -> Result<Scenario> {
+        let Value::Object(mut map) = value else {
+            return Err(Error::field("", "a scenario is a JSON object"));
+        };
+        let version = take_u64(&mut map, "version", None, u64::MAX)?;
+        if version != FORMAT_VERSION {
+            return Err(Error::field(
+                "version",
+                format!("this Kumiki reads scenario version {FORMAT_VERSION}, not {version}"),
+            ));
+        }
+        let model = take_string(&mut map, "model", None)?;
+        let entry = models::entry(&model)?;
+        let scenario = Scenario {
+            name: take_string(&mut map, "name", Some(""))?,
+            description: take_string(&mut map, "description", Some(""))?,
+            seed: take_u64(&mut map, "seed", Some(1), MAX_SEED)?,
+            max_steps: take_u64(
+                &mut map,
+                "max_steps",
+                Some(entry.default_max_steps),
+                MAX_STEPS,
+            )?,
+            disturbances: take_disturbances(&mut map)?,
+            model,
+            body: map,
+        };
+        if scenario.max_steps == 0 {
+            return Err(Error::field("max_steps", "must be at least 1"));
+        }
+        // Building the model checks the body and every scheduled action.
+        models::build(&scenario)?;
+        Ok(scenario)
+    }
+
+    /// The whole scenario as one JSON object, keys sorted.
+    pub fn to_value(&self) -> Value {
+        let mut map = self.body.clone();
+        map.insert("version".into(), FORMAT_VERSION.into());
+        map.insert("model".into(), self.model.clone().into());
+        map.insert("name".into(), self.name.clone().into());
+        map.insert("description".into(), self.description.clone().into());
+        map.insert("seed".into(), self.seed.into());
+        map.insert("max_steps".into(), self.max_steps.into());
+        if !self.disturbances.is_empty() {
+            let list = self
+                .disturbances
+                .iter()
+                .map(|d| {
+                    let mut m = d.action.clone();
+                    m.insert("at".into(), d.at.into());
+                    Value::Object(m)
+                })
+                .collect();
+            map.insert("disturbances".into(), Value::Array(list));
+        }
+        canonical(Value::Object(map))
+    }
+
+    /// Compact canonical JSON: the form that is hashed and put into links.
+    pub fn to_json(&self) -> String {
+        self.to_value().to_string()
+    }
+
+    /// Indented JSON for files and the page's editor.
+    pub fn to_json_pretty(&self) -> String {
+        serde_json::to_string_pretty(&self.to_value()).expect("a JSON value always serialises")
+    }
+
+    /// Hash of the scenario with the seed left out, so every seed of one configuration shares it.
+    pub fn hash_without_seed(&self) -> u64 {
+        let mut copy = self.clone();
+        copy.seed = 0;
+        crate::hash::of_bytes(copy.to_json().as_bytes())
+    }
+
+    /// A copy with `path` set to `value`, re-validated. Paths are dotted (`stages.0.target`);
+    /// numeric segments index arrays.
+    pub fn with_override(&self, path: &str, value: Value) -> Result<Scenario> {
+        let mut doc = self.to_value();
+        set_path(&mut doc, path, value)?;
+        Scenario::from_value(doc)
+    }
+
+    /// A copy with several overrides applied at once before validating.
+    pub fn with_overrides(&self, overrides: &[(String, Value)]) -> Result<Scenario> {
+        let mut doc = self.to_value();
+        for (path, value) in overrides {
+            set_path(&mut doc, path, value.clone())?;
+        }
+        Scenario::from_value(doc)
+    }
+}
+
+/// Parses the VALUE of `--set PATH=VALUE`: JSON if it parses as JSON, otherwise a string, so
+/// `--set field=discrete` and `--set robots=5` both do what they say.
+pub fn parse_override(text: &str) -> Result<(String, Value)> {
+    let (path, raw) = text
+        .split_once('=')
+        .ok_or_else(|| Error::field("--set", format!("'{text}' is not PATH=VALUE")))?;
+    let path = path.trim();
+    if path.is_empty() {
+        return Err(Error::field("--set", format!("'{text}' has an empty path")));
+    }
+    let value = serde_json::from_str(raw).unwrap_or_else(|_| Value::String(raw.to_string()));
+    Ok((path.to_string(), value))
+}
+
+/// Sets a dotted path in a JSON document, creating the last key if it is missing.
+pub fn set_path(doc: &mut Value, path: &str, value: Value) -> Result<()> {
+    let segments: Vec<&str> = path.split('.').collect();
+    let mut here = doc;
+    for (n, seg) in segments.iter().enumerate() {
+        let last = n + 1 == segments.len();
+        let so_far = segments[..=n].join(".");
+        here = match here {
+            Value::Object(map) => {
+                if last {
+                    map.insert((*seg).to_string(), value);
+                    return Ok(());
+                }
+                map.get_mut(*seg)
+                    .ok_or_else(|| Error::field(so_far, "no such field"))?
+            }
+            Value::Array(items) => {
+                let len = items.len();
+                let i: usize = seg
+                    .parse()
+                    .map_err(|_| Error::field(&so_far, "this is a list; index it with a number"))?;
+                let slot = items.get_mut(i).ok_or_else(|| {
+                    Error::field(&so_far, format!("index out of range (the list has {len})"))
+                })?;
+                if last {
+                    *slot = value;
+                    return Ok(());
+                }
+                slot
+            }
+            _ => {
+                return Err(Error::field(
+                    segments[..n].join("."),
+                    "is not an object or list, so it has no fields",
+                ))
+            }
+        };
+    }
+    Ok(())
+}
+
+/// The same value with object keys sorted at every depth, whatever the map implementation.
+pub fn canonical(value: Value) -> Value {
+    match value {
+        Value::Object(map) => {
+            let mut entries: Vec<(String, Value)> = map.into_iter().collect();
+            entries.sort_by(|a, b| a.0.cmp(&b.0));
+            Value::Object(
+                entries
+                    .into_iter()
+                    .map(|(k, v)| (k, canonical(v)))
+                    .collect(),
+            )
+        }
+        Value::Array(items) => Value::Array(items.into_iter().map(canonical).collect()),
+        other => other,
+    }
+}
+
+fn take_string(map: &mut Map<String, Value>, key: &str, default: Option<&str>) -> Result<String> {
+    match map.remove(key) {
+        Some(Value::String(s)) => Ok(s),
+        Some(other) => Err(Error::field(
+            key,
+            format!("expected text, found {}", kind(&other)),
+        )),
+        None => default
+            .map(str::to_string)
+            .ok_or_else(|| Error::field(key, "is required")),
+    }
+}
+
+fn as_u64(key: &str, value: &Value, max: u64) -> Result<u64> {
+    match value.as_u64() {
+        Some(n) if n <= max => Ok(n),
+        Some(n) => Err(Error::field(
+            key,
+            format!("{n} is larger than the limit {max}"),
+        )),
+        None => Err(Error::field(
+            key,
+            format!("expected a whole number of at least 0, found {}", value),
+        )),
+    }
+}
+
+fn take_u64(
+    map: &mut Map<String, Value>,
+    key: &str,
+    default: Option<u64>,
+    max: u64,
+) -> Result<u64> {
+    match map.remove(key) {
+        Some(v) => as_u64(key, &v, max),
+        None => default.ok_or_else(|| Error::field(key, "is required")),
+    }
+}
+
+fn take_disturbances(map: &mut Map<String, Value>) -> Result<Vec<Disturbance>> {
+    let list = match map.remove("disturbances") {
+        None => return Ok(Vec::new()),
+        Some(Value::Array(list)) => list,
+        Some(other) => {
+            return Err(Error::field(
+                "disturbances",
+                format!("expected a list, found {}", kind(&other)),
+            ))
+        }
+    };
+    let mut out = Vec::with_capacity(list.len());
+    for (i, item) in list.into_iter().enumerate() {
+        let path = format!("disturbances[{i}]");
+        let Value::Object(mut action) = item else {
+            return Err(Error::field(
+                path,
+                "expected an object like {\"at\": 10, ...}",
+            ));
+        };
+        let at = match action.remove("at") {
+            Some(v) => as_u64(&format!("{path}.at"), &v, MAX_STEPS)?,
+            None => return Err(Error::field(format!("{path}.at"), "is required")),
+        };
+        out.push(Disturbance { at, action });
+    }
+    // Stable: actions at the same step keep their written order.
+    out.sort_by_key(|d| d.at);
+    Ok(out)
+}
+
+fn kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "true/false",
+        Value::Number(_) => "a number",
+        Value::String(_) => "text",
+        Value::Array(_) => "a list",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// Names of the keys every scenario has, whatever its model.
+pub fn envelope_keys() -> &'static [&'static str] {
+    &ENVELOPE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn set_path_creates_and_indexes() {
+        let mut doc = json!({"a": {"b": [1, 2, {"c": 3}]}});
+        set_path(&mut doc, "a.b.2.c", json!(9)).unwrap();
+        set_path(&mut doc, "a.new", json!("x")).unwrap();
+        assert_eq!(doc, json!({"a": {"b": [1, 2, {"c": 9}], "new": "x"}}));
+        assert!(set_path(&mut doc, "a.b.7", json!(0))
+            .unwrap_err()
+            .to_string()
+            .contains("a.b.7"));
+        assert!(set_path(&mut doc, "a.missing.x", json!(0)).is_err());
+        assert!(set_path(&mut doc, "a.b.x", json!(0)).is_err());
+    }
+
+    #[test]
+    fn override_values_parse_as_json_or_text() {
+        assert_eq!(
+            parse_override("robots=5").unwrap(),
+            ("robots".into(), json!(5))
+        );
+        assert_eq!(
+            parse_override("field=discrete").unwrap(),
+            ("field".into(), json!("discrete"))
+        );
+        assert_eq!(
+            parse_override("x=[1,2]").unwrap(),
+            ("x".into(), json!([1, 2]))
+        );
+        assert!(parse_override("robots").is_err());
+        assert!(parse_override("=3").is_err());
+    }
+
+    #[test]
+    fn canonical_sorts_keys_at_every_depth() {
+        let v = canonical(json!({"b": 1, "a": {"z": 1, "y": [{"q": 1, "p": 2}]}}));
+        assert_eq!(v.to_string(), r#"{"a":{"y":[{"p":2,"q":1}],"z":1},"b":1}"#);
+    }
+}

@@ -1,0 +1,303 @@
+//! The page's window into the core: one simulation handle ([`Sim`]), one experiment handle
+//! ([`ExperimentRunner`]) and a few free functions. Buffers are copied into typed arrays; small
+//! records go through serde-wasm-bindgen. No simulation logic lives here.
+
+use std::sync::Mutex;
+
+use js_sys::{Float32Array, Uint32Array, Uint8Array};
+use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
+use kumiki_core::{hash, link, models, presets, Run, Scenario};
+use serde::Serialize;
+use serde_json::Value;
+use wasm_bindgen::prelude::*;
+
+static PANIC: Mutex<Option<String>> = Mutex::new(None);
+
+/// Installs the panic hook: the message goes to the console and is kept for [`panic_message`],
+/// so the worker can show it in the page after the trap.
+#[wasm_bindgen(start)]
+pub fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        if let Ok(mut slot) = PANIC.lock() {
+            *slot = Some(info.to_string());
+        }
+        console_error_panic_hook::hook(info);
+    }));
+}
+
+/// The message of the panic that stopped this instance, if one did.
+#[wasm_bindgen]
+pub fn panic_message() -> Option<String> {
+    PANIC.lock().ok().and_then(|slot| slot.clone())
+}
+
+/// Panics on purpose. The page's end-to-end test uses it to check that a panic is shown and the
+/// page recovers.
+#[wasm_bindgen]
+pub fn simulate_panic() {
+    panic!("simulated panic (diagnostics)");
+}
+
+fn js_err(e: impl std::fmt::Display) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+fn to_js<T: Serialize + ?Sized>(value: &T) -> Result<JsValue, JsError> {
+    value
+        .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(js_err)
+}
+
+#[wasm_bindgen]
+pub fn version() -> String {
+    PROGRAM_VERSION.to_string()
+}
+
+#[derive(Serialize)]
+struct PresetInfo {
+    name: &'static str,
+    model: String,
+    title: String,
+    description: String,
+}
+
+/// The built-in scenarios: name, model, description.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    let list: Vec<PresetInfo> = presets::names()
+        .map(|name| {
+            let s = presets::scenario(name).map_err(js_err)?;
+            Ok(PresetInfo {
+                name,
+                title: models::entry(&s.model)
+                    .map(|m| m.title.to_string())
+                    .unwrap_or_default(),
+                model: s.model,
+                description: s.description,
+            })
+        })
+        .collect::<Result<_, JsError>>()?;
+    to_js(&list)
+}
+
+#[wasm_bindgen]
+pub fn preset_json(name: &str) -> Result<String, JsError> {
+    presets::scenario(name)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// Validates scenario JSON and returns it in canonical, indented form.
+#[wasm_bindgen]
+pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
+    Scenario::from_json(json)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// The share-link payload (the part after `#`) for scenario JSON.
+#[wasm_bindgen]
+pub fn encode_link(json: &str) -> Result<String, JsError> {
+    Scenario::from_json(json)
+        .map(|s| link::encode(&s))
+        .map_err(js_err)
+}
+
+/// The scenario JSON inside a link, validated and indented.
+#[wasm_bindgen]
+pub fn decode_link(link_text: &str) -> Result<String, JsError> {
+    link::decode(link_text)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// Applies one dotted-path override to scenario JSON and returns the validated result.
+#[wasm_bindgen]
+pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
+    let value: Value =
+        serde_json::from_str(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
+    Scenario::from_json(json)
+        .and_then(|s| s.with_override(path, value))
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// One running simulation.
+#[wasm_bindgen]
+pub struct Sim {
+    run: Run,
+}
+
+#[wasm_bindgen]
+impl Sim {
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario_json: &str) -> Result<Sim, JsError> {
+        let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
+        Ok(Sim {
+            run: Run::new(scenario).map_err(js_err)?,
+        })
+    }
+
+    /// Takes up to `n` steps; returns how many were taken.
+    pub fn advance(&mut self, n: u32) -> u32 {
+        self.run.advance(u64::from(n)) as u32
+    }
+
+    pub fn steps(&self) -> f64 {
+        self.run.steps() as f64
+    }
+
+    pub fn finished(&self) -> bool {
+        self.run.finished()
+    }
+
+    pub fn completed(&self) -> bool {
+        self.run.model().completed()
+    }
+
+    /// The 64-bit state hash in hex.
+    pub fn hash(&self) -> String {
+        hash::hex(self.run.state_hash())
+    }
+
+    /// Lattice, legends, fields and tools: see `kumiki_core::models::Layout`.
+    pub fn layout(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run.model().layout())
+    }
+
+    pub fn metrics(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run.model().metrics())
+    }
+
+    /// One code per cell (a copy).
+    pub fn cells(&self) -> Uint8Array {
+        Uint8Array::from(self.run.model().cells().as_ref())
+    }
+
+    /// One value per cell (a copy), NaN where undefined; undefined for an unknown field.
+    pub fn field(&self, name: &str) -> Option<Float32Array> {
+        self.run
+            .model()
+            .field(name)
+            .map(|values| Float32Array::from(values.as_ref()))
+    }
+
+    /// Agents as `[cell, kind, cell, kind, ...]`.
+    pub fn agents(&self) -> Uint32Array {
+        let flat: Vec<u32> = self
+            .run
+            .model()
+            .agents()
+            .iter()
+            .flat_map(|a| [a.cell, u32::from(a.kind)])
+            .collect();
+        Uint32Array::from(flat.as_slice())
+    }
+
+    /// Events of the last step as `[cell, kind, ...]`.
+    pub fn events(&self) -> Uint32Array {
+        let flat: Vec<u32> = self
+            .run
+            .model()
+            .events()
+            .iter()
+            .flat_map(|e| [e.cell, u32::from(e.kind)])
+            .collect();
+        Uint32Array::from(flat.as_slice())
+    }
+
+    /// Applies an action now (a click tool) and records it in the scenario.
+    pub fn apply(&mut self, action_json: &str) -> Result<(), JsError> {
+        let action: Value = serde_json::from_str(action_json).map_err(js_err)?;
+        let Value::Object(action) = action else {
+            return Err(JsError::new("an action is a JSON object"));
+        };
+        self.run.apply_now(action).map_err(js_err)
+    }
+
+    pub fn inspect(&self, cell: u32) -> Result<JsValue, JsError> {
+        to_js(&self.run.model().inspect(cell as usize))
+    }
+
+    /// The scenario as it now stands, with clicked disturbances recorded.
+    pub fn scenario_json(&self) -> String {
+        self.run.scenario().to_json_pretty()
+    }
+}
+
+/// An experiment parsed once, whose jobs a pool of workers shares out.
+#[wasm_bindgen]
+pub struct ExperimentRunner {
+    experiment: Experiment,
+    jobs: Vec<Job>,
+}
+
+#[derive(Serialize)]
+struct ExperimentInfo<'a> {
+    name: &'a str,
+    title: &'a str,
+    description: &'a str,
+    jobs: usize,
+    plot: &'a Value,
+}
+
+#[wasm_bindgen]
+impl ExperimentRunner {
+    /// From a built-in experiment name or an experiment's JSON text.
+    #[wasm_bindgen(constructor)]
+    pub fn new(name_or_json: &str) -> Result<ExperimentRunner, JsError> {
+        let experiment = Experiment::named_or_json(name_or_json).map_err(js_err)?;
+        let jobs = experiment.jobs();
+        Ok(ExperimentRunner { experiment, jobs })
+    }
+
+    pub fn info(&self) -> Result<JsValue, JsError> {
+        let e = &self.experiment;
+        to_js(&ExperimentInfo {
+            name: &e.name,
+            title: &e.title,
+            description: &e.description,
+            jobs: self.jobs.len(),
+            plot: &e.plot,
+        })
+    }
+
+    pub fn job_count(&self) -> u32 {
+        self.jobs.len() as u32
+    }
+
+    /// Runs job `index` and returns its row.
+    pub fn run(&self, index: u32) -> Result<JsValue, JsError> {
+        let job = self
+            .jobs
+            .get(index as usize)
+            .ok_or_else(|| JsError::new("no such job"))?;
+        to_js(&self.experiment.run_job(job).map_err(js_err)?)
+    }
+}
+
+/// The built-in experiments: name, title, description, job count, plot.
+#[wasm_bindgen]
+pub fn experiments() -> Result<JsValue, JsError> {
+    let runners: Vec<ExperimentRunner> = presets::experiment_names()
+        .map(ExperimentRunner::new)
+        .collect::<Result<_, _>>()?;
+    let infos: Vec<ExperimentInfo> = runners
+        .iter()
+        .map(|r| ExperimentInfo {
+            name: &r.experiment.name,
+            title: &r.experiment.title,
+            description: &r.experiment.description,
+            jobs: r.jobs.len(),
+            plot: &r.experiment.plot,
+        })
+        .collect();
+    to_js(&infos)
+}
+
+/// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
+#[wasm_bindgen]
+pub fn rows_to_csv(rows_json: &str) -> Result<String, JsError> {
+    let rows: Vec<kumiki_core::Row> = serde_json::from_str(rows_json).map_err(js_err)?;
+    Ok(kumiki_core::experiment::to_csv(&rows))
+}

@@ -1,0 +1,54 @@
+//! The exported handle as JavaScript sees it, run in headless Node.
+#![cfg(target_arch = "wasm32")]
+
+use kumiki_wasm::{decode_link, encode_link, preset_json, ExperimentRunner, Sim};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+#[wasm_bindgen_test]
+fn sim_steps_and_reports() {
+    let json = preset_json("amas-L").unwrap();
+    let mut sim = Sim::new(&json).unwrap();
+    let before = sim.hash();
+    assert_eq!(sim.advance(10), 10);
+    assert_eq!(sim.steps(), 10.0);
+    assert_ne!(sim.hash(), before);
+    let cells = sim.cells();
+    assert!(cells.length() > 0);
+    assert_eq!(sim.agents().length() % 2, 0);
+    assert!(sim.field("to_supply").is_some());
+    assert!(sim.field("no_such_field").is_none());
+}
+
+#[wasm_bindgen_test]
+fn link_round_trip_in_wasm() {
+    let json = preset_json("amas-L").unwrap();
+    let link = encode_link(&json).unwrap();
+    assert!(link.starts_with("k1."));
+    assert_eq!(
+        decode_link(&format!("https://x.example/kumiki/#{link}")).unwrap(),
+        json
+    );
+}
+
+#[wasm_bindgen_test]
+fn bad_input_is_an_error_not_a_panic() {
+    assert!(Sim::new("{").is_err());
+    assert!(Sim::new(r##"{"version": 1, "model": "amas", "target": "#", "robots": 0}"##).is_err());
+    assert!(decode_link("#k1.@@@").is_err());
+}
+
+#[wasm_bindgen_test]
+fn clicked_actions_enter_the_scenario() {
+    let mut sim = Sim::new(&preset_json("amas-L").unwrap()).unwrap();
+    sim.advance(200);
+    sim.apply(r#"{"kind": "remove", "count": 1}"#).unwrap();
+    assert!(sim.scenario_json().contains("\"disturbances\""));
+    assert!(sim.apply(r#"{"kind": "bogus"}"#).is_err());
+}
+
+#[wasm_bindgen_test]
+fn experiment_jobs_run_in_wasm() {
+    let runner = ExperimentRunner::new("amas-robots").unwrap();
+    assert!(runner.job_count() > 0);
+    assert!(runner.run(0).is_ok());
+}
