@@ -1,6 +1,10 @@
 //! `kumiki`: the command-line face of the core. See `kumiki help`.
 
+mod bench;
 mod pool;
+
+#[global_allocator]
+static ALLOC: bench::Counting = bench::Counting;
 
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
@@ -20,6 +24,8 @@ USAGE
   kumiki run SCENARIO [--seed S | --seeds N] [--max-steps M] [--set PATH=VALUE]...
                       [--format json|csv] [--jobs J]
   kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
+  kumiki bench WORKLOAD.json... [--jobs J]
+                                       time workloads (see tests/bench); one JSON line each
   kumiki help | --version
 
 SCENARIO is a JSON file, a share link (or its #k1... part), or a preset name.
@@ -103,6 +109,7 @@ fn dispatch(args: &[String]) -> Result<(), Failure> {
         }
         "run" => run(rest),
         "sweep" => sweep(rest),
+        "bench" => bench(rest),
         other => Err(Failure::Usage(format!("unknown command '{other}'"))),
     }
 }
@@ -355,6 +362,23 @@ fn sweep(rest: &[String]) -> Result<(), Failure> {
     )?;
     if csv {
         write!(out, "{}", experiment::to_csv(&rows))?;
+    }
+    Ok(())
+}
+
+fn bench(rest: &[String]) -> Result<(), Failure> {
+    let (files, opts) = parse_options(rest, &["--jobs"])?;
+    if files.is_empty() {
+        return Err(Failure::Usage("bench needs workload files (tests/bench/*.json)".into()));
+    }
+    let workloads = files
+        .iter()
+        .map(|f| bench::load(std::path::Path::new(f)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let threads = threads(&opts)?;
+    let mut out = std::io::stdout().lock();
+    for w in &workloads {
+        writeln!(out, "{}", bench::measure(w, threads))?;
     }
     Ok(())
 }

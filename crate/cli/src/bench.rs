@@ -1,0 +1,151 @@
+//! `kumiki bench`: times the real core on the workloads in `tests/bench/*.json`. The Node script
+//! `scripts/bench.mjs` times the same workloads through the wasm build, so the two can be
+//! compared in one run.
+//!
+//! A workload file:
+//! ```json
+//! { "name": "amas-square28", "scenario": "amas-square28", "set": {"max_steps": 100000000},
+//!   "warmup": 20, "steps": 200, "repeats": 5, "work_per_step": 784, "work_unit": "cell-updates" }
+//! ```
+//! Each repeat builds a fresh run, warms it up and times `steps` steps (fewer if the run ends).
+//! The median rate over the repeats is reported, with the bytes the run holds per lattice cell.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+use kumiki_core::experiment::Experiment;
+
+use kumiki_core::{presets, Run, Scenario};
+use serde_json::{json, Map, Value};
+
+/// Counts live heap bytes, so the benchmark can report the memory a run holds.
+pub struct Counting;
+
+static LIVE: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: defers to the system allocator and only counts sizes.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        LIVE.fetch_add(layout.size(), Ordering::Relaxed);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        LIVE.fetch_sub(layout.size(), Ordering::Relaxed);
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        LIVE.fetch_add(layout.size(), Ordering::Relaxed);
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        LIVE.fetch_add(new_size, Ordering::Relaxed);
+        LIVE.fetch_sub(layout.size(), Ordering::Relaxed);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+/// A workload as read from its file.
+pub struct Workload {
+    pub name: String,
+    pub scenario: Scenario,
+    pub warmup: u64,
+    pub steps: u64,
+    pub repeats: usize,
+    pub work_per_step: Option<f64>,
+    pub work_unit: String,
+    /// Instead of stepping one run: the wall time of a whole built-in experiment.
+    pub experiment: Option<String>,
+}
+
+pub fn load(path: &std::path::Path) -> Result<Workload, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let err = |m: &str| format!("{}: {m}", path.display());
+    let name = v["name"].as_str().ok_or_else(|| err("name is required"))?.to_string();
+    let experiment = v["experiment"].as_str().map(str::to_string);
+    let scenario = match (&v["scenario"], &experiment) {
+        (Value::String(preset), _) => presets::scenario(preset).map_err(|e| err(&e.to_string()))?,
+        (obj @ Value::Object(_), _) => Scenario::from_value(obj.clone()).map_err(|e| err(&e.to_string()))?,
+        (Value::Null, Some(exp)) => {
+            let e = Experiment::named_or_json(exp).map_err(|e| err(&e.to_string()))?;
+            e.scenarios[0].clone()
+        }
+        _ => return Err(err("scenario (a preset name or object) or experiment is required")),
+    };
+    let mut overrides = Vec::new();
+    if let Some(set) = v["set"].as_object() {
+        for (k, val) in set {
+            overrides.push((k.clone(), val.clone()));
+        }
+    }
+    let scenario = scenario.with_overrides(&overrides).map_err(|e| err(&e.to_string()))?;
+    let num = |k: &str, d: u64| v[k].as_u64().unwrap_or(d);
+    Ok(Workload {
+        name,
+        scenario,
+        warmup: num("warmup", 0),
+        steps: num("steps", 100),
+        repeats: num("repeats", 5).max(1) as usize,
+        work_per_step: v["work_per_step"].as_f64(),
+        work_unit: v["work_unit"].as_str().unwrap_or("").to_string(),
+        experiment,
+    })
+}
+
+fn median(mut xs: Vec<f64>) -> f64 {
+    xs.sort_by(f64::total_cmp);
+    let n = xs.len();
+    if n % 2 == 1 {
+        xs[n / 2]
+    } else {
+        (xs[n / 2 - 1] + xs[n / 2]) / 2.0
+    }
+}
+
+/// Runs one workload and returns its figures as a JSON object.
+pub fn measure(w: &Workload, threads: usize) -> Value {
+    if let Some(name) = &w.experiment {
+        let exp = Experiment::named_or_json(name).expect("checked at load");
+        let jobs = exp.jobs();
+        let mut times = Vec::new();
+        for _ in 0..w.repeats {
+            let t = Instant::now();
+            crate::pool::run_ordered(jobs.len(), threads, |i| exp.run_job(&jobs[i]).map(|_| ()), |_, r| r)
+                .expect("experiment jobs run");
+            times.push(t.elapsed().as_secs_f64());
+        }
+        return json!({
+            "name": w.name, "target": "native", "experiment": name, "runs": jobs.len(),
+            "threads": threads, "median_seconds": median(times),
+        });
+    }
+    let mut rates = Vec::new();
+    let mut bytes_per_cell = 0.0;
+    let mut cells = 0usize;
+    for _ in 0..w.repeats {
+        let before = LIVE.load(Ordering::Relaxed);
+        let mut run = Run::new(w.scenario.clone()).expect("checked at load");
+        let held = LIVE.load(Ordering::Relaxed).saturating_sub(before);
+        cells = run.model().cells().len();
+        bytes_per_cell = held as f64 / cells.max(1) as f64;
+        run.advance(w.warmup);
+        let t = Instant::now();
+        let done = run.advance(w.steps);
+        let secs = t.elapsed().as_secs_f64();
+        rates.push(done as f64 / secs.max(1e-9));
+    }
+    let steps_per_second = median(rates);
+    let mut out = Map::new();
+    out.insert("name".into(), w.name.clone().into());
+    out.insert("target".into(), "native".into());
+    out.insert("cells".into(), cells.into());
+    out.insert("steps_per_second".into(), json!(steps_per_second));
+    out.insert("bytes_per_cell".into(), json!(bytes_per_cell));
+    if let Some(work) = w.work_per_step {
+        out.insert("work_unit".into(), w.work_unit.clone().into());
+        out.insert("work_per_second".into(), json!(work * steps_per_second));
+    }
+    Value::Object(out)
+}
+

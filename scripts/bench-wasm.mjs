@@ -1,0 +1,66 @@
+// Times the workloads of tests/bench/*.json through the wasm build in Node, exactly as
+// `kumiki bench` times them natively: fresh run per repeat, warm-up, median rate.
+// Usage: node scripts/bench-wasm.mjs tests/bench/a.json [more.json ...]   (one JSON line each)
+import { readFileSync } from 'node:fs';
+import { performance } from 'node:perf_hooks';
+import { fileURLToPath } from 'node:url';
+import * as wasm from '../web/pkg/kumiki_wasm.js';
+
+const root = new URL('..', import.meta.url);
+wasm.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_bg.wasm', root))) });
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  const n = s.length;
+  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+};
+
+function scenarioJson(spec) {
+  let json = typeof spec.scenario === 'string'
+    ? wasm.preset_json(spec.scenario)
+    : JSON.stringify(spec.scenario);
+  for (const [path, value] of Object.entries(spec.set ?? {})) {
+    json = wasm.override_scenario(json, path, JSON.stringify(value));
+  }
+  return json;
+}
+
+export function measure(spec) {
+  const repeats = Math.max(1, spec.repeats ?? 5);
+  if (spec.experiment) {
+    const runner = new wasm.ExperimentRunner(spec.experiment);
+    const times = [];
+    for (let r = 0; r < repeats; r++) {
+      const t = performance.now();
+      for (let i = 0; i < runner.job_count(); i++) runner.run(i);
+      times.push((performance.now() - t) / 1000);
+    }
+    return { name: spec.name, target: 'wasm', experiment: spec.experiment, runs: runner.job_count(), threads: 1, median_seconds: median(times) };
+  }
+  const json = scenarioJson(spec);
+  const rates = [];
+  let cells = 0;
+  for (let r = 0; r < repeats; r++) {
+    const sim = new wasm.Sim(json);
+    cells = sim.cells().length;
+    sim.advance(spec.warmup ?? 0);
+    const t = performance.now();
+    const done = sim.advance(spec.steps ?? 100);
+    const secs = (performance.now() - t) / 1000;
+    rates.push(done / Math.max(secs, 1e-9));
+    sim.free();
+  }
+  const out = { name: spec.name, target: 'wasm', cells, steps_per_second: median(rates) };
+  if (spec.work_per_step) {
+    out.work_unit = spec.work_unit ?? '';
+    out.work_per_second = spec.work_per_step * out.steps_per_second;
+  }
+  return out;
+}
+
+if (process.argv[1] === fileURLToPath(import.meta.url)) {
+  for (const file of process.argv.slice(2)) {
+    const spec = JSON.parse(readFileSync(file, 'utf8'));
+    console.log(JSON.stringify(measure(spec)));
+  }
+}
