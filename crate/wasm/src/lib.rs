@@ -295,6 +295,12 @@ pub fn experiments() -> Result<JsValue, JsError> {
     to_js(&infos)
 }
 
+/// The text of a built-in experiment file, for the page's editor.
+#[wasm_bindgen]
+pub fn experiment_json(name: &str) -> Result<String, JsError> {
+    presets::experiment_json(name).map(str::to_string).map_err(js_err)
+}
+
 /// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
 #[wasm_bindgen]
 pub fn rows_to_csv(rows_json: &str) -> Result<String, JsError> {

@@ -1,0 +1,69 @@
+// Runs an experiment's jobs on a pool of workers, handing out the next job to whichever worker
+// finishes first. Rows come back in any order and are stored by job index.
+import type { Row } from '../types';
+import type { FromExperimentWorker, ToExperimentWorker } from './worker';
+
+export interface PoolEvents {
+  row(index: number, row: Row): void;
+  error(message: string): void;
+  done(): void;
+}
+
+export class ExperimentPool {
+  private workers: Worker[] = [];
+  private next = 0;
+  private finished = 0;
+  private stopped = false;
+
+  constructor(private readonly experiment: string, private readonly jobs: number, private readonly on: PoolEvents) {}
+
+  start(size: number) {
+    const n = Math.max(1, Math.min(size, this.jobs));
+    for (let w = 0; w < n; w++) {
+      const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: `kumiki-experiment-${w}` });
+      worker.onmessage = (e: MessageEvent<FromExperimentWorker>) => this.receive(worker, e.data);
+      worker.onerror = (e) => this.fail(`an experiment worker failed: ${e.message}`);
+      worker.postMessage({ type: 'setup', experiment: this.experiment } satisfies ToExperimentWorker);
+      this.workers.push(worker);
+    }
+  }
+
+  private handOut(worker: Worker) {
+    if (this.stopped || this.next >= this.jobs) return;
+    worker.postMessage({ type: 'run', index: this.next++ } satisfies ToExperimentWorker);
+  }
+
+  private receive(worker: Worker, msg: FromExperimentWorker) {
+    if (this.stopped) return;
+    switch (msg.type) {
+      case 'ready':
+        this.handOut(worker);
+        return;
+      case 'row':
+        this.on.row(msg.index, msg.row as Row);
+        this.finished++;
+        if (this.finished === this.jobs) {
+          this.stop();
+          this.on.done();
+        } else {
+          this.handOut(worker);
+        }
+        return;
+      case 'error':
+        this.fail(msg.index >= 0 ? `run ${msg.index + 1}: ${msg.message}` : msg.message);
+        return;
+    }
+  }
+
+  private fail(message: string) {
+    if (this.stopped) return;
+    this.stop();
+    this.on.error(message);
+  }
+
+  stop() {
+    this.stopped = true;
+    for (const w of this.workers) w.terminate();
+    this.workers = [];
+  }
+}

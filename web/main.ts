@@ -1,0 +1,610 @@
+// Kumiki's page: wires the simulation worker, the lattice view and the panels together.
+import { modelEditors, type MountedEditor } from './models/index';
+import type { Hit } from './render/camera';
+import { View } from './render/view';
+import { SimClient } from './sim/client';
+import { History, loadPrefs, savePrefs, saveScenario, savedScenario } from './store';
+import type { Frame, Layout, Metrics } from './types';
+import { MetricChart } from './ui/chart';
+import { byId, clear, download, el, formatNumber, typingIn } from './ui/dom';
+import { setupExperiments } from './ui/experiments';
+import { setupGallery } from './ui/gallery';
+import { renderParams } from './ui/params';
+import * as core from './wasm';
+
+const SPEEDS = [1, 3, 10, 30, 100, 300, 1000, 10000, Infinity];
+const DEFAULT_PRESET = 'amas-L';
+
+const prefs = loadPrefs();
+const persistPrefs = () => savePrefs(prefs);
+const history = new History();
+
+/** The scenario the run was started from (canonical JSON); clicked disturbances are added to it. */
+let scenario = '';
+let layout: Layout | null = null;
+let lastFrame: Frame | null = null;
+let playing = false;
+let tool = 'inspect';
+let editor: MountedEditor | null = null;
+let editorModel = '';
+/** Frames received and drawn, read by the page benchmark. */
+let framesDrawn = 0;
+
+// ---- messages ---------------------------------------------------------------------------------
+
+const banner = byId('banner');
+const bannerText = byId('banner-text');
+function report(text: string) {
+  bannerText.textContent = text;
+  banner.hidden = false;
+}
+function dismiss() {
+  banner.hidden = true;
+}
+byId('banner-close').addEventListener('click', dismiss);
+
+// ---- simulation -------------------------------------------------------------------------------
+
+const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('annotations'), byId('canvas-wrap'), {
+  click: (cell, hit) => void clickCell(cell, hit),
+  hover: (cell) => showHover(cell),
+  drawn: () => {
+    document.body.dataset.frames = String(framesDrawn);
+    sim.ack();
+  },
+});
+
+const sim = new SimClient({
+  loaded(newLayout, json) {
+    const shapeChanged = !layout || layout.lattice !== newLayout.lattice || layout.dims.join() !== newLayout.dims.join();
+    layout = newLayout;
+    scenario = json;
+    view.setLayout(newLayout);
+    if (shapeChanged) view.fit();
+    renderRunPanel();
+    renderScenarioPanel();
+    chart.reset(prefs.chartMetric);
+  },
+  frame(frame) {
+    lastFrame = frame;
+    document.body.dataset.ready = 'true';
+    framesDrawn++;
+    view.setFrame(frame);
+    showFrame(frame);
+  },
+  playing(on) {
+    playing = on;
+    const button = byId('play');
+    button.textContent = on ? 'Pause' : 'Play';
+    button.setAttribute('aria-label', on ? 'Pause (Space)' : 'Play (Space)');
+    button.setAttribute('aria-pressed', String(on));
+  },
+  scenario(json) {
+    scenario = json;
+    saveScenario(json);
+    renderDisturbanceNote();
+    syncJsonEditor();
+  },
+  error(message, context) {
+    if (context === 'apply') report(`That did not work: ${message}`);
+    else if (context === 'load') report(`This scenario cannot run: ${message}`);
+    else report(message);
+  },
+  panic(message) {
+    report(`The simulation stopped on an internal error and was restarted with the last good scenario.\n${message}`);
+  },
+});
+
+/** Loads a scenario text: validated first, so a bad one never replaces a good run. */
+function load(json: string, { record = true, quiet = false } = {}): boolean {
+  let normal: string;
+  try {
+    normal = core.normalize(json);
+  } catch (e) {
+    if (!quiet) report(`This scenario cannot run: ${core.message(e)}`);
+    return false;
+  }
+  if (record && scenario && normal !== scenario) history.push(scenario);
+  scenario = normal;
+  saveScenario(normal);
+  sim.load(normal);
+  if (location.hash) history_replace('');
+  updateUndo();
+  return true;
+}
+
+function history_replace(hash: string) {
+  const url = `${location.pathname}${location.search}${hash ? `#${hash}` : ''}`;
+  window.history.replaceState(null, '', url);
+}
+
+// ---- transport --------------------------------------------------------------------------------
+
+const speed = byId<HTMLInputElement>('speed');
+const speedOut = byId('speed-out');
+function applySpeed() {
+  const i = Math.max(0, Math.min(SPEEDS.length - 1, Number(speed.value)));
+  const v = SPEEDS[i];
+  const text = Number.isFinite(v) ? `${v.toLocaleString('en-US')}/s` : 'max';
+  speedOut.textContent = text;
+  speed.setAttribute('aria-valuetext', Number.isFinite(v) ? `${v} steps per second` : 'as fast as possible');
+  sim.setSpeed(v);
+  prefs.speedIndex = i;
+  persistPrefs();
+}
+speed.value = String(prefs.speedIndex);
+speed.addEventListener('input', applySpeed);
+applySpeed();
+
+const togglePlay = () => (playing ? sim.pause() : sim.play());
+const stepOnce = () => sim.step(1);
+const reset = () => {
+  if (scenario) sim.load(scenario);
+};
+byId('play').addEventListener('click', togglePlay);
+byId('step').addEventListener('click', stepOnce);
+byId('reset').addEventListener('click', reset);
+
+const seedInput = byId<HTMLInputElement>('seed');
+function setSeed(seed: number) {
+  applyChange('seed', String(seed), (problem) => report(`Seed: ${problem}`));
+}
+seedInput.addEventListener('change', () => {
+  const v = Number(seedInput.value);
+  if (!Number.isSafeInteger(v) || v < 0) {
+    report('The seed is a whole number from 0 to 9007199254740991.');
+    return;
+  }
+  setSeed(v);
+});
+byId('new-seed').addEventListener('click', () => {
+  const words = new Uint32Array(2);
+  crypto.getRandomValues(words);
+  setSeed((words[0] & 0x1fffff) * 2 ** 32 + words[1]);
+});
+
+// ---- frames -----------------------------------------------------------------------------------
+
+const chart = new MetricChart(byId('metric-chart'));
+const chartSelect = byId<HTMLSelectElement>('chart-metric');
+chartSelect.addEventListener('change', () => {
+  prefs.chartMetric = chartSelect.value;
+  persistPrefs();
+  chart.reset(chartSelect.value);
+  if (lastFrame) chart.push(lastFrame.steps, Number(lastFrame.metrics[chartSelect.value] ?? NaN));
+  chart.render();
+});
+
+function showFrame(frame: Frame) {
+  byId('step-count').textContent = frame.steps.toLocaleString('en-US');
+  if (frame.hash) byId('state-hash').textContent = frame.hash;
+  const status = byId('run-status');
+  status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? 'step limit reached' : '';
+  status.classList.toggle('failed', frame.finished && !frame.completed);
+  const bar = byId('run-progress');
+  const pct = frame.completed ? 100 : Math.min(100, (100 * frame.steps) / Math.max(1, frame.maxSteps));
+  (bar.firstElementChild as HTMLElement).style.width = `${pct}%`;
+  bar.setAttribute('aria-valuenow', pct.toFixed(0));
+  renderMetrics(frame.metrics);
+  const metric = chartSelect.value;
+  if (metric && typeof frame.metrics[metric] === 'number') chart.push(frame.steps, frame.metrics[metric] as number);
+  chart.render();
+  byId('diag-rate').textContent = frame.stepsPerSecond ? `${formatNumber(frame.stepsPerSecond)} steps/s` : 'paused';
+  const range = view.overlayRange;
+  const colorbar = byId('colorbar');
+  colorbar.hidden = !range;
+  if (range) {
+    byId('colorbar-min').textContent = formatNumber(range[0]);
+    byId('colorbar-max').textContent = formatNumber(range[1]);
+  }
+}
+
+const metricsBox = byId('metrics');
+const metricNodes = new Map<string, HTMLElement>();
+function renderMetrics(metrics: Metrics) {
+  const names = Object.keys(metrics);
+  if (names.join() !== [...metricNodes.keys()].join()) {
+    clear(metricsBox);
+    metricNodes.clear();
+    for (const name of names) {
+      const value = el('strong');
+      metricsBox.append(el('div', { class: 'metric' }, el('span', { text: name.replace(/_/g, ' ') }), value));
+      metricNodes.set(name, value);
+    }
+    const numeric = names.filter((n) => typeof metrics[n] === 'number');
+    clear(chartSelect);
+    for (const n of numeric) chartSelect.append(el('option', { value: n, text: n.replace(/_/g, ' ') }));
+    const want = numeric.includes(prefs.chartMetric) ? prefs.chartMetric : numeric[0] ?? '';
+    chartSelect.value = want;
+    if (want !== prefs.chartMetric) {
+      prefs.chartMetric = want;
+      chart.reset(want);
+    }
+  }
+  for (const [name, node] of metricNodes) node.textContent = formatNumber(metrics[name]);
+}
+
+// ---- run panel: overlays, tools, legend -------------------------------------------------------
+
+const overlay = byId<HTMLSelectElement>('overlay');
+const arrows = byId<HTMLInputElement>('arrows');
+const labels = byId<HTMLInputElement>('labels');
+overlay.addEventListener('change', () => {
+  prefs.overlay = overlay.value;
+  persistPrefs();
+  sim.setOverlay(overlay.value || null);
+});
+arrows.checked = prefs.arrows;
+labels.checked = prefs.labels;
+view.marks.arrows = prefs.arrows;
+view.marks.labels = prefs.labels;
+arrows.addEventListener('change', () => {
+  prefs.arrows = view.marks.arrows = arrows.checked;
+  persistPrefs();
+  view.request();
+});
+labels.addEventListener('change', () => {
+  prefs.labels = view.marks.labels = labels.checked;
+  persistPrefs();
+  view.request();
+});
+
+function renderRunPanel() {
+  if (!layout) return;
+  clear(overlay);
+  overlay.append(el('option', { value: '', text: 'none' }));
+  for (const f of layout.fields) overlay.append(el('option', { value: f.name, text: f.label }));
+  overlay.value = layout.fields.some((f) => f.name === prefs.overlay) ? prefs.overlay : '';
+  sim.setOverlay(overlay.value || null);
+
+  const tools = byId('tools');
+  clear(tools);
+  const all = [{ name: 'inspect', label: 'Inspect' }, ...layout.tools];
+  if (!all.some((t) => t.name === tool)) tool = 'inspect';
+  for (const t of all) {
+    const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(t.name === tool), 'data-tool': t.name, text: t.label });
+    b.addEventListener('click', () => {
+      tool = t.name;
+      for (const other of tools.querySelectorAll('button')) other.setAttribute('aria-checked', String(other.dataset.tool === tool));
+    });
+    tools.append(b);
+  }
+  renderDisturbanceNote();
+
+  const legend = byId('legend');
+  clear(legend);
+  const swatch = (color: string, round = false) => {
+    const i = el('i', { class: round ? 'round' : '' });
+    i.style.background = color;
+    return i;
+  };
+  for (const c of layout.cells) legend.append(el('span', {}, swatch(c.color), c.name));
+  for (const a of layout.agents) legend.append(el('span', {}, swatch(a.color, true), a.name));
+  for (const e of layout.events) {
+    const i = swatch('transparent', true);
+    i.style.border = `2px solid ${e.color}`;
+    legend.append(el('span', {}, i, e.name));
+  }
+}
+
+function renderDisturbanceNote() {
+  const tools = byId('tools');
+  tools.parentElement?.querySelector('.recorded')?.remove();
+  const count = (JSON.parse(scenario || '{}') as { disturbances?: unknown[] }).disturbances?.length ?? 0;
+  if (!count) return;
+  const clearButton = el('button', { type: 'button', text: 'Clear them' });
+  clearButton.addEventListener('click', () => applyChange('disturbances', '[]', report));
+  tools.after(el('p', { class: 'hint recorded' }, `${count} scheduled or recorded disturbance${count > 1 ? 's' : ''}. `, clearButton));
+}
+
+async function clickCell(cell: number, hit: Hit | null) {
+  if (cell < 0 || !layout) return;
+  const t = layout.tools.find((x) => x.name === tool);
+  if (t) {
+    sim.apply({ ...t.action, cells: [cell] });
+    return;
+  }
+  const facts = await sim.inspect(cell);
+  showInspector(cell, facts, hit);
+}
+
+const inspector = byId('inspector');
+function cellName(cell: number): string {
+  if (!layout || !lastFrame) return '';
+  const code = lastFrame.cells[cell];
+  return layout.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
+}
+function coords(cell: number): string {
+  if (!layout) return '';
+  const [w, h] = layout.dims;
+  const x = cell % w;
+  const y = Math.floor(cell / w) % h;
+  const z = Math.floor(cell / (w * h));
+  return layout.lattice === 'cubic' ? `(${x}, ${y}, ${z})` : `(${x}, ${y})`;
+}
+function showHover(cell: number) {
+  if (cell < 0) {
+    inspector.hidden = true;
+    return;
+  }
+  inspector.hidden = false;
+  inspector.replaceChildren(el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) })));
+}
+function showInspector(cell: number, facts: Record<string, unknown>, hit: Hit | null) {
+  const dl = el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
+  for (const [k, v] of Object.entries(facts)) {
+    dl.append(el('dt', { text: k.replace(/_/g, ' ') }), el('dd', { text: typeof v === 'object' ? JSON.stringify(v) : formatNumber(v) }));
+  }
+  inspector.hidden = false;
+  inspector.replaceChildren(dl);
+  const reach = facts.reachable;
+  view.marks.highlight = Array.isArray(reach) ? (reach.filter((x) => typeof x === 'number') as number[]) : [];
+  void hit;
+  view.request();
+}
+
+// ---- scenario panel ---------------------------------------------------------------------------
+
+const jsonEditor = byId<HTMLTextAreaElement>('scenario-json');
+const jsonError = byId('json-error');
+let jsonDirty = false;
+jsonEditor.addEventListener('input', () => (jsonDirty = true));
+function syncJsonEditor() {
+  if (!jsonDirty) jsonEditor.value = scenario;
+}
+
+/** Changes one top-level key through the core; returns the problem, or null when applied. */
+function applyChange(key: string, valueJson: string, onError?: (problem: string) => void): string | null {
+  try {
+    const next = core.override(scenario, key, valueJson);
+    load(next);
+    return null;
+  } catch (e) {
+    const problem = core.message(e);
+    onError?.(problem);
+    return problem;
+  }
+}
+
+function renderScenarioPanel() {
+  const doc = JSON.parse(scenario) as Record<string, unknown>;
+  byId('scenario-name').textContent = String(doc.name || 'untitled scenario');
+  byId('scenario-model').textContent = String(doc.model ?? '');
+  document.title = `${String(doc.name || 'untitled')} · Kumiki`;
+  seedInput.value = String(doc.seed ?? 0);
+  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value));
+  jsonDirty = false;
+  syncJsonEditor();
+  jsonError.textContent = '';
+
+  const model = String(doc.model);
+  const root = byId('model-editor');
+  const spec = modelEditors[model];
+  if (model !== editorModel) {
+    editor?.destroy();
+    editor = null;
+    clear(root);
+    editorModel = model;
+    if (spec) {
+      root.append(el('h3', { text: spec.title }));
+      const mount = el('div');
+      root.append(mount);
+      editor = spec.mount(mount, {
+        scenario: () => JSON.parse(scenario) as Record<string, unknown>,
+        change: (changes) => {
+          let next = scenario;
+          try {
+            for (const [k, v] of Object.entries(changes)) next = core.override(next, k, JSON.stringify(v));
+          } catch (e) {
+            return core.message(e);
+          }
+          load(next);
+          return null;
+        },
+        layout: () => layout,
+      });
+    }
+  }
+  editor?.update(doc);
+}
+
+byId('apply-json').addEventListener('click', () => {
+  try {
+    core.normalize(jsonEditor.value);
+  } catch (e) {
+    jsonError.textContent = core.message(e);
+    return;
+  }
+  jsonDirty = false;
+  jsonError.textContent = '';
+  load(jsonEditor.value);
+});
+byId('download-json').addEventListener('click', () => {
+  const name = (JSON.parse(scenario) as { name?: string }).name || 'scenario';
+  download(`${name}.json`, `${scenario}\n`, 'application/json');
+});
+byId<HTMLInputElement>('open-json').addEventListener('change', async (e) => {
+  const file = (e.target as HTMLInputElement).files?.[0];
+  if (!file) return;
+  const text = await file.text();
+  jsonEditor.value = text;
+  jsonDirty = true;
+  const details = jsonEditor.closest('details');
+  if (details) details.open = true;
+  try {
+    core.normalize(text);
+    jsonDirty = false;
+    jsonError.textContent = '';
+    load(text);
+  } catch (err) {
+    jsonError.textContent = `${file.name}: ${core.message(err)}`;
+  }
+  (e.target as HTMLInputElement).value = '';
+});
+
+function updateUndo() {
+  (byId('undo') as HTMLButtonElement).disabled = !history.canUndo;
+  (byId('redo') as HTMLButtonElement).disabled = !history.canRedo;
+}
+function undo() {
+  const prev = history.undo(scenario);
+  if (prev) load(prev, { record: false });
+  updateUndo();
+}
+function redo() {
+  const next = history.redo(scenario);
+  if (next) load(next, { record: false });
+  updateUndo();
+}
+byId('undo').addEventListener('click', undo);
+byId('redo').addEventListener('click', redo);
+
+// ---- sharing ----------------------------------------------------------------------------------
+
+byId('copy-link').addEventListener('click', async () => {
+  let payload: string;
+  try {
+    payload = core.encodeLink(scenario);
+  } catch (e) {
+    report(`No link can be made: ${core.message(e)}`);
+    return;
+  }
+  const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
+  history_replace(payload);
+  const button = byId('copy-link');
+  try {
+    await navigator.clipboard.writeText(url);
+    button.textContent = 'Link copied';
+  } catch {
+    button.textContent = 'Link in address bar';
+  }
+  button.dataset.link = url;
+  setTimeout(() => (button.textContent = 'Copy link'), 2000);
+});
+
+function openHash(): boolean {
+  const hash = location.hash.slice(1);
+  if (!hash) return false;
+  try {
+    const json = core.decodeLink(hash);
+    if (scenario && json !== scenario) history.push(scenario);
+    scenario = json;
+    saveScenario(json);
+    sim.load(json);
+    updateUndo();
+    dismiss();
+    return true;
+  } catch (e) {
+    report(`This link could not be opened, so your last scenario is shown instead.\n${core.message(e)}`);
+    return false;
+  }
+}
+window.addEventListener('hashchange', () => {
+  if (location.hash.length > 1 && core.encodeLink(scenario) !== location.hash.slice(1)) openHash();
+});
+
+// ---- tabs and keyboard ------------------------------------------------------------------------
+
+const tabs = ['run', 'scenario', 'experiments', 'about'];
+function selectTab(name: string, focus = false) {
+  for (const t of tabs) {
+    const tab = byId(`tab-${t}`);
+    const on = t === name;
+    tab.setAttribute('aria-selected', String(on));
+    tab.tabIndex = on ? 0 : -1;
+    byId(`panel-${t}`).hidden = !on;
+    if (on && focus) tab.focus();
+  }
+  prefs.tab = name;
+  persistPrefs();
+  chart.render();
+}
+for (const t of tabs) {
+  const tab = byId(`tab-${t}`);
+  tab.addEventListener('click', () => selectTab(t));
+  tab.addEventListener('keydown', (e) => {
+    const i = tabs.indexOf(t);
+    if (e.key === 'ArrowRight' || e.key === 'ArrowLeft') {
+      e.preventDefault();
+      e.stopPropagation();
+      selectTab(tabs[(i + (e.key === 'ArrowRight' ? 1 : tabs.length - 1)) % tabs.length], true);
+    }
+  });
+}
+
+document.addEventListener('keydown', (e) => {
+  if (e.defaultPrevented || typingIn(e.target) || (document.querySelector('dialog[open]') && e.key !== 'Escape')) return;
+  const onButton = e.target instanceof HTMLButtonElement || e.target instanceof HTMLAnchorElement || e.target instanceof HTMLElement && e.target.tagName === 'SUMMARY';
+  if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z') {
+    e.preventDefault();
+    if (e.shiftKey) redo();
+    else undo();
+    return;
+  }
+  if (e.ctrlKey || e.metaKey || e.altKey) return;
+  switch (e.key) {
+    case ' ':
+      if (onButton) return;
+      e.preventDefault();
+      togglePlay();
+      return;
+    case 'ArrowRight':
+      e.preventDefault();
+      stepOnce();
+      return;
+    case 'r':
+    case 'R':
+      e.preventDefault();
+      reset();
+      return;
+    case '+':
+    case '=':
+      view.zoom(1.25);
+      return;
+    case '-':
+      view.zoom(0.8);
+      return;
+    case '0':
+      view.fit();
+      return;
+  }
+});
+byId('zoom-in').addEventListener('click', () => view.zoom(1.25));
+byId('zoom-out').addEventListener('click', () => view.zoom(0.8));
+byId('zoom-fit').addEventListener('click', () => view.fit());
+
+// ---- diagnostics ------------------------------------------------------------------------------
+
+const rendererChoice = byId<HTMLSelectElement>('renderer-choice');
+rendererChoice.value = prefs.renderer;
+async function useRenderer() {
+  try {
+    await view.useRenderer(prefs.renderer);
+  } catch (e) {
+    report(core.message(e));
+  }
+  byId('diag-renderer').textContent = view.rendererKind === 'webgl2' ? '(using WebGL2)' : '(using Canvas 2D)';
+  document.body.dataset.renderer = view.rendererKind ?? '';
+}
+rendererChoice.addEventListener('change', () => {
+  prefs.renderer = rendererChoice.value as typeof prefs.renderer;
+  persistPrefs();
+  void useRenderer();
+});
+byId('simulate-crash').addEventListener('click', () => sim.crash());
+
+// ---- start ------------------------------------------------------------------------------------
+
+async function start() {
+  await core.loadCore();
+  await useRenderer();
+  byId('diag-version').textContent = core.version();
+  setupGallery(core.presets(), (name) => load(core.presetJson(name)));
+  setupExperiments(prefs, persistPrefs, report);
+  selectTab(tabs.includes(prefs.tab) ? prefs.tab : 'run');
+  if (openHash()) return;
+  const saved = savedScenario();
+  if (!(saved && load(saved, { record: false, quiet: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false });
+}
+
+start().catch((e: unknown) => report(`Kumiki could not start: ${core.message(e)}`));

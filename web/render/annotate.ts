@@ -1,0 +1,139 @@
+// The annotation layer, drawn with Canvas 2D over either renderer: events of the last step,
+// gradient arrows, cell labels, the hovered cell and highlighted cells. Only what is visible and
+// large enough to read is drawn.
+import type { Camera2D } from './camera';
+import { HEX_RADIUS, cellCentre, hexCorners, neighbours } from './geometry';
+import type { Scene } from './renderer';
+
+export interface Marks {
+  arrows: boolean;
+  labels: boolean;
+  hover: number;
+  highlight: number[];
+}
+
+const MAX_VISIBLE = 40000;
+
+export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scene, marks: Marks) {
+  const { canvas } = ctx;
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.clearRect(0, 0, canvas.width, canvas.height);
+  if (scene.camera.kind !== '2d') return;
+  const cam = scene.camera;
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  const { layout, frame } = scene;
+  const [w, h] = layout.dims;
+  const vis = cam.visible();
+  const x0 = Math.max(0, Math.floor(vis.x0) - 1);
+  const x1 = Math.min(w - 1, Math.ceil(vis.x1));
+  const yScale = layout.lattice === 'hex' ? Math.sqrt(3) / 2 : 1;
+  const y0 = Math.max(0, Math.floor(vis.y0 / yScale) - 1);
+  const y1 = Math.min(h - 1, Math.ceil(vis.y1 / yScale));
+  const visibleCount = Math.max(0, x1 - x0 + 1) * Math.max(0, y1 - y0 + 1);
+  const centre = (i: number) => cam.toScreen(...cellCentre(layout.lattice, i % w, Math.floor(i / w)));
+
+  const field = scene.overlay;
+  const info = field ? layout.fields.find((f) => f.name === field.name) : undefined;
+  if (marks.arrows && field && info?.arrows && cam.scale >= 12 && visibleCount <= MAX_VISIBLE) {
+    ctx.strokeStyle = 'rgba(255,255,255,0.85)';
+    ctx.fillStyle = 'rgba(255,255,255,0.85)';
+    ctx.lineWidth = Math.max(1, cam.scale * 0.06);
+    for (let y = y0; y <= y1; y++) {
+      for (let x = x0; x <= x1; x++) {
+        const i = y * w + x;
+        const v = field.data[i];
+        if (!(v === v)) continue;
+        let best = -1;
+        let bestV = v;
+        for (const j of neighbours(layout, i)) {
+          const u = field.data[j];
+          if (u === u && u < bestV) {
+            bestV = u;
+            best = j;
+          }
+        }
+        if (best < 0) continue;
+        arrow(ctx, centre(i), centre(best), cam.scale);
+      }
+    }
+  }
+
+  if (marks.labels && layout.cell_labels === true && cam.scale >= 22 && visibleCount <= MAX_VISIBLE) {
+    const names = new Map(layout.cells.map((c) => [c.code, c.name]));
+    ctx.font = `600 ${Math.min(16, cam.scale * 0.32)}px system-ui, sans-serif`;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.lineWidth = 3;
+    ctx.strokeStyle = 'rgba(0,0,0,0.6)';
+    ctx.fillStyle = '#fff';
+    for (let y = y0; y <= y1; y++) {
+      for (let x = x0; x <= x1; x++) {
+        const i = y * w + x;
+        const name = names.get(frame.cells[i]);
+        if (!frame.cells[i] || !name) continue;
+        const [sx, sy] = centre(i);
+        ctx.strokeText(name, sx, sy);
+        ctx.fillText(name, sx, sy);
+      }
+    }
+  }
+
+  const events = frame.events;
+  if (events.length) {
+    const colors = new Map(layout.events.map((e) => [e.code, e.color]));
+    ctx.lineWidth = Math.max(1.5, cam.scale * 0.1);
+    for (let k = 0; k + 1 < events.length; k += 2) {
+      const [sx, sy] = centre(events[k]);
+      ctx.strokeStyle = colors.get(events[k + 1]) ?? '#ff4d4f';
+      ctx.beginPath();
+      ctx.arc(sx, sy, Math.max(4, cam.scale * 0.48), 0, Math.PI * 2);
+      ctx.stroke();
+    }
+  }
+
+  for (const i of marks.highlight) outline(ctx, scene, cam, i, 'rgba(240,180,41,0.95)');
+  if (marks.hover >= 0) outline(ctx, scene, cam, marks.hover, 'rgba(255,255,255,0.9)');
+}
+
+function outline(ctx: CanvasRenderingContext2D, scene: Scene, cam: Camera2D, i: number, color: string) {
+  const { layout } = scene;
+  const w = layout.dims[0];
+  const [wx, wy] = cellCentre(layout.lattice, i % w, Math.floor(i / w));
+  const [sx, sy] = cam.toScreen(wx, wy);
+  ctx.strokeStyle = color;
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  if (layout.lattice === 'hex') {
+    const c = hexCorners(sx, sy, HEX_RADIUS * cam.scale);
+    ctx.moveTo(c[0][0], c[0][1]);
+    for (let k = 1; k < 6; k++) ctx.lineTo(c[k][0], c[k][1]);
+    ctx.closePath();
+  } else {
+    ctx.rect(sx - cam.scale / 2, sy - cam.scale / 2, cam.scale, cam.scale);
+  }
+  ctx.stroke();
+}
+
+function arrow(ctx: CanvasRenderingContext2D, [ax, ay]: [number, number], [bx, by]: [number, number], scale: number) {
+  const dx = bx - ax;
+  const dy = by - ay;
+  const len = Math.hypot(dx, dy) || 1;
+  const ux = dx / len;
+  const uy = dy / len;
+  const half = scale * 0.3;
+  const sx = ax - ux * half;
+  const sy = ay - uy * half;
+  const ex = ax + ux * half;
+  const ey = ay + uy * half;
+  ctx.beginPath();
+  ctx.moveTo(sx, sy);
+  ctx.lineTo(ex, ey);
+  ctx.stroke();
+  const head = scale * 0.14;
+  ctx.beginPath();
+  ctx.moveTo(ex, ey);
+  ctx.lineTo(ex - ux * head - uy * head * 0.7, ey - uy * head + ux * head * 0.7);
+  ctx.lineTo(ex - ux * head + uy * head * 0.7, ey - uy * head - ux * head * 0.7);
+  ctx.closePath();
+  ctx.fill();
+}

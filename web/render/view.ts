@@ -1,0 +1,236 @@
+// The lattice view: owns the canvases, the renderer and the camera; turns pointer, wheel, pinch
+// and keyboard input into camera moves and cell clicks; draws at most once per animation frame.
+import type { Frame, Layout } from '../types';
+import { annotate, type Marks } from './annotate';
+import { Camera2D, Camera3D, type Camera, type Hit, fitCamera } from './camera';
+import { range } from './palette';
+import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
+
+export interface ViewEvents {
+  /** A click (or tap) on a cell; `hit` carries the 3-D face information. */
+  click(cell: number, hit: Hit | null): void;
+  hover(cell: number): void;
+  /** A frame from the worker was drawn; the worker may send the next. */
+  drawn(): void;
+}
+
+export class View {
+  private renderer: Renderer | null = null;
+  private camera: Camera = new Camera2D();
+  private layout: Layout | null = null;
+  private frame: Frame | null = null;
+  private overlay: Overlay | null = null;
+  private pendingFrame = false;
+  private scheduled = false;
+  private cssWidth = 1;
+  private cssHeight = 1;
+  private dpr = 1;
+  private readonly pointers = new Map<number, { x: number; y: number }>();
+  private dragMoved = 0;
+  private pinch = 0;
+  readonly marks: Marks = { arrows: true, labels: true, hover: -1, highlight: [] };
+  private readonly annotations: CanvasRenderingContext2D;
+
+  constructor(
+    private canvas: HTMLCanvasElement,
+    annotationCanvas: HTMLCanvasElement,
+    private readonly wrap: HTMLElement,
+    private readonly on: ViewEvents,
+  ) {
+    this.annotations = annotationCanvas.getContext('2d')!;
+    new ResizeObserver(() => this.resize()).observe(wrap);
+    this.bind(canvas);
+  }
+
+  get rendererKind(): RendererKind | null {
+    return this.renderer?.kind ?? null;
+  }
+
+  /** Creates the renderer, replacing the canvas when switching (a canvas keeps its first context). */
+  async useRenderer(prefer: RendererKind | 'auto') {
+    if (this.renderer) {
+      this.renderer.destroy();
+      const fresh = this.canvas.cloneNode(false) as HTMLCanvasElement;
+      this.canvas.replaceWith(fresh);
+      this.canvas = fresh;
+      this.bind(fresh);
+    }
+    this.renderer = await createRenderer(this.canvas, prefer);
+    this.resize();
+    if (this.layout) this.renderer.setLayout(this.layout);
+    this.request();
+  }
+
+  setLayout(layout: Layout) {
+    const sameShape = this.layout && this.layout.lattice === layout.lattice && this.layout.dims.join() === layout.dims.join();
+    this.layout = layout;
+    this.frame = null;
+    if (!sameShape) {
+      this.camera = layout.lattice === 'cubic' ? new Camera3D() : new Camera2D();
+      this.sizeCamera();
+      fitCamera(this.camera, layout);
+    }
+    this.renderer?.setLayout(layout);
+    this.request();
+  }
+
+  setFrame(frame: Frame) {
+    this.frame = frame;
+    if (frame.field) {
+      const [min, max] = range(frame.field.data);
+      this.overlay = { name: frame.field.name, data: frame.field.data, min, max };
+    } else {
+      this.overlay = null;
+    }
+    this.pendingFrame = true;
+    this.request();
+  }
+
+  get overlayRange(): [number, number] | null {
+    return this.overlay ? [this.overlay.min, this.overlay.max] : null;
+  }
+
+  fit() {
+    if (!this.layout) return;
+    fitCamera(this.camera, this.layout);
+    this.request();
+  }
+
+  zoom(factor: number) {
+    this.camera.zoom(factor);
+    this.request();
+  }
+
+  request() {
+    if (this.scheduled) return;
+    this.scheduled = true;
+    requestAnimationFrame(() => {
+      this.scheduled = false;
+      this.draw();
+    });
+  }
+
+  private draw() {
+    if (this.renderer && this.layout && this.frame) {
+      const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera };
+      this.renderer.draw(scene);
+      annotate(this.annotations, this.dpr, scene, this.marks);
+    }
+    if (this.pendingFrame) {
+      this.pendingFrame = false;
+      this.on.drawn();
+    }
+  }
+
+  private sizeCamera() {
+    this.camera.width = this.cssWidth;
+    this.camera.height = this.cssHeight;
+  }
+
+  private resize() {
+    const rect = this.wrap.getBoundingClientRect();
+    this.cssWidth = Math.max(1, rect.width);
+    this.cssHeight = Math.max(1, rect.height);
+    this.dpr = Math.min(2, window.devicePixelRatio || 1);
+    const c = this.camera;
+    const hadSize = c.width > 1;
+    const [wx, wy] = c.kind === '2d' && hadSize ? c.toWorld(c.width / 2, c.height / 2) : [0, 0];
+    this.sizeCamera();
+    if (c.kind === '2d' && hadSize) {
+      c.cx = wx;
+      c.cy = wy;
+    } else if (this.layout) {
+      fitCamera(c, this.layout);
+    }
+    this.renderer?.resize(this.cssWidth, this.cssHeight, this.dpr);
+    const a = this.annotations.canvas;
+    a.width = Math.round(this.cssWidth * this.dpr);
+    a.height = Math.round(this.cssHeight * this.dpr);
+    this.request();
+  }
+
+  private pick(x: number, y: number): { cell: number; hit: Hit | null } {
+    if (!this.layout || !this.frame) return { cell: -1, hit: null };
+    if (this.camera.kind === '2d') return { cell: this.camera.pick(this.layout, x, y), hit: null };
+    const cells = this.frame.cells;
+    const hit = this.camera.pick(this.layout.dims, (i) => cells[i] !== 0, x, y);
+    return { cell: hit?.cell ?? -1, hit };
+  }
+
+  private bind(canvas: HTMLCanvasElement) {
+    const local = (e: PointerEvent | WheelEvent) => {
+      const r = canvas.getBoundingClientRect();
+      return { x: e.clientX - r.left, y: e.clientY - r.top };
+    };
+    canvas.addEventListener('pointerdown', (e) => {
+      canvas.setPointerCapture(e.pointerId);
+      this.pointers.set(e.pointerId, local(e));
+      this.dragMoved = 0;
+      this.pinch = this.pinchDistance();
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      const p = local(e);
+      const prev = this.pointers.get(e.pointerId);
+      if (!prev) {
+        const { cell } = this.pick(p.x, p.y);
+        if (cell !== this.marks.hover) {
+          this.marks.hover = cell;
+          this.on.hover(cell);
+          this.request();
+        }
+        return;
+      }
+      this.pointers.set(e.pointerId, p);
+      if (this.pointers.size === 2) {
+        const d = this.pinchDistance();
+        if (this.pinch > 0 && d > 0) this.camera.zoom(d / this.pinch);
+        this.pinch = d;
+        this.dragMoved += 10;
+      } else {
+        const dx = p.x - prev.x;
+        const dy = p.y - prev.y;
+        this.dragMoved += Math.abs(dx) + Math.abs(dy);
+        if (this.camera.kind === '3d' && !e.shiftKey && e.buttons !== 2 && e.buttons !== 4) this.camera.orbit(dx, dy);
+        else this.camera.pan(dx, dy);
+      }
+      this.request();
+    });
+    const end = (e: PointerEvent) => {
+      const p = this.pointers.get(e.pointerId);
+      this.pointers.delete(e.pointerId);
+      if (e.type === 'pointerup' && p && this.dragMoved < 6 && this.pointers.size === 0) {
+        const { cell, hit } = this.pick(p.x, p.y);
+        this.on.click(cell, hit);
+      }
+      this.pinch = this.pinchDistance();
+    };
+    canvas.addEventListener('pointerup', end);
+    canvas.addEventListener('pointercancel', end);
+    canvas.addEventListener('pointerleave', () => {
+      if (this.marks.hover !== -1) {
+        this.marks.hover = -1;
+        this.on.hover(-1);
+        this.request();
+      }
+    });
+    canvas.addEventListener(
+      'wheel',
+      (e) => {
+        e.preventDefault();
+        const p = local(e);
+        const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
+        if (this.camera.kind === '2d') this.camera.zoom(factor, p.x, p.y);
+        else this.camera.zoom(factor);
+        this.request();
+      },
+      { passive: false },
+    );
+    canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  }
+
+  private pinchDistance(): number {
+    if (this.pointers.size !== 2) return 0;
+    const [a, b] = [...this.pointers.values()];
+    return Math.hypot(a.x - b.x, a.y - b.y);
+  }
+}

@@ -1,0 +1,461 @@
+// WebGL2 renderer. Planar lattices: one full-screen pass that finds each pixel's cell (square or
+// hex) and looks its code up in an integer texture, so a 1024×1024 lattice costs one texture
+// upload per frame. Agents: instanced discs. Cubic lattice: instanced, lit cubes on a ground grid.
+import type { Layout } from '../types';
+import { Camera2D, Camera3D, multiply } from './camera';
+import { cellCentre } from './geometry';
+import { heatTable, legendTable } from './palette';
+import type { Renderer, Scene } from './renderer';
+
+const PLANAR_VS = `#version 300 es
+in vec2 a_pos;
+void main() { gl_Position = vec4(a_pos, 0.0, 1.0); }`;
+
+const PLANAR_FS = `#version 300 es
+precision highp float;
+precision highp int;
+precision highp usampler2D;
+uniform usampler2D u_cells;
+uniform sampler2D u_palette;
+uniform sampler2D u_field;
+uniform sampler2D u_heat;
+uniform vec2 u_viewport;
+uniform vec3 u_cam;
+uniform ivec2 u_dims;
+uniform int u_hex;
+uniform int u_overlay;
+uniform vec2 u_range;
+out vec4 outColor;
+const float ROW = 0.8660254;
+const float RAD = 0.5773503;
+void main() {
+  vec2 s = vec2(gl_FragCoord.x, u_viewport.y - gl_FragCoord.y);
+  vec2 w = (s - 0.5 * u_viewport) / u_cam.z + u_cam.xy;
+  ivec2 c;
+  vec2 local;
+  if (u_hex == 1) {
+    float r = (w.y - RAD) / ROW;
+    float q = (w.x - 0.5) - r * 0.5;
+    vec3 cube = vec3(q, r, -q - r);
+    vec3 rc = floor(cube + 0.5);
+    vec3 d = abs(rc - cube);
+    if (d.x > d.y && d.x > d.z) rc.x = -rc.y - rc.z;
+    else if (d.y > d.z) rc.y = -rc.x - rc.z;
+    int rr = int(rc.y);
+    int rq = int(rc.x);
+    c = ivec2(rq + (rr - (rr & 1)) / 2, rr);
+    vec2 centre = vec2(float(c.x) + 0.5 + ((c.y & 1) == 1 ? 0.5 : 0.0), float(c.y) * ROW + RAD);
+    local = w - centre;
+  } else {
+    c = ivec2(floor(w));
+    local = w - (vec2(c) + 0.5);
+  }
+  if (c.x < 0 || c.y < 0 || c.x >= u_dims.x || c.y >= u_dims.y) discard;
+  uint code = texelFetch(u_cells, c, 0).r;
+  if (code == 0u) discard;
+  vec4 col = texelFetch(u_palette, ivec2(int(code), 0), 0);
+  if (u_overlay == 1) {
+    float v = texelFetch(u_field, c, 0).r;
+    if (!isnan(v) && !isinf(v)) {
+      float t = clamp((v - u_range.x) / max(u_range.y - u_range.x, 1e-9), 0.0, 1.0);
+      col = texelFetch(u_heat, ivec2(int(t * 255.0), 0), 0);
+    }
+  }
+  float edge;
+  if (u_hex == 1) {
+    edge = 0.5 - max(abs(local.x), max(abs(0.5 * local.x + ROW * local.y), abs(-0.5 * local.x + ROW * local.y)));
+  } else {
+    vec2 p = 0.5 - abs(local);
+    edge = min(p.x, p.y);
+  }
+  if (u_cam.z > 6.0 && edge < 1.0 / u_cam.z) col.rgb *= 0.62;
+  if (col.a == 0.0) discard;
+  outColor = col;
+}`;
+
+const AGENT_VS = `#version 300 es
+in vec2 a_corner;
+in vec2 a_centre;
+in vec4 a_color;
+uniform vec2 u_viewport;
+uniform vec3 u_cam;
+uniform float u_radius;
+out vec2 v_uv;
+out vec4 v_color;
+void main() {
+  vec2 s = (a_centre - u_cam.xy) * u_cam.z + 0.5 * u_viewport + a_corner * u_radius;
+  vec2 clip = s / u_viewport * 2.0 - 1.0;
+  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);
+  v_uv = a_corner;
+  v_color = a_color;
+}`;
+
+const AGENT_FS = `#version 300 es
+precision mediump float;
+in vec2 v_uv;
+in vec4 v_color;
+out vec4 outColor;
+void main() {
+  float d = length(v_uv);
+  if (d > 1.0) discard;
+  outColor = d > 0.78 ? vec4(0.0, 0.0, 0.0, 0.7) : v_color;
+}`;
+
+const CUBE_VS = `#version 300 es
+in vec3 a_pos;
+in vec3 a_normal;
+in vec3 a_offset;
+in vec4 a_color;
+uniform mat4 u_vp;
+out vec3 v_normal;
+out vec4 v_color;
+void main() {
+  gl_Position = u_vp * vec4(a_pos * 0.94 + a_offset + 0.5, 1.0);
+  v_normal = a_normal;
+  v_color = a_color;
+}`;
+
+const CUBE_FS = `#version 300 es
+precision mediump float;
+in vec3 v_normal;
+in vec4 v_color;
+out vec4 outColor;
+void main() {
+  vec3 light = normalize(vec3(0.4, 0.25, 0.88));
+  float shade = 0.45 + 0.55 * max(dot(normalize(v_normal), light), 0.0);
+  outColor = vec4(v_color.rgb * shade, v_color.a);
+}`;
+
+const LINE_VS = `#version 300 es
+in vec3 a_pos;
+uniform mat4 u_vp;
+void main() { gl_Position = u_vp * vec4(a_pos, 1.0); }`;
+
+const LINE_FS = `#version 300 es
+precision mediump float;
+uniform vec4 u_color;
+out vec4 outColor;
+void main() { outColor = u_color; }`;
+
+type Program = { program: WebGLProgram; uniform: (name: string) => WebGLUniformLocation | null; attrib: (name: string) => number };
+
+export class WebGL2Renderer implements Renderer {
+  readonly kind = 'webgl2' as const;
+  private planar: Program;
+  private agents: Program;
+  private cubes: Program;
+  private lines: Program;
+  private quad: WebGLVertexArrayObject;
+  private agentVao: WebGLVertexArrayObject;
+  private agentCentres: WebGLBuffer;
+  private agentColors: WebGLBuffer;
+  private cubeVao: WebGLVertexArrayObject;
+  private cubeOffsets: WebGLBuffer;
+  private cubeColors: WebGLBuffer;
+  private gridVao: WebGLVertexArrayObject;
+  private gridBuffer: WebGLBuffer;
+  private gridCount = 0;
+  private cellTex: WebGLTexture;
+  private fieldTex: WebGLTexture;
+  private paletteTex: WebGLTexture;
+  private heatTex: WebGLTexture;
+  private layout: Layout | null = null;
+  private palette = new Uint8Array(256 * 4);
+  private agentPalette = new Uint8Array(256 * 4);
+  private dpr = 1;
+
+  private constructor(private readonly canvas: HTMLCanvasElement, private readonly gl: WebGL2RenderingContext) {
+    this.planar = link(gl, PLANAR_VS, PLANAR_FS);
+    this.agents = link(gl, AGENT_VS, AGENT_FS);
+    this.cubes = link(gl, CUBE_VS, CUBE_FS);
+    this.lines = link(gl, LINE_VS, LINE_FS);
+
+    this.quad = gl.createVertexArray()!;
+    gl.bindVertexArray(this.quad);
+    const quadBuf = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, quadBuf);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
+    attribute(gl, this.planar.attrib('a_pos'), 2, gl.FLOAT, false, 0);
+
+    this.agentVao = gl.createVertexArray()!;
+    gl.bindVertexArray(this.agentVao);
+    const corners = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, corners);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, -1, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);
+    attribute(gl, this.agents.attrib('a_corner'), 2, gl.FLOAT, false, 0);
+    this.agentCentres = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.agentCentres);
+    attribute(gl, this.agents.attrib('a_centre'), 2, gl.FLOAT, false, 1);
+    this.agentColors = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.agentColors);
+    attribute(gl, this.agents.attrib('a_color'), 4, gl.UNSIGNED_BYTE, true, 1);
+
+    this.cubeVao = gl.createVertexArray()!;
+    gl.bindVertexArray(this.cubeVao);
+    const mesh = cubeMesh();
+    const meshBuf = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, meshBuf);
+    gl.bufferData(gl.ARRAY_BUFFER, mesh, gl.STATIC_DRAW);
+    const pos = this.cubes.attrib('a_pos');
+    const nor = this.cubes.attrib('a_normal');
+    gl.enableVertexAttribArray(pos);
+    gl.vertexAttribPointer(pos, 3, gl.FLOAT, false, 24, 0);
+    gl.enableVertexAttribArray(nor);
+    gl.vertexAttribPointer(nor, 3, gl.FLOAT, false, 24, 12);
+    this.cubeOffsets = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeOffsets);
+    attribute(gl, this.cubes.attrib('a_offset'), 3, gl.FLOAT, false, 1);
+    this.cubeColors = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeColors);
+    attribute(gl, this.cubes.attrib('a_color'), 4, gl.UNSIGNED_BYTE, true, 1);
+
+    this.gridVao = gl.createVertexArray()!;
+    gl.bindVertexArray(this.gridVao);
+    this.gridBuffer = gl.createBuffer()!;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.gridBuffer);
+    attribute(gl, this.lines.attrib('a_pos'), 3, gl.FLOAT, false, 0);
+    gl.bindVertexArray(null);
+
+    this.cellTex = texture(gl);
+    this.fieldTex = texture(gl);
+    this.paletteTex = texture(gl);
+    this.heatTex = texture(gl);
+    gl.bindTexture(gl.TEXTURE_2D, this.heatTex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, heatTable());
+  }
+
+  static create(canvas: HTMLCanvasElement): WebGL2Renderer | null {
+    const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: true });
+    if (!gl) return null;
+    try {
+      return new WebGL2Renderer(canvas, gl);
+    } catch (e) {
+      console.warn('WebGL2 renderer unavailable:', e);
+      return null;
+    }
+  }
+
+  setLayout(layout: Layout) {
+    const { gl } = this;
+    this.layout = layout;
+    this.palette = legendTable(layout.cells);
+    this.agentPalette = legendTable(layout.agents);
+    gl.bindTexture(gl.TEXTURE_2D, this.paletteTex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, this.palette);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    const [w, h] = layout.dims;
+    if (layout.lattice !== 'cubic') {
+      gl.bindTexture(gl.TEXTURE_2D, this.cellTex);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8UI, w, h, 0, gl.RED_INTEGER, gl.UNSIGNED_BYTE, null);
+      gl.bindTexture(gl.TEXTURE_2D, this.fieldTex);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, w, h, 0, gl.RED, gl.FLOAT, null);
+    } else {
+      const grid: number[] = [];
+      for (let x = 0; x <= w; x++) grid.push(x, 0, 0, x, h, 0);
+      for (let y = 0; y <= h; y++) grid.push(0, y, 0, w, y, 0);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.gridBuffer);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(grid), gl.STATIC_DRAW);
+      this.gridCount = grid.length / 3;
+    }
+  }
+
+  resize(cssWidth: number, cssHeight: number, dpr: number) {
+    this.dpr = dpr;
+    this.canvas.width = Math.max(1, Math.round(cssWidth * dpr));
+    this.canvas.height = Math.max(1, Math.round(cssHeight * dpr));
+  }
+
+  draw(scene: Scene) {
+    const { gl, canvas } = this;
+    gl.viewport(0, 0, canvas.width, canvas.height);
+    gl.clearColor(0.106, 0.137, 0.173, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    if (!this.layout) return;
+    if (scene.camera.kind === '3d') this.drawCubic(scene, scene.camera);
+    else this.drawPlanar(scene, scene.camera);
+  }
+
+  private drawPlanar(scene: Scene, cam: Camera2D) {
+    const { gl, canvas, dpr } = this;
+    const [w, h] = scene.layout.dims;
+    gl.disable(gl.DEPTH_TEST);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.cellTex);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RED_INTEGER, gl.UNSIGNED_BYTE, scene.frame.cells);
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, this.paletteTex);
+    gl.activeTexture(gl.TEXTURE2);
+    gl.bindTexture(gl.TEXTURE_2D, this.fieldTex);
+    if (scene.overlay) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RED, gl.FLOAT, scene.overlay.data);
+    gl.activeTexture(gl.TEXTURE3);
+    gl.bindTexture(gl.TEXTURE_2D, this.heatTex);
+
+    const p = this.planar;
+    gl.useProgram(p.program);
+    gl.uniform1i(p.uniform('u_cells'), 0);
+    gl.uniform1i(p.uniform('u_palette'), 1);
+    gl.uniform1i(p.uniform('u_field'), 2);
+    gl.uniform1i(p.uniform('u_heat'), 3);
+    gl.uniform2f(p.uniform('u_viewport'), canvas.width, canvas.height);
+    gl.uniform3f(p.uniform('u_cam'), cam.cx, cam.cy, cam.scale * dpr);
+    gl.uniform2i(p.uniform('u_dims'), w, h);
+    gl.uniform1i(p.uniform('u_hex'), scene.layout.lattice === 'hex' ? 1 : 0);
+    gl.uniform1i(p.uniform('u_overlay'), scene.overlay ? 1 : 0);
+    gl.uniform2f(p.uniform('u_range'), scene.overlay?.min ?? 0, scene.overlay?.max ?? 1);
+    gl.bindVertexArray(this.quad);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+
+    const list = scene.frame.agents;
+    const n = list.length >> 1;
+    if (n > 0) {
+      const centres = new Float32Array(n * 2);
+      const colors = new Uint8Array(n * 4);
+      for (let k = 0; k < n; k++) {
+        const cell = list[2 * k];
+        const [x, y] = cellCentre(scene.layout.lattice, cell % w, Math.floor(cell / w));
+        centres[2 * k] = x;
+        centres[2 * k + 1] = y;
+        colors.set(this.agentPalette.subarray(list[2 * k + 1] * 4, list[2 * k + 1] * 4 + 4), 4 * k);
+      }
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      const a = this.agents;
+      gl.useProgram(a.program);
+      gl.uniform2f(a.uniform('u_viewport'), canvas.width, canvas.height);
+      gl.uniform3f(a.uniform('u_cam'), cam.cx, cam.cy, cam.scale * dpr);
+      gl.uniform1f(a.uniform('u_radius'), Math.max(1.5 * dpr, cam.scale * dpr * 0.36));
+      gl.bindVertexArray(this.agentVao);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.agentCentres);
+      gl.bufferData(gl.ARRAY_BUFFER, centres, gl.STREAM_DRAW);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.agentColors);
+      gl.bufferData(gl.ARRAY_BUFFER, colors, gl.STREAM_DRAW);
+      gl.drawArraysInstanced(gl.TRIANGLES, 0, 6, n);
+      gl.disable(gl.BLEND);
+    }
+    gl.bindVertexArray(null);
+  }
+
+  private drawCubic(scene: Scene, cam: Camera3D) {
+    const { gl } = this;
+    const [w, h] = scene.layout.dims;
+    const cells = scene.frame.cells;
+    const vp = multiply(cam.projection(), cam.view());
+    gl.enable(gl.DEPTH_TEST);
+
+    const l = this.lines;
+    gl.useProgram(l.program);
+    gl.uniformMatrix4fv(l.uniform('u_vp'), false, vp);
+    gl.uniform4f(l.uniform('u_color'), 1, 1, 1, 0.14);
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    gl.bindVertexArray(this.gridVao);
+    gl.drawArrays(gl.LINES, 0, this.gridCount);
+    gl.disable(gl.BLEND);
+
+    let n = 0;
+    for (let i = 0; i < cells.length; i++) if (cells[i] !== 0) n++;
+    if (n > 0) {
+      const offsets = new Float32Array(n * 3);
+      const colors = new Uint8Array(n * 4);
+      const o = scene.overlay;
+      const heat = o ? heatTable() : null;
+      let k = 0;
+      for (let i = 0; i < cells.length; i++) {
+        const code = cells[i];
+        if (code === 0) continue;
+        offsets[3 * k] = i % w;
+        offsets[3 * k + 1] = Math.floor(i / w) % h;
+        offsets[3 * k + 2] = Math.floor(i / (w * h));
+        const v = o ? o.data[i] : NaN;
+        if (o && heat && v === v) {
+          const t = Math.round(Math.min(1, Math.max(0, (v - o.min) / Math.max(o.max - o.min, 1e-9))) * 255);
+          colors.set(heat.subarray(t * 4, t * 4 + 4), 4 * k);
+        } else {
+          colors.set(this.palette.subarray(code * 4, code * 4 + 4), 4 * k);
+        }
+        k++;
+      }
+      const c = this.cubes;
+      gl.useProgram(c.program);
+      gl.uniformMatrix4fv(c.uniform('u_vp'), false, vp);
+      gl.bindVertexArray(this.cubeVao);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeOffsets);
+      gl.bufferData(gl.ARRAY_BUFFER, offsets, gl.STREAM_DRAW);
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeColors);
+      gl.bufferData(gl.ARRAY_BUFFER, colors, gl.STREAM_DRAW);
+      gl.drawArraysInstanced(gl.TRIANGLES, 0, 36, n);
+    }
+    gl.bindVertexArray(null);
+    gl.disable(gl.DEPTH_TEST);
+  }
+
+  destroy() {
+    this.gl.getExtension('WEBGL_lose_context')?.loseContext();
+  }
+}
+
+function compile(gl: WebGL2RenderingContext, type: number, source: string): WebGLShader {
+  const shader = gl.createShader(type)!;
+  gl.shaderSource(shader, source);
+  gl.compileShader(shader);
+  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+    throw new Error(`shader: ${gl.getShaderInfoLog(shader) ?? 'compile failed'}`);
+  }
+  return shader;
+}
+
+function link(gl: WebGL2RenderingContext, vs: string, fs: string): Program {
+  const program = gl.createProgram()!;
+  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vs));
+  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fs));
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+    throw new Error(`program: ${gl.getProgramInfoLog(program) ?? 'link failed'}`);
+  }
+  const uniforms = new Map<string, WebGLUniformLocation | null>();
+  return {
+    program,
+    uniform: (name) => {
+      if (!uniforms.has(name)) uniforms.set(name, gl.getUniformLocation(program, name));
+      return uniforms.get(name) ?? null;
+    },
+    attrib: (name) => gl.getAttribLocation(program, name),
+  };
+}
+
+function attribute(gl: WebGL2RenderingContext, loc: number, size: number, type: number, normalized: boolean, divisor: number) {
+  if (loc < 0) return;
+  gl.enableVertexAttribArray(loc);
+  gl.vertexAttribPointer(loc, size, type, normalized, 0, 0);
+  gl.vertexAttribDivisor(loc, divisor);
+}
+
+function texture(gl: WebGL2RenderingContext): WebGLTexture {
+  const tex = gl.createTexture()!;
+  gl.bindTexture(gl.TEXTURE_2D, tex);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  return tex;
+}
+
+/** 36 vertices of a unit cube centred on the origin: position and normal, interleaved. */
+function cubeMesh(): Float32Array {
+  const out: number[] = [];
+  const faces: [number[], number[], number[]][] = [
+    [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+    [[-1, 0, 0], [0, 0, 1], [0, 1, 0]],
+    [[0, 1, 0], [0, 0, 1], [1, 0, 0]],
+    [[0, -1, 0], [1, 0, 0], [0, 0, 1]],
+    [[0, 0, 1], [1, 0, 0], [0, 1, 0]],
+    [[0, 0, -1], [0, 1, 0], [1, 0, 0]],
+  ];
+  for (const [n, u, v] of faces) {
+    const corner = (su: number, sv: number) => [0, 1, 2].map((a) => n[a] * 0.5 + u[a] * su * 0.5 + v[a] * sv * 0.5);
+    const quad = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, -1), corner(1, 1), corner(-1, 1)];
+    for (const p of quad) out.push(...p, ...n);
+  }
+  return new Float32Array(out);
+}

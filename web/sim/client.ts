@@ -1,0 +1,120 @@
+// The page's side of the simulation worker. It restarts the worker after a panic, with the last
+// scenario that loaded, so the page stays usable.
+import type { Frame, Layout } from '../types';
+import type { FromWorker, ToWorker } from './protocol';
+
+export interface SimEvents {
+  loaded(layout: Layout, scenario: string): void;
+  frame(frame: Frame): void;
+  playing(playing: boolean): void;
+  scenario(scenario: string): void;
+  error(message: string, context: 'load' | 'apply' | 'step'): void;
+  panic(message: string): void;
+}
+
+export class SimClient {
+  private worker!: Worker;
+  private lastGood: string | null = null;
+  private pendingLoad: string | null = null;
+  private inspectId = 0;
+  private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
+  private speed = 30;
+  private overlay: string | null = null;
+
+  constructor(private readonly on: SimEvents) {
+    this.start();
+  }
+
+  private start() {
+    this.worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'kumiki-sim' });
+    this.worker.onmessage = (e: MessageEvent<FromWorker>) => this.receive(e.data);
+    this.worker.onerror = (e) => this.on.error(`the simulation worker failed: ${e.message}`, 'step');
+    this.send({ type: 'speed', stepsPerSecond: this.speed });
+    this.send({ type: 'overlay', field: this.overlay });
+  }
+
+  private send(msg: ToWorker) {
+    this.worker.postMessage(msg);
+  }
+
+  private receive(msg: FromWorker) {
+    switch (msg.type) {
+      case 'ready':
+        return;
+      case 'loaded':
+        this.lastGood = this.pendingLoad ?? msg.scenario;
+        this.pendingLoad = null;
+        this.on.loaded(msg.layout, msg.scenario);
+        return;
+      case 'frame':
+        this.on.frame(msg.frame);
+        return;
+      case 'playing':
+        this.on.playing(msg.playing);
+        return;
+      case 'scenario':
+        this.on.scenario(msg.scenario);
+        return;
+      case 'inspected': {
+        const waiter = this.inspectWaiters.get(msg.id);
+        this.inspectWaiters.delete(msg.id);
+        waiter?.(msg.facts);
+        return;
+      }
+      case 'error':
+        if (msg.context === 'load') this.pendingLoad = null;
+        this.on.error(msg.message, msg.context);
+        return;
+      case 'panic':
+        this.on.panic(msg.message);
+        this.restart();
+        return;
+    }
+  }
+
+  /** A fresh worker with the last scenario that loaded. */
+  private restart() {
+    this.worker.terminate();
+    this.inspectWaiters.clear();
+    this.start();
+    if (this.lastGood) this.load(this.lastGood);
+  }
+
+  load(scenario: string) {
+    this.pendingLoad = scenario;
+    this.send({ type: 'load', scenario });
+  }
+  play() {
+    this.send({ type: 'play' });
+  }
+  pause() {
+    this.send({ type: 'pause' });
+  }
+  step(count = 1) {
+    this.send({ type: 'step', count });
+  }
+  setSpeed(stepsPerSecond: number) {
+    this.speed = stepsPerSecond;
+    this.send({ type: 'speed', stepsPerSecond });
+  }
+  setOverlay(field: string | null) {
+    this.overlay = field;
+    this.send({ type: 'overlay', field });
+  }
+  apply(action: Record<string, unknown>) {
+    this.send({ type: 'apply', action: JSON.stringify(action) });
+  }
+  ack() {
+    this.send({ type: 'ack' });
+  }
+  crash() {
+    this.send({ type: 'crash' });
+  }
+  inspect(cell: number): Promise<Record<string, unknown>> {
+    const id = ++this.inspectId;
+    return new Promise((resolve) => {
+      this.inspectWaiters.set(id, resolve);
+      this.send({ type: 'inspect', cell, id });
+    });
+  }
+}

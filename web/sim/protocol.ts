@@ -1,0 +1,24 @@
+// Messages between the page and the simulation worker.
+import type { Frame, Layout } from '../types';
+
+export type ToWorker =
+  | { type: 'load'; scenario: string }
+  | { type: 'play' }
+  | { type: 'pause' }
+  | { type: 'step'; count: number }
+  | { type: 'speed'; stepsPerSecond: number }
+  | { type: 'overlay'; field: string | null }
+  | { type: 'apply'; action: string }
+  | { type: 'inspect'; cell: number; id: number }
+  | { type: 'ack' }
+  | { type: 'crash' };
+
+export type FromWorker =
+  | { type: 'ready' }
+  | { type: 'loaded'; layout: Layout; scenario: string }
+  | { type: 'frame'; frame: Frame }
+  | { type: 'playing'; playing: boolean }
+  | { type: 'scenario'; scenario: string }
+  | { type: 'inspected'; id: number; cell: number; facts: Record<string, unknown> }
+  | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
+  | { type: 'panic'; message: string };

@@ -1,0 +1,235 @@
+// The simulation worker: owns the wasm Sim, runs steps at the requested pace and posts frames.
+// Frames are flow-controlled: the next is sent only after the page has drawn the last one, so a
+// fast simulation never floods the page. Timing here paces the run; it never enters the model.
+import init, { Sim, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
+import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
+import type { Frame, Metrics } from '../types';
+import type { FromWorker, ToWorker } from './protocol';
+
+const scope = self as unknown as DedicatedWorkerGlobalScope;
+const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessage(msg, transfer);
+
+/** Longest stretch of stepping between looks at the message queue. */
+const SLICE_MS = 12;
+/** The state hash costs a pass over the state: refresh it at most this often while playing. */
+const HASH_EVERY_MS = 250;
+
+let sim: Sim | null = null;
+let maxSteps = 0;
+let playing = false;
+let stepsPerSecond = 30;
+let overlay: string | null = null;
+let awaitingAck = false;
+let dirty = false;
+let lastHashAt = 0;
+let budget = 0;
+let lastTick = 0;
+let msPerStep = 1;
+let rateWindow: { t: number; steps: number }[] = [];
+let tickScheduled = false;
+
+const channel = new MessageChannel();
+channel.port1.onmessage = () => {
+  tickScheduled = false;
+  tick();
+};
+function schedule() {
+  if (!tickScheduled) {
+    tickScheduled = true;
+    channel.port2.postMessage(null);
+  }
+}
+
+function guard<T>(context: 'load' | 'apply' | 'step', f: () => T): T | undefined {
+  try {
+    return f();
+  } catch (e) {
+    const panic = panic_message();
+    if (panic) {
+      sim = null;
+      playing = false;
+      post({ type: 'panic', message: panic });
+    } else {
+      post({ type: 'error', message: e instanceof Error ? e.message : String(e), context });
+    }
+    return undefined;
+  }
+}
+
+function measuredRate(): number {
+  if (rateWindow.length < 2) return 0;
+  const a = rateWindow[0];
+  const b = rateWindow[rateWindow.length - 1];
+  return b.t > a.t ? ((b.steps - a.steps) * 1000) / (b.t - a.t) : 0;
+}
+
+function sendFrame(force = false) {
+  if (!sim || (awaitingAck && !force)) return;
+  const s = sim;
+  const frame = guard('step', (): Frame => {
+    const now = performance.now();
+    const withHash = !playing || now - lastHashAt >= HASH_EVERY_MS;
+    if (withHash) lastHashAt = now;
+    const data = overlay ? s.field(overlay) : undefined;
+    return {
+      steps: s.steps(),
+      maxSteps,
+      finished: s.finished(),
+      completed: s.completed(),
+      hash: withHash ? s.hash() : null,
+      metrics: s.metrics() as Metrics,
+      cells: s.cells(),
+      field: overlay && data ? { name: overlay, data } : null,
+      agents: s.agents(),
+      events: s.events(),
+      stepsPerSecond: playing ? measuredRate() : 0,
+    };
+  });
+  if (!frame) return;
+  const transfer: Transferable[] = [frame.cells.buffer, frame.agents.buffer, frame.events.buffer];
+  if (frame.field) transfer.push(frame.field.data.buffer);
+  awaitingAck = true;
+  dirty = false;
+  post({ type: 'frame', frame }, transfer);
+}
+
+function setPlaying(on: boolean) {
+  if (playing === on) return;
+  playing = on && !!sim && !sim.finished();
+  budget = 0;
+  lastTick = performance.now();
+  rateWindow = [];
+  post({ type: 'playing', playing });
+  if (!playing) dirty = true;
+  schedule();
+}
+
+function tick() {
+  if (!sim) return;
+  if (playing) {
+    const s = sim;
+    const start = performance.now();
+    const unlimited = !Number.isFinite(stepsPerSecond);
+    budget = unlimited ? Infinity : Math.min(budget + ((start - lastTick) * stepsPerSecond) / 1000, stepsPerSecond + 1);
+    lastTick = start;
+    let taken = 0;
+    while (budget >= 1 && performance.now() - start < SLICE_MS) {
+      const want = unlimited
+        ? Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))
+        : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4))));
+      const t0 = performance.now();
+      const n = guard('step', () => s.advance(want));
+      if (n === undefined) return;
+      const dt = performance.now() - t0;
+      if (n > 0) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
+      taken += n;
+      budget -= n;
+      if (n < want) break;
+    }
+    if (!sim) return;
+    if (taken > 0) {
+      dirty = true;
+      rateWindow.push({ t: performance.now(), steps: s.steps() });
+      while (rateWindow.length > 2 && rateWindow[rateWindow.length - 1].t - rateWindow[0].t > 2000) rateWindow.shift();
+    }
+    if (s.finished()) {
+      playing = false;
+      post({ type: 'playing', playing: false });
+      sendFrame(true);
+    }
+  }
+  if (dirty) sendFrame();
+  if (playing) {
+    if (Number.isFinite(stepsPerSecond) && budget < 1) {
+      setTimeout(schedule, Math.max(1, Math.min(50, ((1 - budget) * 1000) / stepsPerSecond)));
+    } else {
+      schedule();
+    }
+  }
+}
+
+function handle(msg: ToWorker) {
+  switch (msg.type) {
+    case 'load': {
+      playing = false;
+      const created = guard('load', () => new Sim(msg.scenario));
+      if (!created) return;
+      sim?.free();
+      sim = created;
+      maxSteps = (JSON.parse(created.scenario_json()) as { max_steps: number }).max_steps;
+      post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
+      post({ type: 'playing', playing: false });
+      awaitingAck = false;
+      sendFrame(true);
+      return;
+    }
+    case 'play':
+      setPlaying(true);
+      return;
+    case 'pause':
+      setPlaying(false);
+      return;
+    case 'step': {
+      if (!sim) return;
+      const s = sim;
+      setPlaying(false);
+      guard('step', () => s.advance(msg.count));
+      dirty = true;
+      schedule();
+      return;
+    }
+    case 'speed':
+      stepsPerSecond = msg.stepsPerSecond;
+      budget = 0;
+      lastTick = performance.now();
+      return;
+    case 'overlay':
+      overlay = msg.field;
+      dirty = true;
+      schedule();
+      return;
+    case 'apply': {
+      if (!sim) return;
+      const s = sim;
+      const ok = guard('apply', () => {
+        s.apply(msg.action);
+        return true;
+      });
+      if (ok) {
+        post({ type: 'scenario', scenario: s.scenario_json() });
+        dirty = true;
+        schedule();
+      }
+      return;
+    }
+    case 'inspect': {
+      if (!sim) return;
+      const s = sim;
+      const facts = guard('step', () => s.inspect(msg.cell) as Record<string, unknown>);
+      if (facts) post({ type: 'inspected', id: msg.id, cell: msg.cell, facts });
+      return;
+    }
+    case 'ack':
+      awaitingAck = false;
+      if (dirty) schedule();
+      return;
+    case 'crash':
+      guard('step', () => simulate_panic());
+      return;
+  }
+}
+
+const queue: ToWorker[] = [];
+let ready = false;
+scope.onmessage = (e: MessageEvent<ToWorker>) => {
+  if (ready) handle(e.data);
+  else queue.push(e.data);
+};
+
+init({ module_or_path: wasmUrl })
+  .then(() => {
+    ready = true;
+    post({ type: 'ready' });
+    for (const m of queue.splice(0)) handle(m);
+  })
+  .catch((e: unknown) => post({ type: 'error', message: `the simulation could not start: ${String(e)}`, context: 'load' }));

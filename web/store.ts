@@ -1,0 +1,92 @@
+// What survives a reload: the scenario being edited and the page's preferences. Also the undo
+// history of scenario changes.
+
+const SCENARIO_KEY = 'kumiki.scenario.v1';
+const PREFS_KEY = 'kumiki.prefs.v1';
+
+export interface Prefs {
+  speedIndex: number;
+  overlay: string;
+  arrows: boolean;
+  labels: boolean;
+  renderer: 'auto' | 'webgl2' | 'canvas2d';
+  tab: string;
+  chartMetric: string;
+  experiment: string;
+  workers: number;
+}
+
+const DEFAULT_PREFS: Prefs = {
+  speedIndex: 3,
+  overlay: '',
+  arrows: true,
+  labels: true,
+  renderer: 'auto',
+  tab: 'run',
+  chartMetric: '',
+  experiment: '',
+  workers: 0,
+};
+
+function read(key: string): string | null {
+  try {
+    return localStorage.getItem(key);
+  } catch {
+    return null;
+  }
+}
+
+function write(key: string, value: string) {
+  try {
+    localStorage.setItem(key, value);
+  } catch {
+    // Storage full or disabled: the page still works, edits just do not survive a reload.
+  }
+}
+
+export const savedScenario = (): string | null => read(SCENARIO_KEY);
+export const saveScenario = (json: string) => write(SCENARIO_KEY, json);
+
+export function loadPrefs(): Prefs {
+  try {
+    return { ...DEFAULT_PREFS, ...(JSON.parse(read(PREFS_KEY) ?? '{}') as Partial<Prefs>) };
+  } catch {
+    return { ...DEFAULT_PREFS };
+  }
+}
+
+export function savePrefs(prefs: Prefs) {
+  write(PREFS_KEY, JSON.stringify(prefs));
+}
+
+/** Undo and redo over whole scenario texts. */
+export class History {
+  private past: string[] = [];
+  private future: string[] = [];
+  private static readonly LIMIT = 100;
+
+  /** Records `previous` before a change to something else. */
+  push(previous: string) {
+    this.past.push(previous);
+    if (this.past.length > History.LIMIT) this.past.shift();
+    this.future = [];
+  }
+  undo(current: string): string | null {
+    const prev = this.past.pop();
+    if (prev === undefined) return null;
+    this.future.push(current);
+    return prev;
+  }
+  redo(current: string): string | null {
+    const next = this.future.pop();
+    if (next === undefined) return null;
+    this.past.push(current);
+    return next;
+  }
+  get canUndo() {
+    return this.past.length > 0;
+  }
+  get canRedo() {
+    return this.future.length > 0;
+  }
+}

@@ -1,0 +1,78 @@
+// Shapes of the records that cross from the core (through serde-wasm-bindgen) into the page.
+
+export type LatticeKind = 'square' | 'hex' | 'cubic';
+
+export interface LegendEntry {
+  code: number;
+  name: string;
+  color: string;
+}
+
+export interface FieldInfo {
+  name: string;
+  label: string;
+  arrows: boolean;
+}
+
+export interface ToolInfo {
+  name: string;
+  label: string;
+  action: Record<string, unknown>;
+}
+
+/** What a renderer needs to know once per run (kumiki_core::models::Layout). */
+export interface Layout {
+  lattice: LatticeKind;
+  dims: [number, number, number];
+  cells: LegendEntry[];
+  agents: LegendEntry[];
+  events: LegendEntry[];
+  fields: FieldInfo[];
+  tools: ToolInfo[];
+  [extra: string]: unknown;
+}
+
+export type Metrics = Record<string, number | boolean | string | null>;
+
+export interface PresetInfo {
+  name: string;
+  model: string;
+  title: string;
+  description: string;
+}
+
+/** One frame of a running simulation, as the worker sends it. */
+export interface Frame {
+  steps: number;
+  maxSteps: number;
+  finished: boolean;
+  completed: boolean;
+  hash: string | null;
+  metrics: Metrics;
+  cells: Uint8Array;
+  field: { name: string; data: Float32Array } | null;
+  agents: Uint32Array;
+  events: Uint32Array;
+  stepsPerSecond: number;
+}
+
+export interface ExperimentInfo {
+  name: string;
+  title: string;
+  description: string;
+  jobs: number;
+  plot: unknown;
+}
+
+export interface Row {
+  scenario: string;
+  seed: number;
+  completed: boolean;
+  steps: number;
+  hash: string;
+  metrics: Metrics;
+  params: Record<string, unknown>;
+  scenario_hash: string;
+  version: string;
+  trace?: { step: number[]; values: Record<string, (number | null)[]> };
+}

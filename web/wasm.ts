@@ -1,0 +1,33 @@
+// The main thread's own wasm instance, for work on documents: presets, validation, links,
+// experiments and CSV. Runs happen in workers.
+import init, * as core from './pkg/kumiki_wasm.js';
+import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
+import type { ExperimentInfo, PresetInfo } from './types';
+
+export async function loadCore(): Promise<void> {
+  await init({ module_or_path: wasmUrl });
+}
+
+/** A core error as plain text (wasm-bindgen's JsError arrives as an Error). */
+export function message(e: unknown): string {
+  return e instanceof Error ? e.message : String(e);
+}
+
+export const presets = (): PresetInfo[] => core.presets() as PresetInfo[];
+export const presetJson = (name: string): string => core.preset_json(name);
+export const normalize = (json: string): string => core.normalize_scenario(json);
+export const encodeLink = (json: string): string => core.encode_link(json);
+export const decodeLink = (link: string): string => core.decode_link(link);
+export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
+export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
+export const experimentJson = (name: string): string => core.experiment_json(name);
+export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
+export const version = (): string => core.version();
+export const experimentInfo = (json: string): ExperimentInfo => {
+  const runner = new core.ExperimentRunner(json);
+  try {
+    return runner.info() as ExperimentInfo;
+  } finally {
+    runner.free();
+  }
+};
