@@ -1,0 +1,61 @@
+// Runs the benchmarks and prints one table: native and wasm rates for every workload and their
+// ratio, the page's load-to-interactive time and in-page rates, and the gzipped wasm size.
+// Usage: node scripts/bench.mjs [tests/bench/a.json ...]   (default: every workload)
+import { execFileSync } from 'node:child_process';
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { measure } from './bench-wasm.mjs';
+import * as wasm from '../web/pkg/kumiki_wasm.js';
+
+const root = new URL('..', import.meta.url).pathname;
+const files = process.argv.slice(2).length
+  ? process.argv.slice(2)
+  : readdirSync(`${root}tests/bench`).filter((f) => f.endsWith('.json')).sort().map((f) => `tests/bench/${f}`);
+const specs = files.map((f) => ({ file: f, ...JSON.parse(readFileSync(`${root}${f}`, 'utf8')) }));
+
+const fmt = (v, digits = 3) => (v === undefined || v === null || Number.isNaN(v) ? '–' : Number(v).toPrecision(digits));
+const rows = [];
+
+for (const spec of specs) {
+  process.stderr.write(`bench ${spec.name}: native… `);
+  const native = JSON.parse(execFileSync(`${root}target/release/kumiki`, ['bench', spec.file], { cwd: root, encoding: 'utf8' }).trim());
+  process.stderr.write('wasm… ');
+  const inWasm = measure(spec);
+  process.stderr.write('done\n');
+  rows.push({ spec, native, wasm: inWasm });
+}
+
+console.log('\nworkload                        native            wasm (Node)       wasm/native  bytes/cell');
+for (const { spec, native, wasm: w } of rows) {
+  if (spec.experiment) {
+    console.log(
+      `${spec.name.padEnd(30)}  ${fmt(native.median_seconds)} s (${native.threads} threads)  ${fmt(w.median_seconds)} s (1 thread)   ${fmt(native.median_seconds / w.median_seconds, 2)}`,
+    );
+    continue;
+  }
+  const unit = spec.work_unit ? `${spec.work_unit}/s` : 'steps/s';
+  const n = spec.work_per_step ? native.work_per_second : native.steps_per_second;
+  const m = spec.work_per_step ? w.work_per_second : w.steps_per_second;
+  console.log(
+    `${spec.name.padEnd(30)}  ${fmt(n).padStart(9)} ${unit.padEnd(7)} ${fmt(m).padStart(9)} ${unit.padEnd(7)} ${fmt(m / n, 2).padStart(6)}       ${fmt(native.bytes_per_cell, 3)}`,
+  );
+}
+
+const wasmBytes = readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`);
+const gzKb = gzipSync(wasmBytes, { level: 9 }).length / 1024;
+console.log(`\nwasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (budget 300 KB)`);
+
+const { benchPage } = await import('./bench-page.mjs');
+wasm.initSync({ module: wasmBytes });
+const page = await benchPage(specs.filter((s) => s.page), (s) => {
+  let json = typeof s.scenario === 'string' ? wasm.preset_json(s.scenario) : JSON.stringify(s.scenario);
+  for (const [path, value] of Object.entries(s.set ?? {})) json = wasm.override_scenario(json, path, JSON.stringify(value));
+  return wasm.encode_link(json);
+});
+console.log(`page load to interactive (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
+for (const r of page.runs) {
+  console.log(`in the page, ${r.name}: ${fmt(r.stepsPerSecond)} steps/s while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer})`);
+}
+const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, page };
+writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
+console.log('\nfull results: target/bench-results.json');

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# npm run bench: every workload of tests/bench natively and in wasm (Node), the page in headless
+# Chromium (load to interactive, in-page run rates), and the gzipped wasm size. Medians; one run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --browser
+cargo build --release -p kumiki-cli --quiet
+bash scripts/build.sh >/dev/null
+node scripts/bench.mjs "$@"

@@ -1,0 +1,30 @@
+// Regenerates docs/screenshot.png: the page in headless Chromium, a preset part-way through.
+// Usage: node scripts/screenshot.mjs [preset] [steps]   (after npm run build)
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import * as wasm from '../web/pkg/kumiki_wasm.js';
+import { launch, serve } from '../tests/e2e/harness.mjs';
+
+wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+const [preset = 'amas-L', steps = '120', overlay = ''] = process.argv.slice(2);
+const link = wasm.encode_link(wasm.preset_json(preset));
+const server = await serve('/');
+const browser = await launch();
+const page = await (await browser.newContext({ viewport: { width: 1360, height: 820 }, deviceScaleFactor: 1 })).newPage();
+await page.goto(`${server.url}#${link}`);
+await page.waitForSelector('body[data-ready="true"]');
+if (overlay) {
+  await page.selectOption('#overlay', overlay);
+}
+await page.$eval('#speed', (s) => {
+  s.value = '7';
+  s.dispatchEvent(new Event('input'));
+});
+await page.click('#play');
+await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) >= n, Number(steps), { timeout: 60000 });
+await page.click('#play');
+await page.waitForTimeout(400);
+await page.screenshot({ path: fileURLToPath(new URL('../docs/screenshot.png', import.meta.url)) });
+await browser.close();
+await server.close();
+console.log('docs/screenshot.png written');

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# npm test: native tests, the wasm suites in headless Node, the type check, then the browser
+# end-to-end tests in headless Chromium against a fresh build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
+
+step "setup"
+bash scripts/setup.sh --browser
+
+step "native tests (cargo test)"
+cargo test --workspace --quiet
+
+step "wasm tests (wasm-bindgen-test in headless Node)"
+CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
+  cargo test -p kumiki-wasm --target wasm32-unknown-unknown --quiet
+
+step "type check and build"
+bash scripts/build-wasm.sh
+npx --no-install tsc --noEmit -p .
+bash scripts/build.sh
+
+step "browser tests (headless Chromium)"
+node --test --test-concurrency=1 tests/e2e/
