@@ -1,0 +1,287 @@
+// The page in headless Chromium: loading, running, keyboard, links, errors, recovery, persistence.
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { after, before, describe, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+import * as wasm from '../../web/pkg/kumiki_wasm.js';
+import { launch, openPage, serve, stepCount, waitForSteps } from './harness.mjs';
+
+wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+
+let server;
+let browser;
+before(async () => {
+  server = await serve('/classroom/kumiki/');
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+const hashOf = (page) => page.textContent('#state-hash');
+const scenarioJson = (page) => page.$eval('#scenario-json', (t) => t.value);
+async function waitForHashAt(page, steps) {
+  await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) === n, steps);
+  await page.waitForFunction(() => document.querySelector('#state-hash').textContent.length === 16);
+}
+
+describe('the page', () => {
+  test('loads from a sub-path with no console errors, and shows step 0 and the state hash', async () => {
+    const { page, context, problems } = await openPage(browser, server.url);
+    assert.equal(await stepCount(page), 0);
+    assert.match(await hashOf(page), /^[0-9a-f]{16}$/);
+    assert.match(await page.textContent('#scenario-name'), /\S/);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('play advances the step counter and pause stops it', async () => {
+    const { page, context, problems } = await openPage(browser, server.url);
+    await page.click('#play');
+    const reached = await waitForSteps(page, 5);
+    assert.ok(reached >= 5);
+    await page.click('#play');
+    await page.waitForSelector('#play[aria-pressed="false"]');
+    const paused = await stepCount(page);
+    await page.waitForTimeout(400);
+    assert.equal(await stepCount(page), paused);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('keyboard: Right arrow steps, R resets to the identical state, Space plays', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    const initial = await hashOf(page);
+    await page.locator('#view').focus();
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+    await waitForHashAt(page, 3);
+    assert.notEqual(await hashOf(page), initial);
+    await page.keyboard.press('r');
+    await waitForHashAt(page, 0);
+    assert.equal(await hashOf(page), initial);
+    await page.keyboard.press('Space');
+    await waitForSteps(page, 2);
+    await page.keyboard.press('Space');
+    await page.waitForSelector('#play[aria-pressed="false"]');
+    await context.close();
+  });
+
+  test('a copied link restores the scenario exactly, gives the same run, and the CLI agrees', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    await page.fill('#seed', '4242');
+    await page.dispatchEvent('#seed', 'change');
+    await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"seed": 4242'));
+    await page.click('#copy-link');
+    await page.waitForFunction(() => location.hash.startsWith('#k1.'));
+    const link = await page.evaluate(() => location.href);
+    const json = await scenarioJson(page);
+
+    const second = await openPage(browser, link);
+    assert.equal(await scenarioJson(second.page), json);
+    for (const p of [page, second.page]) {
+      await p.selectOption('#speed', { index: 0 }).catch(() => {});
+      await p.$eval('#speed', (s) => {
+        s.value = '8';
+        s.dispatchEvent(new Event('input'));
+      });
+      await p.click('#play');
+      await p.waitForSelector('#run-status:not(:empty)', { timeout: 60000 });
+      await p.waitForSelector('#play[aria-pressed="false"]');
+    }
+    const final = await hashOf(page);
+    assert.match(final, /^[0-9a-f]{16}$/);
+    assert.equal(await hashOf(second.page), final);
+    assert.equal(await stepCount(second.page), await stepCount(page));
+
+    const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'run', link], { encoding: 'utf8' });
+    const row = JSON.parse(out.trim().split('\n')[0]);
+    assert.equal(row.seed, 4242);
+    assert.equal(row.hash, final, 'the command line reproduces the page run from the same link');
+    assert.equal(row.steps, await stepCount(page));
+    await second.context.close();
+    await context.close();
+  });
+
+  test('a malformed link shows a readable message and the page stays usable', async () => {
+    const { page, context } = await openPage(browser, `${server.url}#k1.this-is-not-a-scenario`);
+    await page.waitForSelector('#banner:not([hidden])');
+    assert.match(await page.textContent('#banner-text'), /could not be opened/);
+    assert.match(await page.textContent('#banner-text'), /link:/);
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    await context.close();
+  });
+
+  test('text from a link is shown as text, never as HTML', async () => {
+    const evil = '<img src=x id=injected onerror="document.body.dataset.pwned=1">';
+    const scenario = JSON.parse(wasm.preset_json('amas-L'));
+    scenario.name = evil;
+    scenario.description = evil;
+    const link = wasm.encode_link(JSON.stringify(scenario));
+    const { page, context } = await openPage(browser, `${server.url}#${link}`);
+    assert.equal(await page.textContent('#scenario-name'), evil);
+    assert.equal(await page.$('#injected'), null);
+    assert.equal(await page.evaluate(() => document.body.dataset.pwned), undefined);
+    await context.close();
+  });
+
+  test('a panic in the simulation is shown and the page recovers with the last good scenario', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    const initial = await hashOf(page);
+    await page.click('#tab-about');
+    await page.click('#simulate-crash');
+    await page.waitForSelector('#banner:not([hidden])');
+    assert.match(await page.textContent('#banner-text'), /internal error/);
+    assert.match(await page.textContent('#banner-text'), /simulated panic/);
+    await waitForHashAt(page, 0);
+    assert.equal(await hashOf(page), initial);
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    await context.close();
+  });
+
+  test('an invalid parameter is refused with a message naming the field, and nothing is lost', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    await page.click('#tab-scenario');
+    const before = await scenarioJson(page);
+    await page.fill('#param-robots', '0');
+    await page.dispatchEvent('#param-robots', 'change');
+    await page.waitForSelector('#param-robots-error:not(:empty)');
+    assert.match(await page.textContent('#param-robots-error'), /^robots:/);
+    assert.equal(await page.inputValue('#param-robots'), '0');
+    assert.equal(await scenarioJson(page), before);
+    await context.close();
+  });
+
+  test('edits survive a reload, and undo brings the previous scenario back', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    await page.fill('#seed', '777');
+    await page.dispatchEvent('#seed', 'change');
+    await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"seed": 777'));
+    await page.reload();
+    await page.waitForSelector('body[data-ready="true"]');
+    await page.waitForFunction(() => document.querySelector('#seed').value === '777');
+    await page.fill('#seed', '778');
+    await page.dispatchEvent('#seed', 'change');
+    await page.waitForFunction(() => document.querySelector('#seed').value === '778' && !document.querySelector('#undo').disabled);
+    await page.click('#tab-scenario');
+    await page.click('#undo');
+    await page.waitForFunction(() => document.querySelector('#seed').value === '777');
+    await page.click('#redo');
+    await page.waitForFunction(() => document.querySelector('#seed').value === '778');
+    await page.locator('#view').focus();
+    await page.keyboard.press('Control+z');
+    await page.waitForFunction(() => document.querySelector('#seed').value === '777');
+    await context.close();
+  });
+
+  test('clicked disturbances are recorded in the link', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    for (let i = 0; i < 60; i++) await page.keyboard.press('ArrowRight');
+    await waitForHashAt(page, 60);
+    const tools = await page.$$eval('#tools button', (bs) => bs.map((b) => b.dataset.tool));
+    assert.ok(tools.length > 1, 'the model offers click tools');
+    await page.click(`#tools button[data-tool="${tools[1]}"]`);
+    // Click the centre of a built module: find one from the page's own picking.
+    const box = await page.locator('#view').boundingBox();
+    let recorded = false;
+    for (let k = 0; k < 40 && !recorded; k++) {
+      await page.mouse.click(box.x + box.width * (0.2 + 0.6 * ((k * 7) % 40) / 40), box.y + box.height * (0.5 + 0.45 * ((k * 13) % 40) / 40));
+      await page.waitForTimeout(60);
+      recorded = (await scenarioJson(page)).includes('"disturbances"');
+    }
+    assert.ok(recorded, 'a click on a module records a disturbance');
+    await context.close();
+  });
+
+  test('the simulation runs in a worker: the page stays responsive while a large run plays', async () => {
+    const rows = Array.from({ length: 300 }, () => '#'.repeat(400)).join('\n');
+    const big = { ...JSON.parse(wasm.preset_json('amas-L')), name: 'big', target: rows, robots: 300, max_steps: 1000000 };
+    const link = wasm.encode_link(JSON.stringify(big));
+    const { page, context } = await openPage(browser, `${server.url}#${link}`);
+    await page.$eval('#speed', (s) => {
+      s.value = '8';
+      s.dispatchEvent(new Event('input'));
+    });
+    await page.click('#play');
+    await waitForSteps(page, 3, 30000);
+    // While it plays, the main thread answers timers promptly.
+    const worst = await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          let worstGap = 0;
+          let last = performance.now();
+          const end = last + 2000;
+          const tick = () => {
+            const now = performance.now();
+            worstGap = Math.max(worstGap, now - last);
+            last = now;
+            if (now < end) setTimeout(tick, 10);
+            else resolve(worstGap);
+          };
+          setTimeout(tick, 10);
+        }),
+    );
+    const later = await stepCount(page);
+    assert.ok(later > 3, 'the run kept going');
+    assert.ok(worst < 250, `the main thread stalled for ${worst.toFixed(0)} ms`);
+    await page.click('#play');
+    await context.close();
+  });
+
+  test('every control has an accessible name', async () => {
+    const { page, context } = await openPage(browser, server.url);
+    const unnamed = await page.evaluate(() => {
+      const missing = [];
+      for (const el of document.querySelectorAll('button, input, select, textarea, [role="tab"], [role="radio"]')) {
+        const aria = el.getAttribute('aria-label') || el.getAttribute('aria-labelledby');
+        const labelled = el.labels && el.labels.length > 0;
+        const text = el.textContent.trim();
+        if (!aria && !labelled && !(el.tagName === 'BUTTON' && text)) missing.push(el.outerHTML.slice(0, 80));
+      }
+      return missing;
+    });
+    assert.deepEqual(unnamed, []);
+    await context.close();
+  });
+
+  test('both renderers draw the lattice', async () => {
+    for (const kind of ['webgl2', 'canvas2d']) {
+      const { page, context, problems } = await openPage(browser, server.url);
+      await page.click('#tab-about');
+      await page.selectOption('#renderer-choice', kind);
+      await page.waitForFunction((k) => document.body.dataset.renderer === k, kind);
+      await page.click('#step');
+      await waitForSteps(page, 1);
+      await page.waitForTimeout(200);
+      const colours = await page.$eval('#view', (canvas) => {
+        const probe = document.createElement('canvas');
+        probe.width = 200;
+        probe.height = 150;
+        const ctx = probe.getContext('2d');
+        ctx.drawImage(canvas, 0, 0, 200, 150);
+        const data = ctx.getImageData(0, 0, 200, 150).data;
+        const seen = new Set();
+        for (let i = 0; i < data.length; i += 4) seen.add(`${data[i] >> 4},${data[i + 1] >> 4},${data[i + 2] >> 4}`);
+        return seen.size;
+      });
+      assert.ok(colours >= 4, `${kind} drew ${colours} colours`);
+      assert.deepEqual(problems, []);
+      await context.close();
+    }
+  });
+
+  test('works on a classroom tablet: no sideways scrolling, the view stays large', async () => {
+    const { page, context } = await openPage(browser, server.url, { width: 820, height: 1180 });
+    const { scroll, width, canvasHeight } = await page.evaluate(() => ({
+      scroll: document.documentElement.scrollWidth,
+      width: window.innerWidth,
+      canvasHeight: document.querySelector('#view').getBoundingClientRect().height,
+    }));
+    assert.ok(scroll <= width, `page is ${scroll}px wide in a ${width}px window`);
+    assert.ok(canvasHeight >= 400, `the view is only ${canvasHeight}px tall`);
+    await context.close();
+  });
+});
