@@ -12,8 +12,9 @@ step "native tests (cargo test)"
 cargo test --workspace --quiet
 
 step "wasm tests (wasm-bindgen-test in headless Node)"
+# Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
-  cargo test -p kumiki-wasm --target wasm32-unknown-unknown --quiet
+  cargo test -p kumiki-wasm --target wasm32-unknown-unknown
 
 step "type check and build"
 bash scripts/build-wasm.sh
