@@ -16,10 +16,9 @@ step "wasm tests (wasm-bindgen-test in headless Node)"
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test -p kumiki-wasm --target wasm32-unknown-unknown
 
-step "type check and build"
-bash scripts/build-wasm.sh
-npx --no-install tsc --noEmit -p .
+step "build and type check"
 bash scripts/build.sh
+npx --no-install tsc --noEmit -p .
 
 step "browser tests (headless Chromium)"
 node --test --test-concurrency=1 tests/e2e/
