@@ -372,14 +372,14 @@ function renderScenarioPanel() {
   byId('scenario-model').textContent = String(doc.model ?? '');
   document.title = `${String(doc.name || 'untitled')} · Kumiki`;
   seedInput.value = String(doc.seed ?? 0);
-  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value));
+  const model = String(doc.model);
+  const spec = modelEditors[model];
+  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value), spec?.owns);
   jsonDirty = false;
   syncJsonEditor();
   jsonError.textContent = '';
 
-  const model = String(doc.model);
   const root = byId('model-editor');
-  const spec = modelEditors[model];
   if (model !== editorModel) {
     editor?.destroy();
     editor = null;

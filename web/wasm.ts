@@ -23,6 +23,16 @@ export const experiments = (): ExperimentInfo[] => core.experiments() as Experim
 export const experimentJson = (name: string): string => core.experiment_json(name);
 export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
 export const version = (): string => core.version();
+
+export interface Shape {
+  w: number;
+  h: number;
+  d: number;
+  cells: number[];
+}
+/** A text shape read by the core's rules; throws with the row and column of a bad character. */
+export const parseShape = (lattice: 'square' | 'hex' | 'cubic', text: string): Shape => core.shape_parse(lattice, text) as Shape;
+export const formatShape = (lattice: 'square' | 'hex' | 'cubic', s: Shape): string => core.shape_format(lattice, s.w, s.h, s.d, Uint8Array.from(s.cells));
 export const experimentInfo = (json: string): ExperimentInfo => {
   const runner = new core.ExperimentRunner(json);
   try {

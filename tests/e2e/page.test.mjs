@@ -285,3 +285,39 @@ describe('the page', () => {
     await context.close();
   });
 });
+
+describe('the AMAS target editor', () => {
+  test('painting next to the structure changes the target; a disconnected stroke is refused and kept; undo works', async () => {
+    const { page, context, problems } = await openPage(browser, server.url);
+    await page.click('#tab-scenario');
+    await page.waitForSelector('.grid-canvas');
+    const target = async () => JSON.parse(await scenarioJson(page)).target;
+    const before = await target();
+    const rows = before.trim().split('\n');
+    const [w, h] = [rows[0].length, rows.length];
+    const box = await page.locator('.grid-canvas').boundingBox();
+    const cell = box.width / w;
+    const at = (x, y) => [box.x + (x + 0.5) * cell, box.y + (y + 0.5) * cell];
+    // The top-right cell is empty in amas-L and touches nothing: painting it alone is refused.
+    assert.equal(rows[0][w - 1], '.');
+    await page.mouse.click(...at(w - 1, 0));
+    await page.waitForFunction(() => document.querySelector('#model-editor .error').textContent.includes('not connected'));
+    assert.equal(await target(), before, 'a refused shape does not change the scenario');
+    // Undo the stray cell, then paint a cell on top of the bar, which is connected.
+    await page.click('#model-editor button[aria-label="Undo the last drawing change"]');
+    await page.waitForFunction(() => document.querySelector('#model-editor .error').textContent === '');
+    const bar = rows.findIndex((r) => r[0] === '#');
+    assert.equal(bar, 0);
+    await page.locator('#model-editor input[aria-label="Height in cells"]').fill(String(h + 1));
+    await page.dispatchEvent('#model-editor input[aria-label="Height in cells"]', 'change');
+    await page.waitForFunction((n) => JSON.parse(document.querySelector('#scenario-json').value).target.trim().split('\n').length === n, h + 1);
+    const box2 = await page.locator('.grid-canvas').boundingBox();
+    const cell2 = box2.width / w;
+    await page.mouse.click(box2.x + 0.5 * cell2, box2.y + 0.5 * cell2);
+    await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).target.startsWith('#'));
+    assert.equal((await target()).split('#').length - 1, before.split('#').length);
+    assert.equal(await page.$('#param-target'), null, 'the generic form leaves the target to the editor');
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+});

@@ -1,30 +1,9 @@
-// Model-specific editors (target shapes, type-lists, statements) mount above the generic
-// parameter form in the Scenario panel. Each model registers one editor here, in its own file.
-import type { Layout } from '../types';
+// Model-specific editors by model name, one file each.
+import { amasEditor } from './amas';
+import type { ModelEditor } from './editor';
 
-export interface EditorContext {
-  /** The scenario as it now stands, parsed. */
-  scenario(): Record<string, unknown>;
-  /**
-   * Applies changes to top-level scenario keys. The core validates the result; on failure the
-   * scenario is unchanged and the message, which names the field, is returned.
-   */
-  change(changes: Record<string, unknown>): string | null;
-  /** The layout of the loaded run, once it has loaded. */
-  layout(): Layout | null;
-}
+export type { EditorContext, ModelEditor, MountedEditor } from './editor';
 
-export interface MountedEditor {
-  /** The scenario changed (undo, a preset, a link): show it. */
-  update(scenario: Record<string, unknown>): void;
-  destroy(): void;
-}
-
-export interface ModelEditor {
-  /** Heading shown above the editor. */
-  title: string;
-  mount(root: HTMLElement, ctx: EditorContext): MountedEditor;
-}
-
-/** Editors by model name. */
-export const modelEditors: Record<string, ModelEditor> = {};
+export const modelEditors: Record<string, ModelEditor> = {
+  amas: amasEditor,
+};

@@ -7,10 +7,10 @@ const ORDER = ['name', 'description', 'max_steps'];
 
 export type Apply = (key: string, valueJson: string) => string | null;
 
-export function renderParams(form: HTMLFormElement, scenario: Record<string, unknown>, apply: Apply) {
+export function renderParams(form: HTMLFormElement, scenario: Record<string, unknown>, apply: Apply, skip: string[] = []) {
   const focused = document.activeElement instanceof HTMLElement && form.contains(document.activeElement) ? document.activeElement.id : '';
   clear(form);
-  const keys = Object.keys(scenario).filter((k) => !HIDDEN.has(k) && k !== 'seed');
+  const keys = Object.keys(scenario).filter((k) => !HIDDEN.has(k) && k !== 'seed' && !skip.includes(k));
   keys.sort((a, b) => {
     const ia = ORDER.indexOf(a);
     const ib = ORDER.indexOf(b);

@@ -6,7 +6,7 @@ use std::sync::Mutex;
 
 use js_sys::{Float32Array, Uint32Array, Uint8Array};
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
-use kumiki_core::{hash, link, models, presets, Run, Scenario};
+use kumiki_core::{hash, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
@@ -120,6 +120,85 @@ pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<Str
         .and_then(|s| s.with_override(path, value))
         .map(|s| s.to_json_pretty())
         .map_err(js_err)
+}
+
+/// A text shape parsed by the core's rules: `{w, h, d, cells}` with one 0/1 byte per cell
+/// (row-major, layers from the ground up). `lattice` is `square`, `hex` or `cubic`.
+#[wasm_bindgen]
+pub fn shape_parse(lattice: &str, text: &str) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Parsed {
+        w: u32,
+        h: u32,
+        d: u32,
+        cells: Vec<u8>,
+    }
+    let bytes = |cells: Vec<bool>| cells.into_iter().map(u8::from).collect();
+    let parsed = match lattice {
+        "square" | "hex" => {
+            let g = if lattice == "square" {
+                shape::parse_square(text)
+            } else {
+                shape::parse_hex(text)
+            }
+            .map_err(js_err)?;
+            Parsed {
+                w: g.w,
+                h: g.h,
+                d: 1,
+                cells: bytes(g.cells),
+            }
+        }
+        "cubic" => {
+            let g = shape::parse_cubic(text).map_err(js_err)?;
+            Parsed {
+                w: g.w,
+                h: g.h,
+                d: g.d,
+                cells: bytes(g.cells),
+            }
+        }
+        other => return Err(JsError::new(&format!("unknown lattice '{other}'"))),
+    };
+    to_js(&parsed)
+}
+
+/// The text form of a shape (the inverse of [`shape_parse`]).
+#[wasm_bindgen]
+pub fn shape_format(
+    lattice: &str,
+    w: u32,
+    h: u32,
+    d: u32,
+    cells: &[u8],
+) -> Result<String, JsError> {
+    let n = (w as usize) * (h as usize) * (d.max(1) as usize);
+    if cells.len() != n {
+        return Err(JsError::new(&format!(
+            "{} cells given for a {w}×{h}×{d} shape",
+            cells.len()
+        )));
+    }
+    let filled: Vec<bool> = cells.iter().map(|&c| c != 0).collect();
+    Ok(match lattice {
+        "square" => shape::square_text(&shape::Grid2 {
+            w,
+            h,
+            cells: filled,
+        }),
+        "hex" => shape::hex_text(&shape::Grid2 {
+            w,
+            h,
+            cells: filled,
+        }),
+        "cubic" => shape::cubic_text(&shape::Grid3 {
+            w,
+            h,
+            d,
+            cells: filled,
+        }),
+        other => return Err(JsError::new(&format!("unknown lattice '{other}'"))),
+    })
 }
 
 /// One running simulation.
@@ -298,7 +377,9 @@ pub fn experiments() -> Result<JsValue, JsError> {
 /// The text of a built-in experiment file, for the page's editor.
 #[wasm_bindgen]
 pub fn experiment_json(name: &str) -> Result<String, JsError> {
-    presets::experiment_json(name).map(str::to_string).map_err(js_err)
+    presets::experiment_json(name)
+        .map(str::to_string)
+        .map_err(js_err)
 }
 
 /// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
