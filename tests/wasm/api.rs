@@ -1,7 +1,7 @@
 //! The exported handle as JavaScript sees it, run in headless Node.
 #![cfg(target_arch = "wasm32")]
 
-use kumiki_wasm::{decode_link, encode_link, preset_json, ExperimentRunner, Sim};
+use kumiki_wasm::{decode_link, encode_link, model_query, preset_json, ExperimentRunner, Sim};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test]
@@ -51,4 +51,20 @@ fn experiment_jobs_run_in_wasm() {
     let runner = ExperimentRunner::new("amas-robots").unwrap();
     assert!(runner.job_count() > 0);
     assert!(runner.run(0).is_ok());
+}
+
+#[wasm_bindgen_test]
+fn cubes_scene_and_queries_in_wasm() {
+    let mut sim = Sim::new(&preset_json("cubes-light").unwrap()).unwrap();
+    assert_eq!(sim.advance(5), 5);
+    assert!(sim.scene().is_ok());
+    assert!(sim.field("difference").is_some());
+    let out = model_query(
+        "cubes3d",
+        "derive",
+        r###"{"shape": "##\n##\n---\n##\n##\n"}"###,
+    )
+    .unwrap();
+    assert!(out.contains("C31[C31, C31, C31]"));
+    assert!(model_query("cubes3d", "check", r#"{"type_lists": "C31[C31"}"#).is_err());
 }

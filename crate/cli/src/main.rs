@@ -26,6 +26,8 @@ USAGE
   kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
   kumiki bench WORKLOAD.json... [--jobs J]
                                        time workloads (see tests/bench); one JSON line each
+  kumiki query MODEL NAME [ARGS]       a model's helper call; ARGS is JSON text or a JSON file,
+                                       e.g. kumiki query cubes3d derive '{\"shape\": \"##\\n##\\n\"}'
   kumiki help | --version
 
 SCENARIO is a JSON file, a share link (or its #k1... part), or a preset name.
@@ -110,6 +112,7 @@ fn dispatch(args: &[String]) -> Result<(), Failure> {
         "run" => run(rest),
         "sweep" => sweep(rest),
         "bench" => bench(rest),
+        "query" => query(rest),
         other => Err(Failure::Usage(format!("unknown command '{other}'"))),
     }
 }
@@ -363,6 +366,35 @@ fn sweep(rest: &[String]) -> Result<(), Failure> {
     if csv {
         write!(out, "{}", experiment::to_csv(&rows))?;
     }
+    Ok(())
+}
+
+fn query(rest: &[String]) -> Result<(), Failure> {
+    let (positional, _) = parse_options(rest, &[])?;
+    let (model, name, args) = match positional.as_slice() {
+        [m, n] => (m, n, "{}".to_string()),
+        [m, n, a] => {
+            let path = std::path::Path::new(a);
+            let text = if path.is_file() {
+                std::fs::read_to_string(path).map_err(|e| format!("{a}: {e}"))?
+            } else {
+                a.clone()
+            };
+            (m, n, text)
+        }
+        [_, _, _, extra, ..] => {
+            return Err(Failure::Usage(format!("unexpected argument '{extra}'")))
+        }
+        _ => {
+            return Err(Failure::Usage(
+                "query needs a model and a query name".into(),
+            ))
+        }
+    };
+    let args: serde_json::Value =
+        serde_json::from_str(&args).map_err(|e| Failure::Usage(format!("ARGS: {e}")))?;
+    let answer = kumiki_core::models::query(model, name, &args)?;
+    println!("{answer}");
     Ok(())
 }
 

@@ -298,10 +298,28 @@ impl Sim {
         to_js(&self.run.model().inspect(cell as usize))
     }
 
+    /// Ghost cells, light direction, ground plane and bonds for 3-D views (see
+    /// `kumiki_core::models::Scene`); empty for models without them. Read it again after stepping:
+    /// the ghost follows the current target.
+    pub fn scene(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run.model().scene())
+    }
+
     /// The scenario as it now stands, with clicked disturbances recorded.
     pub fn scenario_json(&self) -> String {
         self.run.scenario().to_json_pretty()
     }
+}
+
+/// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance
+/// `model_query("cubes3d", "derive", '{"shape": "##\n##\n"}')`. Arguments and answer are JSON
+/// text; a bad argument is an error that names it.
+#[wasm_bindgen]
+pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, JsError> {
+    let args: Value = serde_json::from_str(args_json).map_err(js_err)?;
+    models::query(model, name, &args)
+        .map(|v| v.to_string())
+        .map_err(js_err)
 }
 
 /// An experiment parsed once, whose jobs a pool of workers shares out.

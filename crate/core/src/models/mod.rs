@@ -16,6 +16,7 @@ use crate::lattice::LatticeKind;
 use crate::scenario::Scenario;
 
 pub mod amas;
+pub mod cubes3d;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
@@ -74,6 +75,25 @@ pub struct Layout {
     pub tools: Vec<ToolInfo>,
 }
 
+/// Optional scene information for 3-D views, beyond the cells. Models without any return the
+/// default (nothing to draw). It may change between steps (a target switched, for instance), so a
+/// view reads it again after stepping.
+#[derive(Clone, Debug, Default, Serialize, PartialEq)]
+pub struct Scene {
+    /// Cells of a reference shape (a target) to draw as a translucent ghost.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub ghost: Vec<u32>,
+    /// Unit vector from the structure toward a light source, in lattice axes (x, y, z).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub light: Option<[f32; 3]>,
+    /// A ground plane under layer z = `ground` (it touches the bottom faces of that layer's
+    /// cells); nothing lies below it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ground: Option<u32>,
+    /// Occupied face-adjacent cells are bonded: draw a bond (arm) between every such pair.
+    pub bonds: bool,
+}
+
 /// An agent standing on a cell (a robot on a module).
 #[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
 pub struct Agent {
@@ -115,6 +135,10 @@ pub trait Model {
     fn inspect(&self, _cell: usize) -> Map<String, Value> {
         Map::new()
     }
+    /// Ghost, light and ground for 3-D views; see [`Scene`].
+    fn scene(&self) -> Scene {
+        Scene::default()
+    }
 }
 
 /// A registered model.
@@ -127,7 +151,26 @@ pub struct ModelEntry {
 }
 
 /// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY];
+pub const MODELS: &[ModelEntry] = &[amas::ENTRY, cubes3d::ENTRY];
+
+/// A model's helper call that needs no run: a query name and JSON arguments give a JSON answer.
+pub type QueryFn = fn(&str, &Value) -> Result<Value>;
+
+/// The models that answer helper calls (for instance deriving a target description from a
+/// shape the page's editor built), by model name.
+pub const QUERIES: &[(&str, QueryFn)] = &[("cubes3d", cubes3d::query)];
+
+/// Runs a model's helper call, see [`QUERIES`].
+pub fn query(model: &str, name: &str, args: &Value) -> Result<Value> {
+    entry(model)?;
+    match QUERIES.iter().find(|(m, _)| *m == model) {
+        Some((_, f)) => f(name, args),
+        None => Err(Error::field(
+            "model",
+            format!("model '{model}' answers no queries"),
+        )),
+    }
+}
 
 pub fn entry(name: &str) -> Result<&'static ModelEntry> {
     MODELS.iter().find(|m| m.name == name).ok_or_else(|| {

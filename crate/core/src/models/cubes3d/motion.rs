@@ -1,0 +1,510 @@
+//! The structure on the cubic lattice and the pairwise motion of sections 2 and 3.2.
+//!
+//! A move of unit P (at p) is made by a neighbour Q (the carrier, at q = p - e): Q turns its body
+//! a quarter turn about an axis `a` perpendicular to the bond e, holding on to a support unit on
+//! that axis (at q + a or q - a), and P swings from q + e to q + f, where f is perpendicular to
+//! both e and a. The move is allowed when
+//! 1. Q has a support on the axis;
+//! 2. the destination q + f is empty and inside the space;
+//! 3. the swing hits no unit: the cell p + f, the corner P sweeps through, is empty;
+//! 4. nothing else is carried and the structure stays connected: P lets go of every other bond,
+//!    Q lets go of every bond not on the axis except the one to P, and every unit must still be
+//!    held by the rest of the structure during the swing (so also after it).
+//!
+//! Rule 4 is checked exactly. A search limited to the 5×5×5 cells around Q settles almost every
+//! case (short cycles); only when it cannot join all the released units does a search over the
+//! structure run, from every released unit at once, stopping as soon as they meet or one side is
+//! exhausted, so a move that would split off a small piece costs the size of that piece.
+
+use super::types::TYPE_OF_MASK;
+
+/// Empty cells around the space: units stay this far from the edge of the cell buffer, so
+/// neighbour arithmetic two cells out never leaves it.
+pub const PAD: u32 = 2;
+
+/// Unit vectors of the six directions.
+pub const DIRS: [[i32; 3]; 6] = [
+    [1, 0, 0],
+    [-1, 0, 0],
+    [0, 1, 0],
+    [0, -1, 0],
+    [0, 0, 1],
+    [0, 0, -1],
+];
+
+/// Radius (in cells, per axis) of the local connectivity search around the carrier.
+const LOCAL_RADIUS: i32 = 2;
+
+/// A reachable position: the destination cell, the carrier and the axis it turns about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Move {
+    pub dest: u32,
+    pub carrier: u32,
+    pub axis: u8,
+}
+
+/// Reusable buffers for the connectivity searches, and counters of how they went.
+#[derive(Default)]
+pub struct Scratch {
+    seen: Vec<u32>,
+    gen: u32,
+    label: Vec<u8>,
+    stack: Vec<(u32, [i32; 3])>,
+    queues: Vec<Vec<u32>>,
+    heads: Vec<usize>,
+    parent: Vec<u8>,
+    terminals: Vec<u32>,
+    pub moves: Vec<Move>,
+    /// Connectivity checks made.
+    pub checks: u64,
+    /// Checks the local search could not settle.
+    pub searches: u64,
+    /// Cells visited by those searches.
+    pub search_cells: u64,
+}
+
+impl Scratch {
+    fn next_gen(&mut self, len: usize) -> u32 {
+        if self.seen.len() != len {
+            self.seen = vec![0; len];
+            self.label = vec![0; len];
+            self.gen = 0;
+        }
+        if self.gen == u32::MAX {
+            self.seen.iter_mut().for_each(|s| *s = 0);
+            self.gen = 0;
+        }
+        self.gen += 1;
+        self.gen
+    }
+}
+
+/// Units on a padded cubic lattice. A cell holds a unit exactly when its type code is not 0 (in a
+/// connected structure of two or more units every unit has a neighbour, so a type).
+#[derive(Clone, Debug)]
+pub struct Structure {
+    pub dims: [u32; 3],
+    pub stride: [isize; 6],
+    /// Connection type code per cell, 0 where there is no unit.
+    pub types: Vec<u8>,
+    /// Cells no unit may occupy: the padding, and what lies below a ground plane.
+    pub wall: Vec<bool>,
+    /// A ground plane that holds the units touching it, under the layer z = this: it is a
+    /// support on the vertical axis of every unit in that layer.
+    pub plane: Option<i32>,
+}
+
+impl Structure {
+    /// An empty structure; cells outside `lo..hi` (per axis) are walls.
+    pub fn new(dims: [u32; 3], lo: [u32; 3], hi: [u32; 3]) -> Structure {
+        let [w, h, d] = dims;
+        let (wi, hi_) = (w as isize, h as isize);
+        let len = (w * h * d) as usize;
+        let mut wall = vec![true; len];
+        for z in lo[2]..hi[2] {
+            for y in lo[1]..hi[1] {
+                for x in lo[0]..hi[0] {
+                    wall[((z * h + y) * w + x) as usize] = false;
+                }
+            }
+        }
+        Structure {
+            dims,
+            stride: [1, -1, wi, -wi, wi * hi_, -wi * hi_],
+            types: vec![0; len],
+            wall,
+            plane: None,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.types.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.types.is_empty()
+    }
+
+    pub fn coord(&self, i: usize) -> [i32; 3] {
+        let [w, h, _] = self.dims;
+        let (w, h) = (w as usize, h as usize);
+        [(i % w) as i32, ((i / w) % h) as i32, (i / (w * h)) as i32]
+    }
+
+    pub fn index(&self, c: [i32; 3]) -> Option<usize> {
+        let [w, h, d] = self.dims;
+        if c.iter().any(|&v| v < 0) || c[0] >= w as i32 || c[1] >= h as i32 || c[2] >= d as i32 {
+            return None;
+        }
+        Some(((c[2] as u32 * h + c[1] as u32) * w + c[0] as u32) as usize)
+    }
+
+    /// The cell next to `i` in direction `dir`. Only for cells at least one cell from the edge.
+    #[inline]
+    pub fn nb(&self, i: usize, dir: usize) -> usize {
+        (i as isize + self.stride[dir]) as usize
+    }
+
+    #[inline]
+    pub fn occupied(&self, i: usize) -> bool {
+        self.types[i] != 0
+    }
+
+    /// The occupied faces of the cell `i`.
+    pub fn mask(&self, i: usize) -> u8 {
+        let mut m = 0;
+        for d in 0..6 {
+            if self.occupied(self.nb(i, d)) {
+                m |= 1 << d;
+            }
+        }
+        m
+    }
+
+    /// Places units (cells not yet typed) and types everything. For construction only.
+    pub fn place(&mut self, cells: &[usize]) {
+        for &c in cells {
+            self.types[c] = u8::MAX;
+        }
+        for &c in cells {
+            self.types[c] = TYPE_OF_MASK[self.mask(c) as usize];
+        }
+    }
+
+    /// Types of the unit at `i` and of its neighbours, sorted by decreasing code, padded with 0.
+    pub fn profile(&self, i: usize) -> [u8; 7] {
+        let mut out = [0u8; 7];
+        out[0] = self.types[i];
+        let mut n = 1;
+        for d in 0..6 {
+            let j = self.nb(i, d);
+            if self.occupied(j) {
+                out[n] = self.types[j];
+                n += 1;
+            }
+        }
+        sort_desc(&mut out[1..]);
+        out
+    }
+
+    /// [`Structure::profile`] of the unit as it would be after moving from `from` to `to`.
+    pub fn profile_after(&self, from: usize, to: usize) -> [u8; 7] {
+        let occ = |x: usize| x == to || (x != from && self.types[x] != 0);
+        let mask = |x: usize| {
+            let mut m = 0u8;
+            for d in 0..6 {
+                if occ(self.nb(x, d)) {
+                    m |= 1 << d;
+                }
+            }
+            m
+        };
+        let mut out = [0u8; 7];
+        out[0] = TYPE_OF_MASK[mask(to) as usize];
+        let mut n = 1;
+        for d in 0..6 {
+            let j = self.nb(to, d);
+            if occ(j) {
+                out[n] = TYPE_OF_MASK[mask(j) as usize];
+                n += 1;
+            }
+        }
+        sort_desc(&mut out[1..]);
+        out
+    }
+
+    /// Moves the unit at `from` to the empty cell `to` (which must touch another unit) and
+    /// retypes the cells around both.
+    pub fn relocate(&mut self, from: usize, to: usize) {
+        self.types[from] = 0;
+        self.types[to] = u8::MAX;
+        self.retype_around(to);
+        self.retype_around(from);
+    }
+
+    /// Adds a unit at the empty cell `at`.
+    pub fn add(&mut self, at: usize) {
+        self.types[at] = u8::MAX;
+        self.retype_around(at);
+    }
+
+    /// Removes the unit at `at`.
+    pub fn remove(&mut self, at: usize) {
+        self.types[at] = 0;
+        self.retype_around(at);
+    }
+
+    fn retype_around(&mut self, c: usize) {
+        if self.occupied(c) {
+            self.types[c] = TYPE_OF_MASK[self.mask(c) as usize];
+        }
+        for d in 0..6 {
+            let j = self.nb(c, d);
+            if self.occupied(j) {
+                self.types[j] = TYPE_OF_MASK[self.mask(j) as usize];
+            }
+        }
+    }
+
+    /// The reachable positions of the unit at `p` (rules 1 to 4 of the module documentation), in
+    /// a fixed order: carriers by direction from p, then axes, then senses. Left in `s.moves`.
+    pub fn reachable(&self, p: usize, s: &mut Scratch) {
+        s.moves.clear();
+        let mut pending = [0u32; 2];
+        for k in 0..6 {
+            let q = self.nb(p, k);
+            if !self.occupied(q) {
+                continue;
+            }
+            let bond_axis = k / 2;
+            for a in 0..3 {
+                if a == bond_axis {
+                    continue;
+                }
+                if !self.supported(q, a) {
+                    continue;
+                }
+                let b = 3 - bond_axis - a;
+                let mut n = 0;
+                for f in [2 * b, 2 * b + 1] {
+                    let dest = self.nb(q, f);
+                    if self.wall[dest] || self.occupied(dest) || self.occupied(self.nb(p, f)) {
+                        continue;
+                    }
+                    pending[n] = dest as u32;
+                    n += 1;
+                }
+                if n > 0 && self.stays_connected(p, Some((q, a)), s) {
+                    for &dest in &pending[..n] {
+                        s.moves.push(Move {
+                            dest,
+                            carrier: q as u32,
+                            axis: a as u8,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    /// Has the unit at `q` a support on the axis `a`: a unit, or a holding ground plane?
+    pub fn supported(&self, q: usize, a: usize) -> bool {
+        self.occupied(self.nb(q, 2 * a))
+            || self.occupied(self.nb(q, 2 * a + 1))
+            || (a == 2 && self.plane == Some(self.coord(q)[2]))
+    }
+
+    /// Is the edge from `x` in direction `dir` usable once `p` is lifted and, with a carrier
+    /// `(q, a)`, q has let go of every bond off the axis `a`?
+    #[inline]
+    fn usable(
+        &self,
+        x: usize,
+        dir: usize,
+        p: usize,
+        carrier: Option<(usize, usize)>,
+    ) -> Option<usize> {
+        let y = self.nb(x, dir);
+        if y == p || !self.occupied(y) {
+            return None;
+        }
+        if let Some((q, a)) = carrier {
+            if (x == q || y == q) && dir / 2 != a {
+                return None;
+            }
+        }
+        Some(y)
+    }
+
+    /// Does the structure stay connected when the unit at `p` is lifted out and, if a carrier
+    /// `(q, a)` is given, q lets go of its bonds off the axis `a`? Exact.
+    ///
+    /// Every piece the cut could leave holds a neighbour of p or a unit q let go of (or q itself),
+    /// so the structure stays connected exactly when those "terminals" stay joined.
+    pub fn stays_connected(
+        &self,
+        p: usize,
+        carrier: Option<(usize, usize)>,
+        s: &mut Scratch,
+    ) -> bool {
+        s.checks += 1;
+        s.terminals.clear();
+        for d in 0..6 {
+            let j = self.nb(p, d);
+            if self.occupied(j) {
+                s.terminals.push(j as u32);
+            }
+        }
+        if let Some((q, a)) = carrier {
+            for d in 0..6 {
+                let j = self.nb(q, d);
+                if d / 2 != a && j != p && self.occupied(j) {
+                    s.terminals.push(j as u32);
+                }
+            }
+        }
+        if s.terminals.len() <= 1 {
+            return true;
+        }
+        if self.local_join(p, carrier, s) {
+            return true;
+        }
+        s.searches += 1;
+        self.global_join(p, carrier, s)
+    }
+
+    /// Tries to join the terminals without leaving the cells within `LOCAL_RADIUS` (per axis)
+    /// of the carrier (of p when there is none). Success proves the answer is yes.
+    fn local_join(&self, p: usize, carrier: Option<(usize, usize)>, s: &mut Scratch) -> bool {
+        let centre = match carrier {
+            Some((q, _)) => q,
+            None => p,
+        };
+        let c0 = self.coord(centre);
+        let gen = s.next_gen(self.len());
+        let start = s.terminals[0] as usize;
+        s.stack.clear();
+        s.stack.push((start as u32, self.coord(start)));
+        s.seen[start] = gen;
+        let mut found = 0;
+        while let Some((x, cx)) = s.stack.pop() {
+            let x = x as usize;
+            if s.terminals.contains(&(x as u32)) {
+                found += 1;
+                if found == s.terminals.len() {
+                    return true;
+                }
+            }
+            for (d, v) in DIRS.iter().enumerate() {
+                let Some(y) = self.usable(x, d, p, carrier) else {
+                    continue;
+                };
+                if s.seen[y] == gen {
+                    continue;
+                }
+                let cy = [cx[0] + v[0], cx[1] + v[1], cx[2] + v[2]];
+                if (0..3).any(|k| (cy[k] - c0[k]).abs() > LOCAL_RADIUS) {
+                    continue;
+                }
+                s.seen[y] = gen;
+                s.stack.push((y as u32, cy));
+            }
+        }
+        false
+    }
+
+    /// Breadth-first searches from every terminal at once, one cell each in turn. Two searches
+    /// that touch are joined; the answer is yes when one group remains, no when a group runs out
+    /// of cells first (it has explored a whole piece without meeting the others).
+    fn global_join(&self, p: usize, carrier: Option<(usize, usize)>, s: &mut Scratch) -> bool {
+        let k = s.terminals.len();
+        let gen = s.next_gen(self.len());
+        while s.queues.len() < k {
+            s.queues.push(Vec::new());
+        }
+        s.heads.clear();
+        s.heads.resize(k, 0);
+        s.parent.clear();
+        s.parent.extend(0..k as u8);
+        for t in 0..k {
+            let c = s.terminals[t] as usize;
+            s.queues[t].clear();
+            s.queues[t].push(c as u32);
+            s.seen[c] = gen;
+            s.label[c] = t as u8;
+        }
+        fn find(parent: &mut [u8], mut i: u8) -> u8 {
+            while parent[i as usize] != i {
+                let up = parent[parent[i as usize] as usize];
+                parent[i as usize] = up;
+                i = up;
+            }
+            i
+        }
+        let mut groups = k;
+        loop {
+            for t in 0..k {
+                let Some(&x) = s.queues[t].get(s.heads[t]) else {
+                    continue;
+                };
+                s.heads[t] += 1;
+                s.search_cells += 1;
+                let x = x as usize;
+                for d in 0..6 {
+                    let Some(y) = self.usable(x, d, p, carrier) else {
+                        continue;
+                    };
+                    if s.seen[y] != gen {
+                        s.seen[y] = gen;
+                        s.label[y] = t as u8;
+                        s.queues[t].push(y as u32);
+                    } else {
+                        let (r1, r2) = (
+                            find(&mut s.parent, t as u8),
+                            find(&mut s.parent, s.label[y]),
+                        );
+                        if r1 != r2 {
+                            s.parent[r1 as usize] = r2;
+                            groups -= 1;
+                            if groups == 1 {
+                                return true;
+                            }
+                        }
+                    }
+                }
+            }
+            // A group whose searches have all run dry has found a whole piece on its own.
+            let mut alive = [false; 16];
+            for t in 0..k {
+                if s.heads[t] < s.queues[t].len() {
+                    alive[find(&mut s.parent, t as u8) as usize] = true;
+                }
+            }
+            for t in 0..k {
+                let r = find(&mut s.parent, t as u8);
+                if !alive[r as usize] {
+                    return false;
+                }
+            }
+        }
+    }
+
+    /// Every unit, in cell order.
+    pub fn units(&self) -> Vec<usize> {
+        (0..self.len()).filter(|&i| self.occupied(i)).collect()
+    }
+
+    /// Whether all units form one piece (a full search; for construction and tests).
+    pub fn connected(&self) -> bool {
+        let units = self.units();
+        let Some(&first) = units.first() else {
+            return true;
+        };
+        let mut seen = vec![false; self.len()];
+        seen[first] = true;
+        let mut stack = vec![first];
+        let mut n = 1;
+        while let Some(x) = stack.pop() {
+            for d in 0..6 {
+                let y = self.nb(x, d);
+                if self.occupied(y) && !seen[y] {
+                    seen[y] = true;
+                    n += 1;
+                    stack.push(y);
+                }
+            }
+        }
+        n == units.len()
+    }
+}
+
+/// Sorts a few codes in decreasing order (insertion sort; at most six).
+fn sort_desc(v: &mut [u8]) {
+    for i in 1..v.len() {
+        let mut j = i;
+        while j > 0 && v[j - 1] < v[j] {
+            v.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+}
