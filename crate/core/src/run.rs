@@ -83,13 +83,15 @@ impl Run {
             if d.at > now {
                 break;
             }
-            // Scheduled actions were checked when the scenario was read.
+            // The form was checked when the scenario was read; an action that does not fit the
+            // state at its step changes nothing, the same way in every replay.
             let _ = self.model.apply(&d.action);
             self.next += 1;
         }
     }
 
-    /// Applies an action now and records it in the scenario, so the share link replays it.
+    /// Applies an action now and records it in the scenario, so the share link replays it. An
+    /// action that fails is not recorded.
     pub fn apply_now(&mut self, action: Action) -> Result<()> {
         self.model.check_action(&action)?;
         self.apply_due();

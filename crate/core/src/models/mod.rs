@@ -127,9 +127,13 @@ pub trait Model {
     fn agents(&self) -> Vec<Agent>;
     /// Events of the last step.
     fn events(&self) -> Vec<Event>;
-    /// Checks an action without applying it.
+    /// Checks the form of an action (its kind and fields), whatever the state: a scenario is
+    /// checked before its first step, and a disturbance recorded at step 360 must still read as
+    /// valid then.
     fn check_action(&self, action: &Action) -> Result<()>;
-    /// Applies an action now (a scheduled disturbance or a click).
+    /// Applies an action now (a scheduled disturbance or a click). An action that does not fit
+    /// the present state (a cell with nothing to remove) is an error and changes nothing; a
+    /// scheduled one is then skipped, identically in every replay.
     fn apply(&mut self, action: &Action) -> Result<()>;
     /// A few facts about one cell, for the page's inspector.
     fn inspect(&self, _cell: usize) -> Map<String, Value> {
