@@ -16,6 +16,7 @@ use crate::lattice::LatticeKind;
 use crate::scenario::Scenario;
 
 pub mod amas;
+pub mod fracta;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
@@ -115,6 +116,12 @@ pub trait Model {
     fn inspect(&self, _cell: usize) -> Map<String, Value> {
         Map::new()
     }
+    /// Bonds between units, for models whose units hold on to each other: one bit mask per
+    /// lattice cell, bit `d` set when the cell's unit is bonded to the unit in direction `d`
+    /// (the lattice's direction numbering). Empty when the model has no bonds to draw.
+    fn bonds(&self) -> Cow<'_, [u8]> {
+        Cow::Borrowed(&[])
+    }
 }
 
 /// A registered model.
@@ -127,7 +134,65 @@ pub struct ModelEntry {
 }
 
 /// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY];
+pub const MODELS: &[ModelEntry] = &[amas::ENTRY, fracta::ENTRY];
+
+/// A text-to-text function a model offers the page and the CLI beside its runs, such as deriving
+/// a goal from a shape for an editor. Errors name the problem like scenario errors do.
+pub struct Helper {
+    pub model: &'static str,
+    pub name: &'static str,
+    pub description: &'static str,
+    pub run: fn(&str) -> Result<String>,
+}
+
+/// Every helper, by model.
+pub const HELPERS: &[Helper] = &[
+    Helper {
+        model: "fracta",
+        name: "derive-goal",
+        description:
+            "Goal statements of a hex shape; shapes separated by '---' give priorities 1, 2, ...",
+        run: fracta::helpers::derive_goal,
+    },
+    Helper {
+        model: "fracta",
+        name: "check-goal",
+        description: "Checks goal statements and returns them in normal form",
+        run: fracta::helpers::check_goal,
+    },
+    Helper {
+        model: "fracta",
+        name: "connection-types",
+        description: "The connection types as JSON: name, ASCII spelling, bonds, movable, colour",
+        run: fracta::helpers::connection_types,
+    },
+];
+
+/// Runs a model's helper on `input`.
+pub fn helper(model: &str, name: &str, input: &str) -> Result<String> {
+    let h = HELPERS
+        .iter()
+        .find(|h| h.model == model && h.name == name)
+        .ok_or_else(|| {
+            let known: Vec<&str> = HELPERS
+                .iter()
+                .filter(|h| h.model == model)
+                .map(|h| h.name)
+                .collect();
+            Error::field(
+                "helper",
+                format!(
+                    "model '{model}' has no helper '{name}'; known: {}",
+                    if known.is_empty() {
+                        "none".to_string()
+                    } else {
+                        known.join(", ")
+                    }
+                ),
+            )
+        })?;
+    (h.run)(input)
+}
 
 pub fn entry(name: &str) -> Result<&'static ModelEntry> {
     MODELS.iter().find(|m| m.name == name).ok_or_else(|| {
