@@ -1,7 +1,7 @@
 //! The exported handle as JavaScript sees it, run in headless Node.
 #![cfg(target_arch = "wasm32")]
 
-use kumiki_wasm::{decode_link, encode_link, preset_json, ExperimentRunner, Sim};
+use kumiki_wasm::{decode_link, encode_link, preset_json, run_helper, ExperimentRunner, Sim};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test]
@@ -51,4 +51,23 @@ fn experiment_jobs_run_in_wasm() {
     let runner = ExperimentRunner::new("amas-robots").unwrap();
     assert!(runner.job_count() > 0);
     assert!(runner.run(0).is_ok());
+}
+
+#[wasm_bindgen_test]
+fn bonds_and_model_helpers() {
+    let mut sim = Sim::new(&preset_json("fracta-triangle10").unwrap()).unwrap();
+    sim.advance(5);
+    assert_eq!(sim.bonds().length(), sim.cells().length());
+    assert!(sim.field("difference").is_some());
+    let amas = Sim::new(&preset_json("amas-L").unwrap()).unwrap();
+    assert_eq!(amas.bonds().length(), 0);
+    let goal = run_helper(
+        "fracta",
+        "derive-goal",
+        ". . # .\n . # # .\n. # # #\n # # # #\n",
+    )
+    .unwrap();
+    assert_eq!(goal, "o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n");
+    assert!(run_helper("fracta", "check-goal", "o{K, K}\nK{o}").is_err());
+    assert!(run_helper("fracta", "no-such-helper", "").is_err());
 }

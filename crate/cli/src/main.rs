@@ -26,6 +26,9 @@ USAGE
   kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
   kumiki bench WORKLOAD.json... [--jobs J]
                                        time workloads (see tests/bench); one JSON line each
+  kumiki helpers                       the models' helpers: MODEL NAME and what each does
+  kumiki helper MODEL NAME [FILE|-]    run a model's helper on a file's text (or stdin),
+                                       e.g. 'kumiki helper fracta derive-goal shape.txt'
   kumiki help | --version
 
 SCENARIO is a JSON file, a share link (or its #k1... part), or a preset name.
@@ -110,6 +113,15 @@ fn dispatch(args: &[String]) -> Result<(), Failure> {
         "run" => run(rest),
         "sweep" => sweep(rest),
         "bench" => bench(rest),
+        "helpers" => {
+            no_more(rest)?;
+            let mut out = std::io::stdout().lock();
+            for h in kumiki_core::models::HELPERS {
+                writeln!(out, "{} {}\t{}", h.model, h.name, h.description)?;
+            }
+            Ok(())
+        }
+        "helper" => helper(rest),
         other => Err(Failure::Usage(format!("unknown command '{other}'"))),
     }
 }
@@ -366,10 +378,35 @@ fn sweep(rest: &[String]) -> Result<(), Failure> {
     Ok(())
 }
 
+fn helper(rest: &[String]) -> Result<(), Failure> {
+    let (positional, _) = parse_options(rest, &[])?;
+    let (model, name, file) = match positional.as_slice() {
+        [m, n] => (m, n, None),
+        [m, n, f] => (m, n, Some(f)),
+        _ => return Err(Failure::Usage("helper needs MODEL NAME [FILE|-]".into())),
+    };
+    let input = match file.map(String::as_str) {
+        None | Some("-") => {
+            let mut text = String::new();
+            std::io::Read::read_to_string(&mut std::io::stdin(), &mut text)?;
+            text
+        }
+        Some(path) => std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?,
+    };
+    let out = kumiki_core::models::helper(model, name, &input)?;
+    print!("{out}");
+    if !out.ends_with('\n') {
+        println!();
+    }
+    Ok(())
+}
+
 fn bench(rest: &[String]) -> Result<(), Failure> {
     let (files, opts) = parse_options(rest, &["--jobs"])?;
     if files.is_empty() {
-        return Err(Failure::Usage("bench needs workload files (tests/bench/*.json)".into()));
+        return Err(Failure::Usage(
+            "bench needs workload files (tests/bench/*.json)".into(),
+        ));
     }
     let workloads = files
         .iter()

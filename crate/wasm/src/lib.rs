@@ -215,6 +215,12 @@ impl Sim {
         self.run.apply_now(action).map_err(js_err)
     }
 
+    /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);
+    /// empty for models without bonds. See `kumiki_core::models::Model::bonds`.
+    pub fn bonds(&self) -> Uint8Array {
+        Uint8Array::from(self.run.model().bonds().as_ref())
+    }
+
     pub fn inspect(&self, cell: u32) -> Result<JsValue, JsError> {
         to_js(&self.run.model().inspect(cell as usize))
     }
@@ -293,6 +299,34 @@ pub fn experiments() -> Result<JsValue, JsError> {
         })
         .collect();
     to_js(&infos)
+}
+
+#[derive(Serialize)]
+struct HelperInfo {
+    model: &'static str,
+    name: &'static str,
+    description: &'static str,
+}
+
+/// The models' text helpers (such as deriving goal statements from a shape): model, name,
+/// description.
+#[wasm_bindgen]
+pub fn helpers() -> Result<JsValue, JsError> {
+    let list: Vec<HelperInfo> = models::HELPERS
+        .iter()
+        .map(|h| HelperInfo {
+            model: h.model,
+            name: h.name,
+            description: h.description,
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// Runs a model's helper on `input`; the error names the problem (and the line, for goals).
+#[wasm_bindgen]
+pub fn run_helper(model: &str, name: &str, input: &str) -> Result<String, JsError> {
+    models::helper(model, name, input).map_err(js_err)
 }
 
 /// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
