@@ -68,3 +68,25 @@ fn cubes_scene_and_queries_in_wasm() {
     assert!(out.contains("C31[C31, C31, C31]"));
     assert!(model_query("cubes3d", "check", r#"{"type_lists": "C31[C31"}"#).is_err());
 }
+
+#[wasm_bindgen_test]
+fn fracta_bonds_and_queries_in_wasm() {
+    let mut sim = Sim::new(&preset_json("fracta-triangle10").unwrap()).unwrap();
+    sim.advance(5);
+    assert_eq!(sim.bonds().length(), sim.cells().length());
+    assert!(sim.field("difference").is_some());
+    let amas = Sim::new(&preset_json("amas-L").unwrap()).unwrap();
+    assert_eq!(amas.bonds().length(), 0);
+    let goal = model_query(
+        "fracta",
+        "derive",
+        r###"{"shape": ". . # .\n . # # .\n. # # #\n # # # #\n"}"###,
+    )
+    .unwrap();
+    assert_eq!(
+        goal,
+        r#"{"goal":"o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n"}"#
+    );
+    assert!(model_query("fracta", "check", r#"{"goal": "o{K, K}\nK{o}"}"#).is_err());
+    assert!(model_query("fracta", "no-such-query", "{}").is_err());
+}

@@ -1,5 +1,5 @@
 //! `kumiki bench`: times the real core on the workloads in `tests/bench/*.json`. The Node script
-//! `scripts/bench.mjs` times the same workloads through the wasm build, so the two can be
+//! `scripts/bench-wasm.mjs` times the same workloads through the wasm build, so the two can be
 //! compared in one run.
 //!
 //! A workload file:

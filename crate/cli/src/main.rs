@@ -26,6 +26,7 @@ USAGE
   kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
   kumiki bench WORKLOAD.json... [--jobs J]
                                        time workloads (see tests/bench); one JSON line each
+  kumiki queries                       the models' helper calls: MODEL NAME and what each does
   kumiki query MODEL NAME [ARGS]       a model's helper call; ARGS is JSON text or a JSON file,
                                        e.g. kumiki query cubes3d derive '{\"shape\": \"##\\n##\\n\"}'
   kumiki help | --version
@@ -112,6 +113,14 @@ fn dispatch(args: &[String]) -> Result<(), Failure> {
         "run" => run(rest),
         "sweep" => sweep(rest),
         "bench" => bench(rest),
+        "queries" => {
+            no_more(rest)?;
+            let mut out = std::io::stdout().lock();
+            for q in kumiki_core::models::QUERIES {
+                writeln!(out, "{} {}\t{}", q.model, q.name, q.description)?;
+            }
+            Ok(())
+        }
         "query" => query(rest),
         other => Err(Failure::Usage(format!("unknown command '{other}'"))),
     }

@@ -294,6 +294,12 @@ impl Sim {
         self.run.apply_now(action).map_err(js_err)
     }
 
+    /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);
+    /// empty for models without bonds. See `kumiki_core::models::Model::bonds`.
+    pub fn bonds(&self) -> Uint8Array {
+        Uint8Array::from(self.run.model().bonds().as_ref())
+    }
+
     pub fn inspect(&self, cell: u32) -> Result<JsValue, JsError> {
         to_js(&self.run.model().inspect(cell as usize))
     }

@@ -17,6 +17,7 @@ use crate::scenario::Scenario;
 
 pub mod amas;
 pub mod cubes3d;
+pub mod fracta;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
@@ -143,6 +144,12 @@ pub trait Model {
     fn scene(&self) -> Scene {
         Scene::default()
     }
+    /// Bonds between units, for models whose units hold on to each other: one bit mask per
+    /// lattice cell, bit `d` set when the cell's unit is bonded to the unit in direction `d`
+    /// (the lattice's direction numbering). Empty when the model has no bonds to draw.
+    fn bonds(&self) -> Cow<'_, [u8]> {
+        Cow::Borrowed(&[])
+    }
 }
 
 /// A registered model.
@@ -155,25 +162,76 @@ pub struct ModelEntry {
 }
 
 /// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY, cubes3d::ENTRY];
+pub const MODELS: &[ModelEntry] = &[amas::ENTRY, cubes3d::ENTRY, fracta::ENTRY];
 
-/// A model's helper call that needs no run: a query name and JSON arguments give a JSON answer.
-pub type QueryFn = fn(&str, &Value) -> Result<Value>;
+/// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
+/// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
+/// argument and the problem like scenario errors do.
+pub struct Query {
+    pub model: &'static str,
+    pub name: &'static str,
+    pub description: &'static str,
+    pub run: fn(&Value) -> Result<Value>,
+}
 
-/// The models that answer helper calls (for instance deriving a target description from a
-/// shape the page's editor built), by model name.
-pub const QUERIES: &[(&str, QueryFn)] = &[("cubes3d", cubes3d::query)];
+/// Every helper call, by model.
+pub const QUERIES: &[Query] = &[
+    Query {
+        model: "cubes3d",
+        name: "derive",
+        description: "The type-lists of a shape: {\"shape\": cubic layers} or {\"units\": [[x, y, z], ...]}",
+        run: cubes3d::query_derive,
+    },
+    Query {
+        model: "cubes3d",
+        name: "check",
+        description: "Checks type-lists ({\"type_lists\": text}) and returns them in normal form",
+        run: cubes3d::query_check,
+    },
+    Query {
+        model: "fracta",
+        name: "derive",
+        description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
+        run: fracta::queries::derive,
+    },
+    Query {
+        model: "fracta",
+        name: "check",
+        description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
+        run: fracta::queries::check,
+    },
+    Query {
+        model: "fracta",
+        name: "types",
+        description: "The connection types: name, ASCII spelling, bonds, movable, colour",
+        run: fracta::queries::types,
+    },
+];
 
 /// Runs a model's helper call, see [`QUERIES`].
 pub fn query(model: &str, name: &str, args: &Value) -> Result<Value> {
     entry(model)?;
-    match QUERIES.iter().find(|(m, _)| *m == model) {
-        Some((_, f)) => f(name, args),
-        None => Err(Error::field(
-            "model",
-            format!("model '{model}' answers no queries"),
-        )),
-    }
+    let q = QUERIES
+        .iter()
+        .find(|q| q.model == model && q.name == name)
+        .ok_or_else(|| {
+            let known: Vec<&str> = QUERIES
+                .iter()
+                .filter(|q| q.model == model)
+                .map(|q| q.name)
+                .collect();
+            Error::field(
+                "query",
+                match known.is_empty() {
+                    true => format!("model '{model}' answers no queries"),
+                    false => format!(
+                        "model '{model}' has no query '{name}'; known: {}",
+                        known.join(", ")
+                    ),
+                },
+            )
+        })?;
+    (q.run)(args)
 }
 
 pub fn entry(name: &str) -> Result<&'static ModelEntry> {

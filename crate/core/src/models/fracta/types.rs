@@ -1,0 +1,501 @@
+//! Connection types (section 3.1): the bond patterns of a hexagonal unit, their classes under
+//! rotation and reflection, which of them can move, and the distances between them.
+//!
+//! Everything here is computed from the geometry of the hexagonal lattice:
+//! - a bond pattern is a 6-bit mask, bit `d` set when the neighbour in direction `d` is present
+//!   (directions as in [`crate::lattice::Hex`]: counter-clockwise, so `(d + 1) % 6` turns 60°);
+//! - the classes are the orbits of the 64 masks under the 12 symmetries of the hexagon; the
+//!   empty mask is its own class, called `none` (a missing neighbour), the other 63 masks fall
+//!   into the 12 connection types of the paper;
+//! - a unit moves by rolling 60° about a neighbour ([`roll_ok`]); the types whose units can roll
+//!   are the movable ones;
+//! - two types are linked when one motion of a neighbouring unit turns a unit of one type into
+//!   the other ([`derive_links`]), and their distance is the length of the shortest chain of
+//!   links.
+//!
+//! Only the names are written by hand, attached to each class through its canonical (smallest)
+//! mask; the test suite checks that the names cover exactly the computed classes.
+
+use std::collections::BTreeSet;
+use std::sync::OnceLock;
+
+/// Number of connection classes including `none`.
+pub const CLASSES: usize = 13;
+/// The class of the empty pattern: no unit there.
+pub const NONE: u8 = 0;
+
+/// A rolling direction, as seen from the pivot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Turn {
+    /// Counter-clockwise about the pivot: from the pivot in slot `p`, the target is slot `p - 1`.
+    Ccw,
+    /// Clockwise about the pivot: the target is slot `p + 1`.
+    Cw,
+}
+
+impl Turn {
+    pub const BOTH: [Turn; 2] = [Turn::Ccw, Turn::Cw];
+
+    /// The slot `k` steps from `pivot` in this turn's direction of travel.
+    fn slot(self, pivot: usize, k: usize) -> usize {
+        match self {
+            Turn::Ccw => (pivot + 6 - k) % 6,
+            Turn::Cw => (pivot + k) % 6,
+        }
+    }
+}
+
+/// The slot a unit lands in when it rolls about its neighbour in slot `pivot`.
+pub fn target_slot(pivot: usize, turn: Turn) -> usize {
+    turn.slot(pivot, 1)
+}
+
+/// The neighbour slots a rolling unit sweeps, target first. Rolling about the vertex it shares
+/// with the pivot and the target cell, a hexagon passes over the target, the cell beside both
+/// the target and its start, the cell opposite the pivot, and one cell further out
+/// ([`far_steps`]); the test suite checks this against the polygons.
+pub fn swept_slots(pivot: usize, turn: Turn) -> [usize; 3] {
+    [
+        turn.slot(pivot, 1),
+        turn.slot(pivot, 2),
+        turn.slot(pivot, 3),
+    ]
+}
+
+/// The one swept cell that is not a neighbour of the rolling unit: the cell beyond the target
+/// and the second swept slot, reached from the unit's cell by these two steps. It does not
+/// belong to the unit's connection type, so it does not decide movability; the model checks it
+/// as the collision avoidance of the paper's low-level control (section 4).
+pub fn far_steps(pivot: usize, turn: Turn) -> [usize; 2] {
+    [turn.slot(pivot, 1), turn.slot(pivot, 2)]
+}
+
+/// Pattern `mask` turned by `k` steps of 60° counter-clockwise.
+pub fn rotate(mask: u8, k: usize) -> u8 {
+    let (m, k) = (u32::from(mask & 63), k % 6);
+    (((m << k) | (m >> (6 - k))) & 63) as u8
+}
+
+/// Pattern `mask` mirrored in the east-west axis: direction `d` becomes `(6 - d) % 6`.
+pub fn reflect(mask: u8) -> u8 {
+    (0..6)
+        .filter(|d| mask & (1 << d) != 0)
+        .fold(0, |m, d| m | 1 << ((6 - d) % 6))
+}
+
+/// The 12 images of a pattern under the symmetries of the hexagon.
+pub fn images(mask: u8) -> [u8; 12] {
+    let mut out = [0; 12];
+    let r = reflect(mask);
+    for k in 0..6 {
+        out[k] = rotate(mask, k);
+        out[6 + k] = rotate(r, k);
+    }
+    out
+}
+
+/// The smallest image of a pattern: one representative per class.
+pub fn canonical(mask: u8) -> u8 {
+    images(mask).into_iter().min().unwrap_or(mask)
+}
+
+/// Number of separate arcs of consecutive bonds around the hexagon (0 for no bonds).
+pub fn arcs(mask: u8) -> u32 {
+    if mask & 63 == 63 {
+        return 1;
+    }
+    (0..6)
+        .filter(|&d| mask & (1 << d) != 0 && mask & (1 << ((d + 5) % 6)) == 0)
+        .count() as u32
+}
+
+/// Whether a unit with neighbours `mask` may roll about its neighbour in slot `pivot`.
+///
+/// Section 3.1: a movable unit rotates without carrying other units and keeps the whole system
+/// connected. The unit keeps its bond to the pivot and lets every other bond go; the cells it
+/// sweeps ([`swept_slots`]) must be empty; and its neighbours must stay connected once it has
+/// left, which they do without looking further when its bonds form one arc (each neighbour then
+/// touches the next). Cells further away are not looked at: the paper decides movability from
+/// the connection type alone.
+pub fn roll_ok(mask: u8, pivot: usize, turn: Turn) -> bool {
+    mask & (1 << pivot) != 0
+        && swept_slots(pivot, turn)
+            .iter()
+            .all(|&s| mask & (1 << s) == 0)
+        && arcs(mask) == 1
+}
+
+/// Whether some roll is possible for a unit with neighbours `mask`.
+pub fn can_roll(mask: u8) -> bool {
+    (0..6).any(|p| Turn::BOTH.iter().any(|&t| roll_ok(mask, p, t)))
+}
+
+/// Names of the classes, attached through their canonical masks. `paper` marks the letters the
+/// paper's text fixes; the others are ours, chosen like the paper's after the shape the bonds
+/// draw from the centre of the hexagon.
+struct Naming {
+    canonical: u8,
+    name: &'static str,
+    ascii: &'static str,
+    aliases: &'static [&'static str],
+    paper: bool,
+    color: &'static str,
+    description: &'static str,
+}
+
+const NAMING: [Naming; CLASSES] = [
+    Naming {
+        canonical: 0,
+        name: "none",
+        ascii: "none",
+        aliases: &[],
+        paper: false,
+        color: "#ffffff",
+        description: "no unit (pads a shorter neighbour list)",
+    },
+    Naming {
+        canonical: 0b000001,
+        name: "e",
+        ascii: "e",
+        aliases: &[],
+        paper: true,
+        color: "#e4572e",
+        description: "one bond: an end, unstable",
+    },
+    Naming {
+        canonical: 0b000011,
+        name: "o",
+        ascii: "o",
+        aliases: &[],
+        paper: true,
+        color: "#f29e4c",
+        description: "two bonds side by side: a corner",
+    },
+    Naming {
+        canonical: 0b000101,
+        name: "v",
+        ascii: "v",
+        aliases: &[],
+        paper: false,
+        color: "#c9a66b",
+        description: "two bonds at 120°: a bend",
+    },
+    Naming {
+        canonical: 0b001001,
+        name: "i",
+        ascii: "i",
+        aliases: &[],
+        paper: false,
+        color: "#a07c5b",
+        description: "two opposite bonds: a straight link",
+    },
+    Naming {
+        canonical: 0b000111,
+        name: "ε",
+        ascii: "eps",
+        aliases: &["epsilon"],
+        paper: true,
+        color: "#f1c453",
+        description: "three bonds side by side",
+    },
+    Naming {
+        canonical: 0b001011,
+        name: "λ",
+        ascii: "lambda",
+        aliases: &[],
+        paper: false,
+        color: "#8fbc8f",
+        description: "a straight line with one branch at 60°",
+    },
+    Naming {
+        canonical: 0b010101,
+        name: "Y",
+        ascii: "y",
+        aliases: &[],
+        paper: false,
+        color: "#5fa8a0",
+        description: "three bonds at 120°",
+    },
+    Naming {
+        canonical: 0b001111,
+        name: "K",
+        ascii: "k",
+        aliases: &[],
+        paper: true,
+        color: "#4d85c5",
+        description: "four bonds side by side: a line with two branches on one side",
+    },
+    Naming {
+        canonical: 0b010111,
+        name: "ψ",
+        ascii: "psi",
+        aliases: &[],
+        paper: false,
+        color: "#6a6fb8",
+        description: "three bonds side by side and one opposite the middle one",
+    },
+    Naming {
+        canonical: 0b011011,
+        name: "x",
+        ascii: "x",
+        aliases: &[],
+        paper: false,
+        color: "#8a5fa8",
+        description: "two crossing straight lines",
+    },
+    Naming {
+        canonical: 0b011111,
+        name: "c",
+        ascii: "c",
+        aliases: &[],
+        paper: false,
+        color: "#3b5b86",
+        description: "five bonds: open on one side",
+    },
+    Naming {
+        canonical: 0b111111,
+        name: "s",
+        ascii: "s",
+        aliases: &[],
+        paper: true,
+        color: "#27323f",
+        description: "six bonds: surrounded",
+    },
+];
+
+/// One connection class.
+#[derive(Clone, Debug)]
+pub struct TypeInfo {
+    /// The display name: the paper's letter where its text fixes one (e, o, ε, K, s).
+    pub name: &'static str,
+    /// ASCII spelling accepted in statements (`eps` for ε).
+    pub ascii: &'static str,
+    pub aliases: &'static [&'static str],
+    pub paper: bool,
+    pub color: &'static str,
+    pub description: &'static str,
+    /// The smallest mask of the class.
+    pub canonical: u8,
+    pub bonds: u8,
+    /// Every mask of the class can roll somewhere (section 3.1).
+    pub movable: bool,
+}
+
+/// The classes, the class of every mask, and the distances between classes.
+#[derive(Debug)]
+pub struct Types {
+    /// Class index of each of the 64 masks. Classes are numbered by bond count, then canonical
+    /// mask, which is also the order neighbour lists are sorted in (section 3.2.1).
+    pub class_of: [u8; 64],
+    pub info: Vec<TypeInfo>,
+    /// Links of the type graph, as (smaller, larger) class index pairs.
+    pub links: BTreeSet<(u8, u8)>,
+    pub dist: [[u8; CLASSES]; CLASSES],
+}
+
+impl Types {
+    fn compute() -> Types {
+        let mut reps: Vec<u8> = (0..64u8).map(canonical).collect();
+        reps.sort_unstable_by_key(|&m| (m.count_ones(), m));
+        reps.dedup();
+        assert_eq!(reps.len(), CLASSES, "the hexagon has 13 bond classes");
+        let mut class_of = [0u8; 64];
+        for m in 0..64u8 {
+            class_of[m as usize] = reps.iter().position(|&r| r == canonical(m)).unwrap() as u8;
+        }
+        let info = reps
+            .iter()
+            .map(|&rep| {
+                let n = NAMING
+                    .iter()
+                    .find(|n| n.canonical == rep)
+                    .expect("every class is named");
+                let members = (0..64u8).filter(|&m| canonical(m) == rep);
+                let movable = rep != 0 && members.clone().all(can_roll);
+                TypeInfo {
+                    name: n.name,
+                    ascii: n.ascii,
+                    aliases: n.aliases,
+                    paper: n.paper,
+                    color: n.color,
+                    description: n.description,
+                    canonical: rep,
+                    bonds: rep.count_ones() as u8,
+                    movable,
+                }
+            })
+            .collect();
+        let links: BTreeSet<(u8, u8)> = derive_links()
+            .into_iter()
+            .map(|(a, b)| {
+                let (a, b) = (class_of[a as usize], class_of[b as usize]);
+                (a.min(b), a.max(b))
+            })
+            .filter(|(a, b)| a != b)
+            .collect();
+        let dist = distances(&links);
+        Types {
+            class_of,
+            info,
+            links,
+            dist,
+        }
+    }
+
+    /// The class of a unit whose neighbours are `mask`.
+    #[inline]
+    pub fn of(&self, mask: u8) -> u8 {
+        self.class_of[(mask & 63) as usize]
+    }
+
+    pub fn name(&self, class: u8) -> &'static str {
+        self.info[class as usize].name
+    }
+
+    /// The class a name or alias stands for (ASCII spellings in any case).
+    pub fn parse(&self, word: &str) -> Option<u8> {
+        let lower = word.to_ascii_lowercase();
+        self.info
+            .iter()
+            .position(|t| {
+                t.name != "none"
+                    && (t.name == word
+                        || t.ascii == lower
+                        || t.aliases.iter().any(|&a| a == lower)
+                        || (t.name.is_ascii() && t.name.to_ascii_lowercase() == lower))
+            })
+            .map(|i| i as u8)
+    }
+
+    /// "e, o, v, i, ε (eps), ..." for error messages.
+    pub fn known(&self) -> String {
+        self.info
+            .iter()
+            .skip(1)
+            .map(|t| {
+                if t.ascii == t.name.to_ascii_lowercase() {
+                    t.name.to_string()
+                } else {
+                    format!("{} ({})", t.name, t.ascii)
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// The class table, computed once.
+pub fn types() -> &'static Types {
+    static TYPES: OnceLock<Types> = OnceLock::new();
+    TYPES.get_or_init(Types::compute)
+}
+
+/// Axial offsets of the six directions (same as [`crate::lattice::Hex::AXIAL`]).
+const AXIAL: [(i32, i32); 6] = crate::lattice::Hex::AXIAL;
+
+fn axial_step((q, r): (i32, i32), d: usize) -> (i32, i32) {
+    (q + AXIAL[d].0, r + AXIAL[d].1)
+}
+
+fn hex_distance((q, r): (i32, i32)) -> i32 {
+    (q.abs() + r.abs() + (q + r).abs()) / 2
+}
+
+/// Every pair (pattern before, pattern after) of a unit that stays where it is while one other
+/// unit makes one legal roll, enumerated over all 64 neighbourhoods of the unit.
+///
+/// The unit sits at the origin with neighbours `a`; the roller starts on a cell at distance 1 or
+/// 2 (no other roll can touch the unit's neighbourhood) and rolls about an occupied neighbour,
+/// by the model's own rule ([`roll_ok`] and a free [`far_steps`] cell). Every cell not named is
+/// empty: more units could only forbid rolls, never allow new ones.
+/// The roller's own before/after patterns are not pairs: where it lands decides its new type,
+/// not its old one.
+pub fn derive_links() -> BTreeSet<(u8, u8)> {
+    let origin = (0, 0);
+    let ring: Vec<(i32, i32)> = (0..6).map(|d| axial_step(origin, d)).collect();
+    let mut cells: Vec<(i32, i32)> = Vec::new();
+    for q in -2..=2 {
+        for r in -2..=2 {
+            let d = hex_distance((q, r));
+            if d == 1 || d == 2 {
+                cells.push((q, r));
+            }
+        }
+    }
+    let mut pairs = BTreeSet::new();
+    for a in 0..64u8 {
+        let mut base: BTreeSet<(i32, i32)> = BTreeSet::new();
+        base.insert(origin);
+        for (d, &c) in ring.iter().enumerate() {
+            if a & (1 << d) != 0 {
+                base.insert(c);
+            }
+        }
+        for &p in &cells {
+            let in_ring = ring.contains(&p);
+            if in_ring && !base.contains(&p) {
+                continue;
+            }
+            for pivot in 0..6 {
+                let q = axial_step(p, pivot);
+                if ring.contains(&q) && !base.contains(&q) {
+                    continue;
+                }
+                let mut world = base.clone();
+                world.insert(p);
+                world.insert(q);
+                let mask_of = |w: &BTreeSet<(i32, i32)>, c: (i32, i32)| -> u8 {
+                    (0..6)
+                        .filter(|&d| w.contains(&axial_step(c, d)))
+                        .fold(0, |m, d| m | 1 << d)
+                };
+                let m = mask_of(&world, p);
+                for turn in Turn::BOTH {
+                    let [f1, f2] = far_steps(pivot, turn);
+                    if !roll_ok(m, pivot, turn)
+                        || world.contains(&axial_step(axial_step(p, f1), f2))
+                    {
+                        continue;
+                    }
+                    let t = axial_step(p, target_slot(pivot, turn));
+                    let mut after = world.clone();
+                    after.remove(&p);
+                    after.insert(t);
+                    pairs.insert((a, mask_of(&after, origin)));
+                }
+            }
+        }
+    }
+    pairs
+}
+
+/// Shortest-path lengths in the type graph (breadth-first from every class).
+fn distances(links: &BTreeSet<(u8, u8)>) -> [[u8; CLASSES]; CLASSES] {
+    let mut dist = [[u8::MAX; CLASSES]; CLASSES];
+    for (s, row) in dist.iter_mut().enumerate() {
+        row[s] = 0;
+        let mut frontier = vec![s as u8];
+        let mut d = 0u8;
+        while !frontier.is_empty() {
+            d += 1;
+            let mut next = Vec::new();
+            for &u in &frontier {
+                for &(a, b) in links {
+                    let v = if a == u {
+                        b
+                    } else if b == u {
+                        a
+                    } else {
+                        continue;
+                    };
+                    if row[v as usize] == u8::MAX {
+                        row[v as usize] = d;
+                        next.push(v);
+                    }
+                }
+            }
+            frontier = next;
+        }
+    }
+    dist
+}
