@@ -29,7 +29,8 @@ export interface Layout {
   events: LegendEntry[];
   fields: FieldInfo[];
   tools: ToolInfo[];
-  [extra: string]: unknown;
+  /** Legend names are short labels worth writing on each cell. */
+  cell_labels: boolean;
 }
 
 export type Metrics = Record<string, number | boolean | string | null>;
@@ -53,6 +54,8 @@ export interface Frame {
   field: { name: string; data: Float32Array } | null;
   agents: Uint32Array;
   events: Uint32Array;
+  /** One bit mask per cell (bit d: bonded to the neighbour in direction d), or null. */
+  bonds: Uint8Array | null;
   stepsPerSecond: number;
 }
 

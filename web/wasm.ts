@@ -21,6 +21,9 @@ export const decodeLink = (link: string): string => core.decode_link(link);
 export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
 export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
 export const experimentJson = (name: string): string => core.experiment_json(name);
+/** A model's helper call (see `kumiki queries`): JSON arguments, a JSON answer. */
+export const query = <T = Record<string, unknown>>(model: string, name: string, args: unknown): T =>
+  JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
 export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
 export const version = (): string => core.version();
 

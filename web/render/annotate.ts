@@ -32,6 +32,34 @@ export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scen
   const visibleCount = Math.max(0, x1 - x0 + 1) * Math.max(0, y1 - y0 + 1);
   const centre = (i: number) => cam.toScreen(...cellCentre(layout.lattice, i % w, Math.floor(i / w)));
 
+  const bonds = frame.bonds;
+  if (bonds && cam.scale >= 7 && visibleCount <= MAX_VISIBLE) {
+    // Each bond once, from the cell whose neighbour lies in direction 0..half.
+    ctx.strokeStyle = 'rgba(20,26,33,0.85)';
+    ctx.lineWidth = Math.max(1.5, cam.scale * 0.14);
+    ctx.lineCap = 'round';
+    ctx.beginPath();
+    for (let y = y0; y <= y1; y++) {
+      for (let x = x0; x <= x1; x++) {
+        const i = y * w + x;
+        const mask = bonds[i];
+        if (!mask) continue;
+        const around = neighbours(layout, i, true);
+        const [ax, ay] = centre(i);
+        for (let d = 0; d < around.length; d++) {
+          const j = around[d];
+          if (j < 0 || j < i || !(mask & (1 << d))) continue;
+          const [bx, by] = centre(j);
+          // A connector across the shared edge, clear of the labels at the centres.
+          ctx.moveTo(ax + (bx - ax) * 0.34, ay + (by - ay) * 0.34);
+          ctx.lineTo(bx - (bx - ax) * 0.34, by - (by - ay) * 0.34);
+        }
+      }
+    }
+    ctx.stroke();
+    ctx.lineCap = 'butt';
+  }
+
   const field = scene.overlay;
   const info = field ? layout.fields.find((f) => f.name === field.name) : undefined;
   if (marks.arrows && field && info?.arrows && cam.scale >= 12 && visibleCount <= MAX_VISIBLE) {

@@ -63,14 +63,18 @@ export function hexCorners(cx: number, cy: number, r: number): [number, number][
   return out;
 }
 
-/** Neighbour offsets of a planar cell, in the core's direction order. */
-export function neighbours(layout: Layout, i: number): number[] {
+/**
+ * Neighbours of a planar cell in the core's direction order. With `byDirection`, the list has
+ * one entry per direction and -1 where the neighbour would be outside the lattice.
+ */
+export function neighbours(layout: Layout, i: number, byDirection = false): number[] {
   const [w, h] = layout.dims;
   const x = i % w;
   const y = Math.floor(i / w);
   const out: number[] = [];
   const push = (nx: number, ny: number) => {
     if (nx >= 0 && ny >= 0 && nx < w && ny < h) out.push(ny * w + nx);
+    else if (byDirection) out.push(-1);
   };
   if (layout.lattice === 'hex') {
     const odd = y & 1;

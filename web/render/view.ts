@@ -3,6 +3,7 @@
 import type { Frame, Layout } from '../types';
 import { annotate, type Marks } from './annotate';
 import { Camera2D, Camera3D, type Camera, type Hit, fitCamera } from './camera';
+import { type Bounds, HEX_RADIUS, cellCentre } from './geometry';
 import { range } from './palette';
 import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
 
@@ -21,6 +22,8 @@ export class View {
   private frame: Frame | null = null;
   private overlay: Overlay | null = null;
   private pendingFrame = false;
+  /** Frame the content when the first frame of a new lattice arrives. */
+  private fitOnFrame = false;
   private scheduled = false;
   private cssWidth = 1;
   private cssHeight = 1;
@@ -69,6 +72,7 @@ export class View {
       this.camera = layout.lattice === 'cubic' ? new Camera3D() : new Camera2D();
       this.sizeCamera();
       fitCamera(this.camera, layout);
+      this.fitOnFrame = true;
     }
     this.renderer?.setLayout(layout);
     this.request();
@@ -83,6 +87,10 @@ export class View {
       this.overlay = null;
     }
     this.pendingFrame = true;
+    if (this.fitOnFrame) {
+      this.fitOnFrame = false;
+      this.fit();
+    }
     this.request();
   }
 
@@ -90,9 +98,12 @@ export class View {
     return this.overlay ? [this.overlay.min, this.overlay.max] : null;
   }
 
+  /** Frames what is on the lattice (with a margin), or the whole lattice when it is empty. */
   fit() {
     if (!this.layout) return;
-    fitCamera(this.camera, this.layout);
+    const content = this.frame && this.camera.kind === '2d' ? contentBounds(this.layout, this.frame.cells) : null;
+    if (content && this.camera.kind === '2d') this.camera.fit(content);
+    else fitCamera(this.camera, this.layout);
     this.request();
   }
 
@@ -233,4 +244,24 @@ export class View {
     const [a, b] = [...this.pointers.values()];
     return Math.hypot(a.x - b.x, a.y - b.y);
   }
+}
+
+/** World bounds of the non-empty cells of a planar lattice, two cells wider all round. */
+function contentBounds(layout: Layout, cells: Uint8Array): Bounds | null {
+  const w = layout.dims[0];
+  let x0 = Infinity;
+  let y0 = Infinity;
+  let x1 = -Infinity;
+  let y1 = -Infinity;
+  for (let i = 0; i < cells.length; i++) {
+    if (!cells[i]) continue;
+    const [cx, cy] = cellCentre(layout.lattice, i % w, Math.floor(i / w));
+    if (cx < x0) x0 = cx;
+    if (cx > x1) x1 = cx;
+    if (cy < y0) y0 = cy;
+    if (cy > y1) y1 = cy;
+  }
+  if (x1 < x0) return null;
+  const pad = 2 + (layout.lattice === 'hex' ? HEX_RADIUS : 0.5);
+  return { x0: x0 - pad, y0: y0 - pad, x1: x1 + pad, y1: y1 + pad };
 }

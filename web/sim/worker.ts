@@ -16,6 +16,8 @@ const HASH_EVERY_MS = 250;
 
 let sim: Sim | null = null;
 let maxSteps = 0;
+/** Whether the model reports bonds (an empty list on the first frame means it never will). */
+let hasBonds = false;
 let playing = false;
 let stepsPerSecond = 30;
 let overlay: string | null = null;
@@ -82,12 +84,14 @@ function sendFrame(force = false) {
       field: overlay && data ? { name: overlay, data } : null,
       agents: s.agents(),
       events: s.events(),
+      bonds: hasBonds ? s.bonds() : null,
       stepsPerSecond: playing ? measuredRate() : 0,
     };
   });
   if (!frame) return;
   const transfer: Transferable[] = [frame.cells.buffer, frame.agents.buffer, frame.events.buffer];
   if (frame.field) transfer.push(frame.field.data.buffer);
+  if (frame.bonds) transfer.push(frame.bonds.buffer);
   awaitingAck = true;
   dirty = false;
   post({ type: 'frame', frame }, transfer);
@@ -157,6 +161,7 @@ function handle(msg: ToWorker) {
       sim?.free();
       sim = created;
       maxSteps = (JSON.parse(created.scenario_json()) as { max_steps: number }).max_steps;
+      hasBonds = created.bonds().length > 0;
       post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
       post({ type: 'playing', playing: false });
       awaitingAck = false;

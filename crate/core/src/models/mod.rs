@@ -74,6 +74,9 @@ pub struct Layout {
     pub events: Vec<LegendEntry>,
     pub fields: Vec<FieldInfo>,
     pub tools: Vec<ToolInfo>,
+    /// The cell legend's names are short labels (connection types) worth writing on each cell
+    /// when it is drawn large enough.
+    pub cell_labels: bool,
 }
 
 /// Optional scene information for 3-D views, beyond the cells. Models without any return the

@@ -529,6 +529,7 @@ impl Model for Amas {
                     arrows: true,
                 },
             ],
+            cell_labels: false,
             tools: vec![ToolInfo {
                 name: "remove".into(),
                 label: "Remove module".into(),

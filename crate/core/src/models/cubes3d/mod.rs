@@ -909,6 +909,7 @@ impl Model for Cubes {
             ],
             fields,
             tools,
+            cell_labels: true,
         }
     }
 

@@ -841,6 +841,7 @@ impl Model for Fracta {
                     .cloned()
                     .unwrap_or_default(),
             }],
+            cell_labels: true,
         }
     }
 
