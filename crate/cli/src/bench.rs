@@ -62,16 +62,25 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     let err = |m: &str| format!("{}: {m}", path.display());
-    let name = v["name"].as_str().ok_or_else(|| err("name is required"))?.to_string();
+    let name = v["name"]
+        .as_str()
+        .ok_or_else(|| err("name is required"))?
+        .to_string();
     let experiment = v["experiment"].as_str().map(str::to_string);
     let scenario = match (&v["scenario"], &experiment) {
         (Value::String(preset), _) => presets::scenario(preset).map_err(|e| err(&e.to_string()))?,
-        (obj @ Value::Object(_), _) => Scenario::from_value(obj.clone()).map_err(|e| err(&e.to_string()))?,
+        (obj @ Value::Object(_), _) => {
+            Scenario::from_value(obj.clone()).map_err(|e| err(&e.to_string()))?
+        }
         (Value::Null, Some(exp)) => {
             let e = Experiment::named_or_json(exp).map_err(|e| err(&e.to_string()))?;
             e.scenarios[0].clone()
         }
-        _ => return Err(err("scenario (a preset name or object) or experiment is required")),
+        _ => {
+            return Err(err(
+                "scenario (a preset name or object) or experiment is required",
+            ))
+        }
     };
     let mut overrides = Vec::new();
     if let Some(set) = v["set"].as_object() {
@@ -79,7 +88,9 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
             overrides.push((k.clone(), val.clone()));
         }
     }
-    let scenario = scenario.with_overrides(&overrides).map_err(|e| err(&e.to_string()))?;
+    let scenario = scenario
+        .with_overrides(&overrides)
+        .map_err(|e| err(&e.to_string()))?;
     let num = |k: &str, d: u64| v[k].as_u64().unwrap_or(d);
     Ok(Workload {
         name,
@@ -111,8 +122,13 @@ pub fn measure(w: &Workload, threads: usize) -> Value {
         let mut times = Vec::new();
         for _ in 0..w.repeats {
             let t = Instant::now();
-            crate::pool::run_ordered(jobs.len(), threads, |i| exp.run_job(&jobs[i]).map(|_| ()), |_, r| r)
-                .expect("experiment jobs run");
+            crate::pool::run_ordered(
+                jobs.len(),
+                threads,
+                |i| exp.run_job(&jobs[i]).map(|_| ()),
+                |_, r| r,
+            )
+            .expect("experiment jobs run");
             times.push(t.elapsed().as_secs_f64());
         }
         return json!({
@@ -148,4 +164,3 @@ pub fn measure(w: &Workload, threads: usize) -> Value {
     }
     Value::Object(out)
 }
-

@@ -369,7 +369,9 @@ fn sweep(rest: &[String]) -> Result<(), Failure> {
 fn bench(rest: &[String]) -> Result<(), Failure> {
     let (files, opts) = parse_options(rest, &["--jobs"])?;
     if files.is_empty() {
-        return Err(Failure::Usage("bench needs workload files (tests/bench/*.json)".into()));
+        return Err(Failure::Usage(
+            "bench needs workload files (tests/bench/*.json)".into(),
+        ));
     }
     let workloads = files
         .iter()
