@@ -78,19 +78,20 @@ impl Amas {
 
     pub(super) fn check(&self, action: &Action) -> Result<Checked> {
         let raw: Raw = crate::error::from_value(Value::Object(action.clone()))?;
-        let kind =
-            match raw.kind.as_str() {
-                "remove" => Kind::Remove,
-                "break" => Kind::Break,
-                "dismantle" => Kind::Dismantle,
-                "extend" => Kind::Extend,
-                other => return Err(Error::field(
+        let kind = match raw.kind.as_str() {
+            "remove" => Kind::Remove,
+            "break" => Kind::Break,
+            "dismantle" => Kind::Dismantle,
+            "extend" => Kind::Extend,
+            other => {
+                return Err(Error::field(
                     "kind",
                     format!(
                         "unknown disturbance '{other}'; known: remove, break, dismantle, extend"
                     ),
-                )),
-            };
+                ))
+            }
+        };
         match (raw.count, raw.cells) {
             (Some(count), None) => Ok(Checked {
                 kind,

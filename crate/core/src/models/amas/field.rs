@@ -5,15 +5,10 @@
 //! communication. Rows are processed with straight-line loops over equal-length slices so the
 //! compiler vectorises them (SSE natively, SIMD128 in wasm when enabled).
 
-use super::state::{ACTIVE_MASK, FRONT, MODULE, SOURCE};
+use super::state::{BROKEN, FRONT, MODULE, SOURCE};
 
 /// Distance not (yet) known, or no module here.
 pub const FAR: u16 = u16::MAX;
-
-#[inline(always)]
-fn active(s: u8) -> bool {
-    s & ACTIVE_MASK == MODULE
-}
 
 pub enum Field {
     /// Equation 2: distances to the supply area and to the growth front.
@@ -128,12 +123,15 @@ impl Field {
 }
 
 /// Equation 2 for one row: a module's distance is the least of its neighbours' plus one; the
-/// destination modules hold 0; cells that are not communicating modules hold FAR, which no
-/// minimum ever picks up.
+/// destination modules hold 0; cells without a module hold FAR, which no minimum ever picks
+/// up. A module whose communication broke keeps the value it had, and its neighbours keep the
+/// value they last heard from it.
 #[inline(always)]
-fn discrete_cell(s: u8, ms: u16, mf: u16) -> (u16, u16) {
-    if !active(s) {
+fn discrete_cell(s: u8, old: (u16, u16), ms: u16, mf: u16) -> (u16, u16) {
+    if s & MODULE == 0 {
         (FAR, FAR)
+    } else if s & BROKEN != 0 {
+        old
     } else {
         let vs = if s & SOURCE != 0 {
             0
@@ -158,7 +156,7 @@ fn discrete_row(st: &[u8], s: [&[u16]; 3], f: [&[u16]; 3], os: &mut [u16], of: &
         let r = |v: &[u16]| if x + 1 < w { v[x + 1] } else { FAR };
         let ms = l(sm).min(r(sm)).min(su[x]).min(sd[x]);
         let mf = l(fm).min(r(fm)).min(fu[x]).min(fd[x]);
-        discrete_cell(st[x], ms, mf)
+        discrete_cell(st[x], (sm[x], fm[x]), ms, mf)
     };
     if w <= 2 {
         for x in 0..w {
@@ -169,41 +167,41 @@ fn discrete_row(st: &[u8], s: [&[u16]; 3], f: [&[u16]; 3], os: &mut [u16], of: &
     (os[0], of[0]) = edge(0);
     (os[w - 1], of[w - 1]) = edge(w - 1);
     let n = w - 2;
-    let (sl, sr, su, sd) = (&sm[..n], &sm[2..], &su[1..=n], &sd[1..=n]);
-    let (fl, fr, fu, fd) = (&fm[..n], &fm[2..], &fu[1..=n], &fd[1..=n]);
+    // Equal-length slices, so the loop runs without bounds checks and vectorises.
+    let (sl, sc, sr, su, sd) = (&sm[..n], &sm[1..=n], &sm[2..2 + n], &su[1..=n], &sd[1..=n]);
+    let (fl, fc, fr, fu, fd) = (&fm[..n], &fm[1..=n], &fm[2..2 + n], &fu[1..=n], &fd[1..=n]);
     let st = &st[1..=n];
     let (os, of) = (&mut os[1..=n], &mut of[1..=n]);
     for i in 0..n {
         let ms = sl[i].min(sr[i]).min(su[i]).min(sd[i]);
         let mf = fl[i].min(fr[i]).min(fu[i]).min(fd[i]);
-        let s = st[i];
-        let on = active(s);
-        let vs = if s & SOURCE != 0 {
-            0
-        } else {
-            ms.saturating_add(1)
-        };
-        let vf = if s & FRONT != 0 {
-            0
-        } else {
-            mf.saturating_add(1)
-        };
-        os[i] = if on { vs } else { FAR };
-        of[i] = if on { vf } else { FAR };
+        // Masks in 16 bits: all ones where the condition holds.
+        let s = u16::from(st[i]);
+        let off = 0u16.wrapping_sub(u16::from(s & u16::from(MODULE) == 0));
+        let frozen = 0u16.wrapping_sub(u16::from(s & u16::from(BROKEN) != 0));
+        let src = 0u16.wrapping_sub(u16::from(s & u16::from(SOURCE) != 0));
+        let front = 0u16.wrapping_sub(u16::from(s & u16::from(FRONT) != 0));
+        os[i] = (ms.saturating_add(1) & !src & !frozen) | (sc[i] & frozen) | off;
+        of[i] = (mf.saturating_add(1) & !front & !frozen) | (fc[i] & frozen) | off;
     }
 }
 
-/// Equation 1 for one row, explicit Euler: P += D Σ (P_j − P) over the neighbouring
-/// communicating modules only, so nothing leaks across a completed edge (a Neumann boundary).
-/// The growth front is held at 1 and the supply at 0 (the front wins where a module is both).
-/// Cells without a communicating module hold 0, which adds nothing to the sum.
+/// Equation 1 for one row, explicit Euler: P += D Σ (P_j − P) over the neighbouring modules
+/// only, so nothing leaks across a completed edge (a Neumann boundary). The growth front is
+/// held at 1 and the supply at 0 (the front wins where a module is both). Cells without a
+/// module hold 0, which adds nothing to the sum. A module whose communication broke keeps its
+/// value, and its neighbours keep the value they last heard from it.
 #[inline(always)]
 fn continuous_value(s: u8, p: f32, sum: f32, k: f32, d: f32) -> f32 {
     let v = p + d * (sum - k * p);
-    if !active(s) || (s & SOURCE != 0 && s & FRONT == 0) {
+    if s & MODULE == 0 {
         0.0
+    } else if s & BROKEN != 0 {
+        p
     } else if s & FRONT != 0 {
         1.0
+    } else if s & SOURCE != 0 {
+        0.0
     } else {
         v
     }
@@ -211,7 +209,7 @@ fn continuous_value(s: u8, p: f32, sum: f32, k: f32, d: f32) -> f32 {
 
 #[inline(always)]
 fn on(s: u8) -> f32 {
-    if active(s) {
+    if s & MODULE != 0 {
         1.0
     } else {
         0.0
@@ -246,12 +244,21 @@ fn continuous_row(s: [&[u8]; 3], p: [&[f32]; 3], out: &mut [f32], d: f32) {
     out[0] = edge(0);
     out[w - 1] = edge(w - 1);
     let n = w - 2;
-    let (pl, pc, pr, pu, pd) = (&pm[..n], &pm[1..=n], &pm[2..], &pu[1..=n], &pd[1..=n]);
-    let (sl, sc, sr, su, sd) = (&sm[..n], &sm[1..=n], &sm[2..], &su[1..=n], &sd[1..=n]);
+    let (pl, pc, pr, pu, pd) = (&pm[..n], &pm[1..=n], &pm[2..2 + n], &pu[1..=n], &pd[1..=n]);
+    let (sl, sc, sr, su, sd) = (&sm[..n], &sm[1..=n], &sm[2..2 + n], &su[1..=n], &sd[1..=n]);
     let out = &mut out[1..=n];
+    let on_bit = |s: u8| u32::from(s & MODULE);
     for i in 0..n {
         let sum = pl[i] + pr[i] + pu[i] + pd[i];
-        let k = on(sl[i]) + on(sr[i]) + on(su[i]) + on(sd[i]);
-        out[i] = continuous_value(sc[i], pc[i], sum, k, d);
+        let k = (on_bit(sl[i]) + on_bit(sr[i]) + on_bit(su[i]) + on_bit(sd[i])) as f32;
+        let p = pc[i];
+        let v = p + d * (sum - k * p);
+        // The same as `continuous_value`, with bit masks instead of branches.
+        let s = sc[i];
+        let live = s & (MODULE | BROKEN) == MODULE;
+        let keep = 0u32.wrapping_sub(u32::from(live && s & (FRONT | SOURCE) == 0));
+        let frozen = 0u32.wrapping_sub(u32::from(s & BROKEN != 0));
+        let one = 0u32.wrapping_sub(u32::from(live && s & FRONT != 0)) & 1.0f32.to_bits();
+        out[i] = f32::from_bits((v.to_bits() & keep) | (p.to_bits() & frozen) | one);
     }
 }

@@ -26,7 +26,7 @@ pub use spec::{Collision, FieldKind, MAX_SIDE, MAX_SUPPLY_ROWS};
 
 use field::{Field, FAR};
 use spec::{Params, Spec};
-use state::{code, ACTIVE_MASK, CLAIMED, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
+use state::{code, ACTIVE_MASK, BROKEN, CLAIMED, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
@@ -358,10 +358,13 @@ impl Amas {
     }
 
     /// The value a module takes when it appears or its role changes: what its first update
-    /// would give from its neighbours' current values.
+    /// would give from its neighbours' current values. A broken module keeps its value.
     fn init_value(&mut self, i: usize) {
         let s = self.state[i];
-        let on = s & ACTIVE_MASK == MODULE;
+        if s & BROKEN != 0 {
+            return;
+        }
+        let on = s & MODULE != 0;
         let (nb, k) = self.neighbours(i);
         match &mut self.field {
             Field::Discrete {
@@ -396,7 +399,7 @@ impl Amas {
                     let mut sum = 0.0f32;
                     let mut cnt = 0.0f32;
                     for &j in &nb[..k] {
-                        if self.state[j] & ACTIVE_MASK == MODULE {
+                        if self.state[j] & MODULE != 0 {
                             sum += p[j];
                             cnt += 1.0;
                         }
@@ -532,15 +535,16 @@ impl Amas {
             }
             walk[nw] = j as u32;
             nw += 1;
-            if s & ACTIVE_MASK == MODULE {
+            if s & MODULE != 0 {
                 valued[nv] = (j as u32, self.cost(j, loaded));
                 nv += 1;
             }
         }
-        // The gradient is judged on every neighbouring module's value, engaged or not.
+        // The gradient is judged on every neighbouring module's value, engaged or not; the
+        // module under the robot holds the last value each neighbour sent, broken or not.
         let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
         for &j in &nb[..k] {
-            if self.state[j] & ACTIVE_MASK == MODULE {
+            if self.state[j] & MODULE != 0 {
                 let c = self.cost(j, loaded);
                 lo = lo.min(c);
                 hi = hi.max(c);
@@ -572,13 +576,8 @@ impl Amas {
         let mut opts = [(0u32, 0f32); 4];
         let mut n = 0;
         for &j in &nb[..k] {
-            let s = self.state[j];
             if self.state[j] & MODULE != 0 && self.occupant[j] == NONE {
-                let c = if s & ACTIVE_MASK == MODULE {
-                    self.cost(j, loaded)
-                } else {
-                    f32::INFINITY
-                };
+                let c = self.cost(j, loaded);
                 opts[n] = (j as u32, c);
                 n += 1;
             }
@@ -590,7 +589,7 @@ impl Amas {
         let mut pick = [0u32; 4];
         let mut m = 0;
         for &(j, c) in &opts[..n] {
-            if c == best || best == f32::INFINITY {
+            if c == best {
                 pick[m] = j;
                 m += 1;
             }
@@ -1237,7 +1236,7 @@ impl Model for Amas {
     }
 
     fn field(&self, name: &str) -> Option<Cow<'_, [f32]>> {
-        let on = |i: usize| self.state[i] & ACTIVE_MASK == MODULE;
+        let on = |i: usize| self.state[i] & MODULE != 0;
         match (&self.field, name) {
             (Field::Continuous { p, .. }, "potential") => Some(Cow::Owned(
                 p.iter()
@@ -1313,7 +1312,7 @@ impl Model for Amas {
         m.insert("x".into(), (i % self.w).into());
         m.insert("y".into(), (i / self.w).into());
         m.insert("cell".into(), state::describe(s).into());
-        let on = s & ACTIVE_MASK == MODULE;
+        let on = s & MODULE != 0;
         match &self.field {
             Field::Continuous { p, .. } => {
                 m.insert(
