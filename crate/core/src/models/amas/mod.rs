@@ -105,6 +105,8 @@ pub struct Amas {
     relaying: Vec<bool>,
     position: Vec<u32>,
     claimed: Vec<u32>,
+    /// Scratch list of robots along a chain of moves.
+    chain: Vec<u32>,
     rng: Rng,
     disturb_rng: Rng,
     /// Modules to be removed that the connection rule lets go now (a bit set over all cells):
@@ -216,6 +218,7 @@ impl Amas {
             relaying: vec![false; robots_n],
             position: vec![0; robots_n],
             claimed: Vec::new(),
+            chain: Vec::new(),
             rng: Rng::new(scenario.seed),
             disturb_rng: Rng::stream(scenario.seed, STREAM_DISTURBANCE),
             releasable: vec![0; n.div_ceil(64)],
@@ -710,7 +713,7 @@ impl Amas {
                 && (ny as usize) < self.h
                 && self.state[ny as usize * self.w + nx as usize] & MODULE != 0
         };
-        let filled: Vec<bool> = ring.iter().map(|&d| here(d)).collect();
+        let filled: [bool; 8] = std::array::from_fn(|q| here(ring[q]));
         if filled.iter().all(|&f| f) {
             return true;
         }
@@ -776,11 +779,11 @@ impl Amas {
         if self.status[r] != UNKNOWN {
             return;
         }
-        let mut chain = Vec::new();
+        self.chain.clear();
         let mut cur = r;
         let result = loop {
             self.status[cur] = VISITING;
-            chain.push(cur);
+            self.chain.push(cur as u32);
             let Plan::Move(t) = self.plans[cur] else {
                 break STAYS;
             };
@@ -802,8 +805,8 @@ impl Amas {
                 }
             }
         };
-        for q in chain {
-            self.status[q] = result;
+        for &q in &self.chain {
+            self.status[q as usize] = result;
         }
     }
 
@@ -910,21 +913,16 @@ impl Amas {
                 self.collide(r, t);
                 continue;
             }
-            {
-                {
-                    let o = o as usize;
-                    let here = self.robots[r].cell;
-                    // Head-on: the robot ahead wants this robot's module.
-                    let head_on = matches!(self.plans[o], Plan::Move(x) | Plan::Blocked(x) if x == here)
-                        && !self.relaying[o];
-                    if head_on && self.position[o] > self.position[r] {
-                        // The larger token keeps its priority and waits for the other to
-                        // step aside.
-                        continue;
-                    }
-                    self.collide(r, t);
-                }
+            let o = o as usize;
+            let here = self.robots[r].cell;
+            // Head-on: the robot ahead wants this robot's module.
+            let head_on = matches!(self.plans[o], Plan::Move(x) | Plan::Blocked(x) if x == here)
+                && !self.relaying[o];
+            if head_on && self.position[o] > self.position[r] {
+                // The larger token keeps its priority and waits for the other to step aside.
+                continue;
             }
+            self.collide(r, t);
         }
     }
 
@@ -984,10 +982,10 @@ impl Amas {
                 _ => {}
             }
         }
-        for c in std::mem::take(&mut self.claimed) {
-            let c = c as usize;
-            self.state[c] &= !CLAIMED;
+        for &c in &self.claimed {
+            self.state[c as usize] &= !CLAIMED;
         }
+        self.claimed.clear();
     }
 
     /// A module is placed at vacant target cell `t`.
@@ -1009,7 +1007,7 @@ impl Amas {
         self.init_value(t);
     }
 
-    /// Remaining target cells, for the inspector and tests.
+    /// The fraction of the current target that is built.
     fn built_fraction(&self) -> f64 {
         if self.target_cells == 0 {
             1.0
