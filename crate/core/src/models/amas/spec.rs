@@ -16,6 +16,8 @@ pub const MAX_UPDATES: u32 = 1000;
 pub const MAX_DURATION: u32 = 1000;
 /// The largest number of stage targets before the final one.
 pub const MAX_STAGES: usize = 64;
+/// The largest number of cells of all stage targets together (lattice cells × targets).
+pub const MAX_STAGE_CELLS: u64 = 1 << 26;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]
@@ -240,6 +242,26 @@ pub fn read(spec: Spec) -> Result<Plan> {
             format!("at most {MAX_STAGES} stages"),
         ));
     }
+    // Rectangles are cheap to write and costly to hold: bound them before building any.
+    let declared: u64 = spec
+        .stages
+        .iter()
+        .chain(std::iter::once(&spec.target))
+        .map(|v| match v.get("rect").and_then(Value::as_array) {
+            Some(r) => r
+                .iter()
+                .filter_map(Value::as_u64)
+                .product::<u64>()
+                .min(1 << 32),
+            None => 0,
+        })
+        .sum();
+    if declared > MAX_STAGE_CELLS {
+        return Err(Error::field(
+            "stages",
+            format!("the targets hold more than {MAX_STAGE_CELLS} cells in all"),
+        ));
+    }
     let mut shapes = Vec::with_capacity(spec.stages.len() + 1);
     for (i, v) in spec.stages.iter().enumerate() {
         shapes.push((
@@ -277,6 +299,15 @@ pub fn read(spec: Spec) -> Result<Plan> {
             format!(
                 "{w}×{} cells (with the supply rows) exceeds the limit of {MAX_SIDE}×{MAX_SIDE}",
                 shape_h + spec.supply_rows
+            ),
+        ));
+    }
+    if shapes.len() as u64 * u64::from(w) * u64::from(shape_h) > MAX_STAGE_CELLS {
+        return Err(Error::field(
+            "stages",
+            format!(
+                "{} stage targets of {w}×{shape_h} cells are too many; at most {MAX_STAGE_CELLS} cells in all",
+                shapes.len()
             ),
         ));
     }

@@ -459,6 +459,12 @@ fn bad_scenarios_name_the_field() {
         e.starts_with("target:") && e.contains("exceeds the limit"),
         "{e}"
     );
+    let big = json!({"rect": [2048, 2000]});
+    let e = bad(json!({"target": big, "stages": vec![big.clone(); 20]}));
+    assert!(
+        e.starts_with("stages:") && e.contains("cells in all"),
+        "{e}"
+    );
     let e = bad(json!({"field": "lumpy"}));
     assert!(e.starts_with("field:") && e.contains("continuous"), "{e}");
     assert!(bad(json!({"collision": "bump"})).starts_with("collision:"));
