@@ -561,3 +561,35 @@ proptest! {
         });
     }
 }
+
+#[test]
+fn layout_describes_what_the_model_draws() {
+    for field in ["continuous", "discrete"] {
+        let mut m = model(json!({"field": field, "collision": "relay", "robots": 4}));
+        for _ in 0..30 {
+            m.step();
+        }
+        let layout = m.layout();
+        assert_eq!(m.cells().len(), (layout.dims[0] * layout.dims[1]) as usize);
+        let codes: Vec<u8> = layout.cells.iter().map(|e| e.code).collect();
+        assert!(m.cells().iter().all(|c| *c == 0 || codes.contains(c)));
+        for f in &layout.fields {
+            let values = m.field(&f.name).expect("every listed field is served");
+            assert_eq!(values.len(), m.cells().len());
+            assert!(values.iter().any(|v| v.is_finite()));
+        }
+        assert!(m.field("no such field").is_none());
+        let kinds: Vec<u8> = layout.agents.iter().map(|e| e.code).collect();
+        assert!(m.agents().iter().all(|a| kinds.contains(&a.kind)));
+        for tool in &layout.tools {
+            // Every tool's action is valid once a cell is added (a wrong cell is a clear error).
+            let mut a = tool.action.clone();
+            a.insert("cells".into(), json!([0]));
+            let checked = m.check_action(&a);
+            assert!(checked.is_ok() || checked.unwrap_err().to_string().starts_with("cells[0]"));
+        }
+        let facts = m.inspect(m.robots[0].cell as usize);
+        assert!(facts.contains_key("robot") && facts.contains_key("cell"));
+        assert!(m.inspect(usize::MAX).is_empty());
+    }
+}
