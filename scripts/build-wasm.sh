@@ -9,7 +9,7 @@ wasm-bindgen --target web --out-dir web/pkg \
   target/wasm32-unknown-unknown/release/kumiki_wasm.wasm
 if [ -x node_modules/.bin/wasm-opt ]; then
   node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue \
+    --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd \
     web/pkg/kumiki_wasm_bg.wasm -o web/pkg/kumiki_wasm_bg.wasm
 fi
 echo "wasm: web/pkg/kumiki_wasm_bg.wasm ($(wc -c < web/pkg/kumiki_wasm_bg.wasm) bytes)"

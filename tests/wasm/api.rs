@@ -15,7 +15,7 @@ fn sim_steps_and_reports() {
     let cells = sim.cells();
     assert!(cells.length() > 0);
     assert_eq!(sim.agents().length() % 2, 0);
-    assert!(sim.field("to_supply").is_some());
+    assert!(sim.field("potential").is_some());
     assert!(sim.field("no_such_field").is_none());
 }
 
@@ -48,7 +48,7 @@ fn clicked_actions_enter_the_scenario() {
 
 #[wasm_bindgen_test]
 fn experiment_jobs_run_in_wasm() {
-    let runner = ExperimentRunner::new("amas-robots").unwrap();
+    let runner = ExperimentRunner::new("amas-fig23").unwrap();
     assert!(runner.job_count() > 0);
     assert!(runner.run(0).is_ok());
 }
