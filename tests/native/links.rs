@@ -65,3 +65,16 @@ fn decompression_bombs_are_refused() {
         .to_string()
         .contains("larger than"));
 }
+
+#[test]
+fn canonical_scenarios_state_every_default() {
+    // fracta-triangle10's file leaves K, L, G and I_th at their defaults; the canonical form, and
+    // so every link, writes them out.
+    let s = presets::scenario("fracta-triangle10").unwrap();
+    for key in ["K", "L", "G", "I_th"] {
+        assert!(s.body.contains_key(key), "{key} missing from the canonical scenario");
+    }
+    // Reading the canonical form again changes nothing.
+    let again = kumiki_core::Scenario::from_json(&s.to_json()).unwrap();
+    assert_eq!(again, s);
+}

@@ -79,7 +79,7 @@ impl Scenario {
         }
         let model = take_string(&mut map, "model", None)?;
         let entry = models::entry(&model)?;
-        let scenario = Scenario {
+        let mut scenario = Scenario {
             name: take_string(&mut map, "name", Some(""))?,
             description: take_string(&mut map, "description", Some(""))?,
             seed: take_u64(&mut map, "seed", Some(1), MAX_SEED)?,
@@ -96,6 +96,7 @@ impl Scenario {
         if scenario.max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
+        scenario.body = (entry.normalize)(&scenario)?;
         // Building the model checks the body and every scheduled action.
         models::build(&scenario)?;
         Ok(scenario)

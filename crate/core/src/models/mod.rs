@@ -162,6 +162,8 @@ pub struct ModelEntry {
     pub default_max_steps: u64,
     /// Builds the model from a scenario whose envelope is already checked.
     pub build: fn(&Scenario) -> Result<Box<dyn Model>>,
+    /// The model's keys with every default written out (see [`normalized`]).
+    pub normalize: fn(&Scenario) -> Result<Map<String, Value>>,
 }
 
 /// Every model, in gallery order.
@@ -263,4 +265,17 @@ pub fn build(scenario: &Scenario) -> Result<Box<dyn Model>> {
 /// Reads a model's typed body, naming unknown and invalid fields.
 pub fn body<T: serde::de::DeserializeOwned>(scenario: &Scenario) -> Result<T> {
     crate::error::from_value(Value::Object(scenario.body.clone()))
+}
+
+/// The body read as the model's typed description and written back: every parameter appears
+/// with its value, defaults included, so a scenario (and its link) states all it depends on and
+/// replays the same even if a later version changes a default.
+pub fn normalized<T: serde::de::DeserializeOwned + Serialize>(
+    scenario: &Scenario,
+) -> Result<Map<String, Value>> {
+    let spec: T = body(scenario)?;
+    match serde_json::to_value(spec) {
+        Ok(Value::Object(map)) => Ok(map),
+        _ => unreachable!("a model's description serialises to an object"),
+    }
 }

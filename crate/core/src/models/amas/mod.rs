@@ -33,6 +33,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
     build: |s| Ok(Box::new(Amas::new(s)?)),
+    normalize: models::normalized::<Spec>,
 };
 
 const NONE: u32 = u32::MAX;

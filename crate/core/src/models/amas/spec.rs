@@ -1,6 +1,6 @@
 //! The scenario body of the AMAS model: parsing, limits and the shapes laid on the lattice.
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::error::{Error, Result};
@@ -19,7 +19,7 @@ pub const MAX_STAGES: usize = 64;
 /// The largest number of cells of all stage targets together (lattice cells × targets).
 pub const MAX_STAGE_CELLS: u64 = 1 << 26;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
 #[serde(rename_all = "lowercase")]
 pub enum FieldKind {
     /// Equation 1: one diffusing potential, growth front high, supply low.
@@ -29,7 +29,7 @@ pub enum FieldKind {
     Discrete,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
 #[serde(rename_all = "lowercase")]
 pub enum Collision {
     /// Random tokens: the largest moves, the others wait (section 4.6).
@@ -41,7 +41,7 @@ pub enum Collision {
     Blackboard,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Spec {
     /// The final target shape: shape text (rows, top first) or `{"rect": [w, h]}`.
@@ -50,7 +50,7 @@ pub struct Spec {
     #[serde(default)]
     pub stages: Vec<Value>,
     /// Modules already built when the run starts.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub initial: Option<Value>,
     pub robots: u32,
     #[serde(default)]
@@ -63,7 +63,7 @@ pub struct Spec {
     #[serde(default = "default_diffusion")]
     pub diffusion: f64,
     /// Footnote 3: below this spread of the neighbours' values there is no effective gradient.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient_threshold: Option<f64>,
     #[serde(default = "one")]
     pub supply_rows: u32,

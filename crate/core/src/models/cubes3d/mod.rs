@@ -6,7 +6,7 @@
 
 use std::borrow::Cow;
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
 
 use crate::error::{Error, Result};
@@ -34,6 +34,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
     build: |s| Ok(Box::new(Cubes::new(s)?)),
+    normalize: models::normalized::<Spec>,
 };
 
 /// The largest side of the space, in cells (padding included).
@@ -59,7 +60,7 @@ const LEFT: u8 = 1;
 const HELD_LIT: u8 = 1;
 const HELD_USER: u8 = 2;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Selection {
     /// Equations 7 and 8: P_i ∝ exp(-D_i / T), T = c / log(1 + t).
@@ -70,7 +71,7 @@ pub enum Selection {
     Steepest,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize)]
 pub enum Ground {
     /// No ground: free space on every side.
     #[default]
@@ -87,7 +88,7 @@ pub enum Ground {
     Anchor,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 struct Spec {
     /// The initial configuration: cubic-lattice text layers from the ground up.
@@ -111,7 +112,7 @@ struct Spec {
     margin: u32,
     #[serde(default)]
     ground: Ground,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     light: Option<String>,
     #[serde(default = "default_light_priority")]
     light_priority: f64,
@@ -119,14 +120,14 @@ struct Spec {
     stable_steps: u32,
 }
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 struct TargetSpec {
     #[serde(default)]
     name: String,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     type_lists: Option<String>,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     shape: Option<String>,
     #[serde(default)]
     threshold: f64,

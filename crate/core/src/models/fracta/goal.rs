@@ -55,7 +55,7 @@ impl Statement {
 
 /// How statements of lower priority take part in the difference. See the documentation of
 /// [`Goal::difference`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Priorities {
     /// Every statement counts alike; priority only breaks ties between equally close ones.

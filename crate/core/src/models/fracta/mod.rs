@@ -11,7 +11,7 @@
 use std::borrow::Cow;
 use std::collections::VecDeque;
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
 
 use crate::error::{Error, Result};
@@ -37,6 +37,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
     build: |s| Ok(Box::new(Fracta::new(s)?)),
+    normalize: models::normalized::<Spec>,
 };
 
 /// The most units a scenario may hold.
@@ -68,7 +69,7 @@ pub mod event {
 
 const NO_UNIT: u32 = u32::MAX;
 
-#[derive(Deserialize)]
+#[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 struct Spec {
     /// The starting configuration, a hex shape (see [`crate::shape`]).
