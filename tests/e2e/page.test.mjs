@@ -321,3 +321,28 @@ describe('the AMAS target editor', () => {
     await context.close();
   });
 });
+
+describe('the AMAS stage editor', () => {
+  test('staged targets are listed, each drawn in turn, and a stage can be added and removed', async () => {
+    const link = wasm.encode_link(wasm.preset_json('amas-bridge-staged'));
+    const { page, context, problems } = await openPage(browser, `${server.url}#${link}`);
+    await page.click('#tab-scenario');
+    const options = await page.$$eval('#amas-part option', (o) => o.map((x) => x.textContent));
+    const stages = JSON.parse(await scenarioJson(page)).stages.length;
+    assert.equal(options.length, stages + 1);
+    assert.equal(options[options.length - 1], 'final target');
+    const cellsShown = () => page.$eval('#model-editor .hint:last-of-type', (p) => p.textContent);
+    await page.selectOption('#amas-part', '0');
+    const first = await page.$eval('#model-editor textarea', (t) => t.value);
+    await page.selectOption('#amas-part', String(stages));
+    const last = await page.$eval('#model-editor textarea', (t) => t.value);
+    assert.notEqual(first, last, 'each stage shows its own shape');
+    assert.match(await cellsShown(), /cells/);
+    await page.click('button[aria-label="Add an intermediate stage target before the final target"]');
+    await page.waitForFunction((n) => JSON.parse(document.querySelector('#scenario-json').value).stages.length === n + 1, stages);
+    await page.click('button[aria-label="Remove this stage target"]');
+    await page.waitForFunction((n) => JSON.parse(document.querySelector('#scenario-json').value).stages.length === n, stages);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+});
