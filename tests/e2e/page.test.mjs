@@ -273,6 +273,24 @@ describe('the page', () => {
     }
   });
 
+  test('on a small phone nothing overlaps: the run controls can be pressed', async () => {
+    const { page, context } = await openPage(browser, server.url, { width: 375, height: 667 });
+    for (const id of ['#play', '#step', '#reset', '#copy-link', '#tab-scenario']) {
+      const covered = await page.$eval(id, (el) => {
+        el.scrollIntoView({ block: 'center' });
+        const r = el.getBoundingClientRect();
+        const top = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+        return top === el || el.contains(top) ? null : top?.outerHTML.slice(0, 60);
+      });
+      assert.equal(covered, null, `${id} is covered`);
+    }
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    const { scroll, width } = await page.evaluate(() => ({ scroll: document.documentElement.scrollWidth, width: window.innerWidth }));
+    assert.ok(scroll <= width, `page is ${scroll}px wide in a ${width}px window`);
+    await context.close();
+  });
+
   test('works on a classroom tablet: no sideways scrolling, the view stays large', async () => {
     const { page, context } = await openPage(browser, server.url, { width: 820, height: 1180 });
     const { scroll, width, canvasHeight } = await page.evaluate(() => ({
