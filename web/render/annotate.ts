@@ -108,13 +108,19 @@ export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scen
 
   const events = frame.events;
   if (events.length) {
-    const colors = new Map(layout.events.map((e) => [e.code, e.color]));
+    // One path per kind: a large run has hundreds of events a step.
+    const radius = Math.max(4, cam.scale * 0.48);
     ctx.lineWidth = Math.max(1.5, cam.scale * 0.1);
-    for (let k = 0; k + 1 < events.length; k += 2) {
-      const [sx, sy] = centre(events[k]);
-      ctx.strokeStyle = colors.get(events[k + 1]) ?? '#ff4d4f';
+    for (const kind of layout.events) {
+      ctx.strokeStyle = kind.color;
       ctx.beginPath();
-      ctx.arc(sx, sy, Math.max(4, cam.scale * 0.48), 0, Math.PI * 2);
+      for (let k = 0; k + 1 < events.length; k += 2) {
+        if (events[k + 1] !== kind.code) continue;
+        const [sx, sy] = centre(events[k]);
+        if (sx < -radius || sy < -radius || sx > cam.width + radius || sy > cam.height + radius) continue;
+        ctx.moveTo(sx + radius, sy);
+        ctx.arc(sx, sy, radius, 0, Math.PI * 2);
+      }
       ctx.stroke();
     }
   }

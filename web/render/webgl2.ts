@@ -1,9 +1,9 @@
 // WebGL2 renderer. Planar lattices: one full-screen pass that finds each pixel's cell (square or
-// hex) and looks its code up in an integer texture, so a 1024×1024 lattice costs one texture
-// upload per frame. Agents: instanced discs. Cubic lattice: instanced, lit cubes on a ground grid.
+// hex) and looks its code and its agent up in two integer textures, so a 1024×1024 lattice with
+// thousands of robots costs two texture uploads and no geometry per frame. Cubic lattice:
+// instanced, lit cubes on a ground grid.
 import type { Layout } from '../types';
 import { Camera2D, Camera3D, multiply } from './camera';
-import { cellCentre } from './geometry';
 import { heatTable, legendTable } from './palette';
 import type { Renderer, Scene } from './renderer';
 
@@ -16,7 +16,9 @@ precision highp float;
 precision highp int;
 precision highp usampler2D;
 uniform usampler2D u_cells;
+uniform usampler2D u_agents;
 uniform sampler2D u_palette;
+uniform sampler2D u_agentPalette;
 uniform sampler2D u_field;
 uniform sampler2D u_heat;
 uniform vec2 u_viewport;
@@ -69,36 +71,18 @@ void main() {
     edge = min(p.x, p.y);
   }
   if (u_cam.z > 6.0 && edge < 1.0 / u_cam.z) col.rgb *= 0.62;
+  // An agent on this cell: a disc with a dark rim, or the whole cell when cells are too small
+  // on screen for a disc to show.
+  uint agent = texelFetch(u_agents, c, 0).r;
+  if (agent > 0u) {
+    vec4 a = texelFetch(u_agentPalette, ivec2(int(agent - 1u), 0), 0);
+    float r = length(local);
+    if (u_cam.z < 5.0) col = a;
+    else if (r < 0.3) col = a;
+    else if (r < 0.37) col = vec4(0.0, 0.0, 0.0, 1.0);
+  }
   if (col.a == 0.0) discard;
   outColor = col;
-}`;
-
-const AGENT_VS = `#version 300 es
-in vec2 a_corner;
-in vec2 a_centre;
-in vec4 a_color;
-uniform vec2 u_viewport;
-uniform vec3 u_cam;
-uniform float u_radius;
-out vec2 v_uv;
-out vec4 v_color;
-void main() {
-  vec2 s = (a_centre - u_cam.xy) * u_cam.z + 0.5 * u_viewport + a_corner * u_radius;
-  vec2 clip = s / u_viewport * 2.0 - 1.0;
-  gl_Position = vec4(clip.x, -clip.y, 0.0, 1.0);
-  v_uv = a_corner;
-  v_color = a_color;
-}`;
-
-const AGENT_FS = `#version 300 es
-precision mediump float;
-in vec2 v_uv;
-in vec4 v_color;
-out vec4 outColor;
-void main() {
-  float d = length(v_uv);
-  if (d > 1.0) discard;
-  outColor = d > 0.78 ? vec4(0.0, 0.0, 0.0, 0.7) : v_color;
 }`;
 
 const CUBE_VS = `#version 300 es
@@ -142,13 +126,9 @@ type Program = { program: WebGLProgram; uniform: (name: string) => WebGLUniformL
 export class WebGL2Renderer implements Renderer {
   readonly kind = 'webgl2' as const;
   private planar: Program;
-  private agents: Program;
   private cubes: Program;
   private lines: Program;
   private quad: WebGLVertexArrayObject;
-  private agentVao: WebGLVertexArrayObject;
-  private agentCentres: WebGLBuffer;
-  private agentColors: WebGLBuffer;
   private cubeVao: WebGLVertexArrayObject;
   private cubeOffsets: WebGLBuffer;
   private cubeColors: WebGLBuffer;
@@ -156,6 +136,10 @@ export class WebGL2Renderer implements Renderer {
   private gridBuffer: WebGLBuffer;
   private gridCount = 0;
   private cellTex: WebGLTexture;
+  private agentTex: WebGLTexture;
+  private agentPaletteTex: WebGLTexture;
+  /** Agent kind + 1 per cell, rebuilt each frame from the agent list. */
+  private agentCells = new Uint8Array(0);
   private fieldTex: WebGLTexture;
   private paletteTex: WebGLTexture;
   private heatTex: WebGLTexture;
@@ -166,7 +150,6 @@ export class WebGL2Renderer implements Renderer {
 
   private constructor(private readonly canvas: HTMLCanvasElement, private readonly gl: WebGL2RenderingContext) {
     this.planar = link(gl, PLANAR_VS, PLANAR_FS);
-    this.agents = link(gl, AGENT_VS, AGENT_FS);
     this.cubes = link(gl, CUBE_VS, CUBE_FS);
     this.lines = link(gl, LINE_VS, LINE_FS);
 
@@ -176,19 +159,6 @@ export class WebGL2Renderer implements Renderer {
     gl.bindBuffer(gl.ARRAY_BUFFER, quadBuf);
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
     attribute(gl, this.planar.attrib('a_pos'), 2, gl.FLOAT, false, 0);
-
-    this.agentVao = gl.createVertexArray()!;
-    gl.bindVertexArray(this.agentVao);
-    const corners = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, corners);
-    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, -1, 1, 1, -1, 1, 1]), gl.STATIC_DRAW);
-    attribute(gl, this.agents.attrib('a_corner'), 2, gl.FLOAT, false, 0);
-    this.agentCentres = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.agentCentres);
-    attribute(gl, this.agents.attrib('a_centre'), 2, gl.FLOAT, false, 1);
-    this.agentColors = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.agentColors);
-    attribute(gl, this.agents.attrib('a_color'), 4, gl.UNSIGNED_BYTE, true, 1);
 
     this.cubeVao = gl.createVertexArray()!;
     gl.bindVertexArray(this.cubeVao);
@@ -217,6 +187,8 @@ export class WebGL2Renderer implements Renderer {
     gl.bindVertexArray(null);
 
     this.cellTex = texture(gl);
+    this.agentTex = texture(gl);
+    this.agentPaletteTex = texture(gl);
     this.fieldTex = texture(gl);
     this.paletteTex = texture(gl);
     this.heatTex = texture(gl);
@@ -242,11 +214,16 @@ export class WebGL2Renderer implements Renderer {
     this.agentPalette = legendTable(layout.agents);
     gl.bindTexture(gl.TEXTURE_2D, this.paletteTex);
     gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, this.palette);
+    gl.bindTexture(gl.TEXTURE_2D, this.agentPaletteTex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, this.agentPalette);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     const [w, h] = layout.dims;
     if (layout.lattice !== 'cubic') {
       gl.bindTexture(gl.TEXTURE_2D, this.cellTex);
       gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8UI, w, h, 0, gl.RED_INTEGER, gl.UNSIGNED_BYTE, null);
+      gl.bindTexture(gl.TEXTURE_2D, this.agentTex);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8UI, w, h, 0, gl.RED_INTEGER, gl.UNSIGNED_BYTE, null);
+      this.agentCells = new Uint8Array(w * h);
       gl.bindTexture(gl.TEXTURE_2D, this.fieldTex);
       gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, w, h, 0, gl.RED, gl.FLOAT, null);
     } else {
@@ -290,6 +267,15 @@ export class WebGL2Renderer implements Renderer {
     if (scene.overlay) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RED, gl.FLOAT, scene.overlay.data);
     gl.activeTexture(gl.TEXTURE3);
     gl.bindTexture(gl.TEXTURE_2D, this.heatTex);
+    const list = scene.frame.agents;
+    const agentCells = this.agentCells;
+    agentCells.fill(0);
+    for (let k = 0; k + 1 < list.length; k += 2) agentCells[list[k]] = list[k + 1] + 1;
+    gl.activeTexture(gl.TEXTURE4);
+    gl.bindTexture(gl.TEXTURE_2D, this.agentTex);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, w, h, gl.RED_INTEGER, gl.UNSIGNED_BYTE, agentCells);
+    gl.activeTexture(gl.TEXTURE5);
+    gl.bindTexture(gl.TEXTURE_2D, this.agentPaletteTex);
 
     const p = this.planar;
     gl.useProgram(p.program);
@@ -297,6 +283,8 @@ export class WebGL2Renderer implements Renderer {
     gl.uniform1i(p.uniform('u_palette'), 1);
     gl.uniform1i(p.uniform('u_field'), 2);
     gl.uniform1i(p.uniform('u_heat'), 3);
+    gl.uniform1i(p.uniform('u_agents'), 4);
+    gl.uniform1i(p.uniform('u_agentPalette'), 5);
     gl.uniform2f(p.uniform('u_viewport'), canvas.width, canvas.height);
     gl.uniform3f(p.uniform('u_cam'), cam.cx, cam.cy, cam.scale * dpr);
     gl.uniform2i(p.uniform('u_dims'), w, h);
@@ -306,33 +294,6 @@ export class WebGL2Renderer implements Renderer {
     gl.bindVertexArray(this.quad);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
 
-    const list = scene.frame.agents;
-    const n = list.length >> 1;
-    if (n > 0) {
-      const centres = new Float32Array(n * 2);
-      const colors = new Uint8Array(n * 4);
-      for (let k = 0; k < n; k++) {
-        const cell = list[2 * k];
-        const [x, y] = cellCentre(scene.layout.lattice, cell % w, Math.floor(cell / w));
-        centres[2 * k] = x;
-        centres[2 * k + 1] = y;
-        colors.set(this.agentPalette.subarray(list[2 * k + 1] * 4, list[2 * k + 1] * 4 + 4), 4 * k);
-      }
-      gl.enable(gl.BLEND);
-      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-      const a = this.agents;
-      gl.useProgram(a.program);
-      gl.uniform2f(a.uniform('u_viewport'), canvas.width, canvas.height);
-      gl.uniform3f(a.uniform('u_cam'), cam.cx, cam.cy, cam.scale * dpr);
-      gl.uniform1f(a.uniform('u_radius'), Math.max(1.5 * dpr, cam.scale * dpr * 0.36));
-      gl.bindVertexArray(this.agentVao);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.agentCentres);
-      gl.bufferData(gl.ARRAY_BUFFER, centres, gl.STREAM_DRAW);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.agentColors);
-      gl.bufferData(gl.ARRAY_BUFFER, colors, gl.STREAM_DRAW);
-      gl.drawArraysInstanced(gl.TRIANGLES, 0, 6, n);
-      gl.disable(gl.BLEND);
-    }
     gl.bindVertexArray(null);
   }
 
