@@ -214,7 +214,8 @@ function renderMetrics(metrics: Metrics) {
     const numeric = names.filter((n) => typeof metrics[n] === 'number');
     clear(chartSelect);
     for (const n of numeric) chartSelect.append(el('option', { value: n, text: n.replace(/_/g, ' ') }));
-    const want = numeric.includes(prefs.chartMetric) ? prefs.chartMetric : numeric[0] ?? '';
+    const preferred = layout && numeric.includes(layout.chart) ? layout.chart : numeric[0] ?? '';
+    const want = numeric.includes(prefs.chartMetric) ? prefs.chartMetric : preferred;
     chartSelect.value = want;
     if (want !== prefs.chartMetric) {
       prefs.chartMetric = want;

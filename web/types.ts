@@ -31,6 +31,8 @@ export interface Layout {
   tools: ToolInfo[];
   /** Legend names are short labels worth writing on each cell. */
   cell_labels: boolean;
+  /** The metric charted by default. */
+  chart: string;
 }
 
 export type Metrics = Record<string, number | boolean | string | null>;

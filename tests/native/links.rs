@@ -72,7 +72,10 @@ fn canonical_scenarios_state_every_default() {
     // so every link, writes them out.
     let s = presets::scenario("fracta-triangle10").unwrap();
     for key in ["K", "L", "G", "I_th"] {
-        assert!(s.body.contains_key(key), "{key} missing from the canonical scenario");
+        assert!(
+            s.body.contains_key(key),
+            "{key} missing from the canonical scenario"
+        );
     }
     // Reading the canonical form again changes nothing.
     let again = kumiki_core::Scenario::from_json(&s.to_json()).unwrap();

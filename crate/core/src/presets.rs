@@ -69,6 +69,22 @@ mod tests {
     }
 
     #[test]
+    fn every_layout_names_a_numeric_chart_metric_and_served_fields() {
+        for name in names() {
+            let run = crate::Run::new(scenario(name).unwrap()).unwrap();
+            let (layout, metrics) = (run.model().layout(), run.model().metrics());
+            assert!(
+                metrics.get(&layout.chart).is_some_and(|v| v.is_number()),
+                "{name}: chart metric '{}' is not a numeric metric",
+                layout.chart
+            );
+            for f in &layout.fields {
+                assert!(run.model().field(&f.name).is_some(), "{name}: field {} is not served", f.name);
+            }
+        }
+    }
+
+    #[test]
     fn every_experiment_is_valid() {
         for name in experiment_names() {
             let e = crate::experiment::Experiment::from_json(experiment_json(name).unwrap())

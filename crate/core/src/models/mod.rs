@@ -77,6 +77,8 @@ pub struct Layout {
     /// The cell legend's names are short labels (connection types) worth writing on each cell
     /// when it is drawn large enough.
     pub cell_labels: bool,
+    /// The metric worth charting against step by default.
+    pub chart: String,
 }
 
 /// Optional scene information for 3-D views, beyond the cells. Models without any return the

@@ -1152,6 +1152,7 @@ impl Model for Amas {
                 },
             ],
             cell_labels: false,
+            chart: "built".into(),
         }
     }
 

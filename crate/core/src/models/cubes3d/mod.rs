@@ -911,6 +911,7 @@ impl Model for Cubes {
             fields,
             tools,
             cell_labels: true,
+            chart: "mean_difference".into(),
         }
     }
 
