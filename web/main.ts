@@ -517,6 +517,7 @@ function selectTab(name: string, focus = false) {
     if (on && focus) tab.focus();
   }
   prefs.tab = name;
+  document.body.dataset.tab = name;
   persistPrefs();
   chart.render();
 }

@@ -113,7 +113,8 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
   new uPlot(
     {
       width,
-      height: 240,
+      height: 260,
+      legend: { show: false },
       scales: { x: { time: false }, y: spec.log_y ? { distr: 3 } : {} },
       axes: [{ label: str(spec, 'x_label', xLabel) }, { label: str(spec, 'y_label', yLabel), size: 64 }],
       series,
@@ -123,6 +124,23 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
     data as uPlot.AlignedData,
     panel,
   );
+  if (lines.length > 1 || lines[0]?.band) legendOf(panel, lines.map((l, i) => [l.label, COLORS[i % COLORS.length]]), lines.some((l) => l.band) ? spreadName(str(spec, 'spread', 'sd')) : '');
+}
+
+function spreadName(spread: string): string {
+  return spread === 'minmax' ? 'bands: min to max' : spread === 'quartiles' ? 'bands: quartiles' : spread === 'sd' ? 'bands: ± one standard deviation' : '';
+}
+
+/** A compact legend: one swatch per line, and what the bands show. */
+function legendOf(panel: HTMLElement, entries: [string, string][], note = '') {
+  const legend = el('div', { class: 'legend' });
+  for (const [label, color] of entries) {
+    const swatch = el('i');
+    swatch.style.background = color;
+    legend.append(el('span', {}, swatch, label));
+  }
+  if (note) legend.append(el('span', { class: 'hint', text: note }));
+  panel.append(legend);
 }
 
 function lines(panel: HTMLElement, spec: Spec, rows: Row[]) {
@@ -134,6 +152,7 @@ function lines(panel: HTMLElement, spec: Spec, rows: Row[]) {
   const out: Line[] = [];
   const groups = seriesPath ? groupBy(rows, (r) => key(valueAt(r, seriesPath))) : new Map([['', rows]]);
   for (const y of ys) {
+    const first = out.length;
     for (const [s, part] of groups) {
       const byX = groupBy(part, (r) => String(num(valueAt(r, x))));
       const st = xs.map((xv) => stats((byX.get(String(xv)) ?? []).map((r) => num(valueAt(r, y)))));
@@ -144,8 +163,17 @@ function lines(panel: HTMLElement, spec: Spec, rows: Row[]) {
         band: spread !== 'none' && spreads.every(Boolean) ? [spreads.map((b) => b![0]), spreads.map((b) => b![1])] : null,
       });
     }
+    // A quantity that does not depend on the series (a bound, say) is one line, not several
+    // drawn on top of each other.
+    const mine = out.slice(first);
+    if (mine.length > 1 && mine.every((l) => sameValues(l, mine[0]))) out.splice(first, mine.length, { ...mine[0], label: short(y), band: null });
   }
   chart(panel, xs, out, spec, short(x), ys.length === 1 ? short(ys[0]) : 'value');
+}
+
+function sameValues(a: Line, b: Line): boolean {
+  const same = (p: number[], q: number[]) => p.length === q.length && p.every((v, i) => v === q[i] || (Number.isNaN(v) && Number.isNaN(q[i])));
+  return same(a.ys, b.ys) && (!a.band || !b.band || (same(a.band[0], b.band[0]) && same(a.band[1], b.band[1])));
 }
 
 function trace(panel: HTMLElement, spec: Spec, rows: Row[]) {
@@ -284,15 +312,7 @@ function bars(panel: HTMLElement, spec: Spec, rows: Row[]) {
   ctx.fillStyle = '#52606d';
   ctx.textAlign = 'center';
   ctx.fillText(str(spec, 'x_label', short(x)), left + plotW / 2, height - 4);
-  if (groups.length > 1 || groups[0][0]) {
-    const legend = el('div', { class: 'legend' });
-    groups.forEach(([name], gi) => {
-      const swatch = el('i');
-      swatch.style.background = COLORS[gi % COLORS.length];
-      legend.append(el('span', {}, swatch, name || short(y)));
-    });
-    panel.append(legend);
-  }
+  if (groups.length > 1 || groups[0][0]) legendOf(panel, groups.map(([name], gi) => [name || short(y), COLORS[gi % COLORS.length]]), spread === 'none' ? '' : spreadName(spread).replace('bands', 'whiskers'));
 }
 
 function summary(box: HTMLElement, spec: Spec, rows: Row[]) {
@@ -317,5 +337,5 @@ function summary(box: HTMLElement, spec: Spec, rows: Row[]) {
     body.append(tr);
   }
   table.append(body);
-  box.append(table);
+  box.append(el('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': 'Summary table' }, table));
 }
