@@ -79,7 +79,11 @@ mod tests {
                 layout.chart
             );
             for f in &layout.fields {
-                assert!(run.model().field(&f.name).is_some(), "{name}: field {} is not served", f.name);
+                assert!(
+                    run.model().field(&f.name).is_some(),
+                    "{name}: field {} is not served",
+                    f.name
+                );
             }
         }
     }

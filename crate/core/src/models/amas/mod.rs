@@ -9,7 +9,7 @@ use serde_json::{json, Map, Value};
 
 use crate::error::Result;
 use crate::hash::StateHasher;
-use crate::lattice::LatticeKind;
+use crate::lattice::{Lattice, LatticeKind, Square};
 use crate::models::{
     self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metrics, Model, ModelEntry,
     ToolInfo,
@@ -1031,25 +1031,13 @@ fn bounds(target: &[bool], initial: &[bool], w: usize, sh: usize, robots: u64) -
             queue.push_back(i);
         }
     }
+    let lattice = Square::new(w as u32, sh as u32);
     while let Some(i) = queue.pop_front() {
-        let (x, y) = (i % w, i / w);
-        let mut visit = |j: usize| {
+        for j in lattice.neighbours(i) {
             if target[j] && dist[j] == u32::MAX {
                 dist[j] = dist[i] + 1;
                 queue.push_back(j);
             }
-        };
-        if x + 1 < w {
-            visit(i + 1);
-        }
-        if x > 0 {
-            visit(i - 1);
-        }
-        if y > 0 {
-            visit(i - w);
-        }
-        if y + 1 < sh {
-            visit(i + w);
         }
     }
     let (mut sum_v, mut max_v, mut sum_p, mut max_p) = (0u64, 0u64, 0u64, 0u64);

@@ -4,6 +4,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::error::{Error, Result};
+use crate::lattice::{Lattice, Square};
 use crate::shape::{self, Grid2};
 
 /// The largest lattice side accepted, in cells, supply rows included.
@@ -191,6 +192,7 @@ fn lay(g: &Grid2, w: u32, h: u32) -> Vec<bool> {
 
 /// Cells of `cells` (rows above the supply) that no path inside `cells` joins to the supply.
 fn unreached(cells: &[bool], w: u32, h: u32) -> usize {
+    let lattice = Square::new(w, h);
     let (w, h) = (w as usize, h as usize);
     let mut seen = vec![false; cells.len()];
     let mut stack: Vec<usize> = (0..w)
@@ -201,24 +203,11 @@ fn unreached(cells: &[bool], w: u32, h: u32) -> usize {
         seen[i] = true;
     }
     while let Some(i) = stack.pop() {
-        let (x, y) = (i % w, i / w);
-        let mut visit = |j: usize| {
+        for j in lattice.neighbours(i) {
             if cells[j] && !seen[j] {
                 seen[j] = true;
                 stack.push(j);
             }
-        };
-        if x + 1 < w {
-            visit(i + 1);
-        }
-        if x > 0 {
-            visit(i - 1);
-        }
-        if y > 0 {
-            visit(i - w);
-        }
-        if y + 1 < h {
-            visit(i + w);
         }
     }
     cells.iter().zip(&seen).filter(|(&c, &s)| c && !s).count()

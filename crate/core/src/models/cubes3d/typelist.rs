@@ -7,6 +7,7 @@ use std::fmt;
 
 use super::types::{self, CODES, NAMES, TYPE_OF_MASK, VALENCE};
 use crate::error::{Error, Result};
+use crate::lattice::Cubic;
 use crate::shape::Grid3;
 
 /// The most type-lists one description may hold.
@@ -285,17 +286,14 @@ pub fn parse(text: &str) -> Result<Vec<TypeList>> {
     Ok(set.into_iter().collect())
 }
 
+/// The six face neighbours of `c`, in the lattice's direction order.
+fn around((x, y, z): (i32, i32, i32)) -> [(i32, i32, i32); 6] {
+    Cubic::DIRS.map(|(dx, dy, dz)| (x + dx, y + dy, z + dz))
+}
+
 /// The face set of the unit at `c` among `cells`.
 fn mask_in(cells: &BTreeSet<(i32, i32, i32)>, c: (i32, i32, i32)) -> u8 {
-    let (x, y, z) = c;
-    let around = [
-        (x + 1, y, z),
-        (x - 1, y, z),
-        (x, y + 1, z),
-        (x, y - 1, z),
-        (x, y, z + 1),
-        (x, y, z - 1),
-    ];
+    let around = around(c);
     let mut m = 0;
     for (d, n) in around.iter().enumerate() {
         if cells.contains(n) {
@@ -325,15 +323,7 @@ pub fn describe(units: &[(i32, i32, i32)]) -> Result<Vec<TypeList>> {
                 ),
             ));
         }
-        let (x, y, z) = c;
-        let around = [
-            (x + 1, y, z),
-            (x - 1, y, z),
-            (x, y + 1, z),
-            (x, y - 1, z),
-            (x, y, z + 1),
-            (x, y, z - 1),
-        ];
+        let around = around(c);
         let neighbours = around
             .iter()
             .filter(|n| cells.contains(n))
