@@ -41,6 +41,17 @@ export interface PresetInfo {
   description: string;
 }
 
+/**
+ * What a 3-D view draws beyond the cells (kumiki_core::models::Scene): a target ghost, the light
+ * direction, a ground plane under layer `ground`, and whether adjacent units are bonded.
+ */
+export interface SceneInfo {
+  ghost?: number[];
+  light?: [number, number, number];
+  ground?: number;
+  bonds: boolean;
+}
+
 /** One frame of a running simulation, as the worker sends it. */
 export interface Frame {
   steps: number;
@@ -54,6 +65,8 @@ export interface Frame {
   agents: Uint32Array;
   events: Uint32Array;
   stepsPerSecond: number;
+  /** The model's scene when it changed since the last frame (always in the first after a load), else null. */
+  scene: SceneInfo | null;
 }
 
 export interface ExperimentInfo {
