@@ -1,9 +1,11 @@
 // Model-specific editors by model name, one file each.
 import { amasEditor } from './amas';
+import { cubes3dEditor } from './cubes3d';
 import type { ModelEditor } from './editor';
 
 export type { EditorContext, ModelEditor, MountedEditor } from './editor';
 
 export const modelEditors: Record<string, ModelEditor> = {
   amas: amasEditor,
+  cubes3d: cubes3dEditor,
 };
