@@ -235,6 +235,37 @@ describe('the voxel editor', () => {
     await context.close();
   });
 
+  test('touch: a long press removes a unit, two fingers pinch to zoom', async () => {
+    const { page, context, problems } = await openCubes('cubes-light');
+    await openEditor(page, 8);
+    await page.keyboard.down('Alt');
+    const at = await findInEditor(page, /^remove the unit at .*layer 2$/);
+    await page.keyboard.up('Alt');
+    await page.mouse.move(1, 1);
+    const cdp = await context.newCDPSession(page);
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+    await touch('touchStart', [[at.x, at.y]]);
+    await page.waitForTimeout(800);
+    await touch('touchEnd', []);
+    await page.waitForFunction(() => (JSON.parse(document.querySelector('#scenario-json').value).shape.match(/#/g) || []).length === 7);
+    await page.waitForTimeout(100);
+    assert.equal(await page.getAttribute('.voxel-canvas', 'data-units'), '7', 'the long press removed one unit and the lift added none');
+    await settle(page);
+    const before = await pixels(page, '.voxel-canvas');
+    const box = await page.locator('.voxel-canvas').boundingBox();
+    const cx = box.x + box.width / 2;
+    const cy = box.y + box.height / 2;
+    await touch('touchStart', [[cx - 20, cy], [cx + 20, cy]]);
+    for (let k = 1; k <= 6; k++) await touch('touchMove', [[cx - 20 - 12 * k, cy], [cx + 20 + 12 * k, cy]]);
+    await touch('touchEnd', []);
+    await settle(page);
+    const zoomed = await pixels(page, '.voxel-canvas');
+    assert.ok(colourful(zoomed) > 1.3 * colourful(before), 'spreading two fingers zooms in');
+    assert.equal(await page.getAttribute('.voxel-canvas', 'data-units'), '7', 'a pinch edits nothing');
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
   test('the layer slice shows the layers up to k, or layer k alone', async () => {
     const { page, context, problems } = await openCubes('cubes-light');
     await openEditor(page, 8);

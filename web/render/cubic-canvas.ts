@@ -116,7 +116,7 @@ export class CubicCanvas {
         faces.push({ depth: pr.distance(fc), pts, fill: css([base[0] * shade, base[1] * shade, base[2] * shade, alpha * 255]), stroke });
       }
     };
-    for (let k = 0; k < m.units; k++) {
+    for (const k of m.visible) {
       const c: V3 = [m.unitPos[3 * k], m.unitPos[3 * k + 1], m.unitPos[3 * k + 2]];
       const rgba = m.unitColor.subarray(4 * k, 4 * k + 4);
       cube(c, 1, [rgba[0], rgba[1], rgba[2], 255], 1, true, 'rgba(0,0,0,0.4)');
@@ -206,7 +206,7 @@ export class CubicCanvas {
     const v = pr.view(lamp.at);
     if (v[2] < NEAR) return;
     const [sx, sy] = pr.screen(v);
-    const r = Math.max(4, 0.45 * lamp.size * pr.pixelsPerUnit(v[2]));
+    const r = Math.max(4, 0.4 * lamp.size * pr.pixelsPerUnit(v[2]));
     const glow = ctx.createRadialGradient(sx, sy, r * 0.3, sx, sy, r * 2.2);
     glow.addColorStop(0, 'rgba(255,209,102,0.55)');
     glow.addColorStop(1, 'rgba(255,209,102,0)');

@@ -341,8 +341,9 @@ export class CubicGL {
 
   private upload(m: CubicModel) {
     const unitSize = m.bonds > 0 ? 0.76 : 0.92;
-    this.units.set(m.units, (k, put) => {
-      put([m.unitPos[3 * k] + 0.5, m.unitPos[3 * k + 1] + 0.5, m.unitPos[3 * k + 2] + 0.5], [unitSize, unitSize, unitSize], m.unitColor.subarray(4 * k, 4 * k + 4));
+    this.units.set(m.visible.length, (k, put) => {
+      const u = m.visible[k];
+      put([m.unitPos[3 * u] + 0.5, m.unitPos[3 * u + 1] + 0.5, m.unitPos[3 * u + 2] + 0.5], [unitSize, unitSize, unitSize], m.unitColor.subarray(4 * u, 4 * u + 4));
     });
     const arm = 0.26;
     const reach = 1 - unitSize + 0.08;
@@ -363,8 +364,8 @@ export class CubicGL {
     const lamp = m.lamp;
     if (lamp) {
       const s = lamp.size;
-      this.lampBatch.set(1, (_, put) => put(lamp.at, [0.9 * s, 0.9 * s, 0.9 * s], LAMP));
-      this.haloBatch.set(1, (_, put) => put(lamp.at, [1.9 * s, 1.9 * s, 1.9 * s], LAMP));
+      this.lampBatch.set(1, (_, put) => put(lamp.at, [0.8 * s, 0.8 * s, 0.8 * s], LAMP));
+      this.haloBatch.set(1, (_, put) => put(lamp.at, [1.6 * s, 1.6 * s, 1.6 * s], LAMP));
       // The arrow points from the lamp toward the structure, along the light's travel.
       const d = lamp.dir;
       const shaftLen = 0.9 * s;

@@ -15,6 +15,8 @@ export interface CubicModel {
   unitColor: Uint8Array;
   unitCell: Uint32Array;
   units: number;
+  /** The units that can be seen: not covered on all six faces (indices into the unit arrays). */
+  visible: Uint32Array;
   /** Bonds between face-adjacent units: midpoint and axis (0 x, 1 y, 2 z). */
   bondMid: Float32Array;
   bondAxis: Uint8Array;
@@ -93,6 +95,13 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
   const min: V3 = [Infinity, Infinity, Infinity];
   const max: V3 = [-Infinity, -Infinity, -Infinity];
   const span = o ? Math.max(o.max - o.min, 1e-9) : 1;
+  const [, , d] = dims;
+  const layer = w * h;
+  // A unit covered on all six faces cannot be seen: a solid block draws only its shell.
+  const covered = (i: number, x: number, y: number, z: number) =>
+    x > 0 && x + 1 < w && y > 0 && y + 1 < h && z > 0 && z + 1 < d &&
+    cells[i - 1] !== 0 && cells[i + 1] !== 0 && cells[i - w] !== 0 && cells[i + w] !== 0 && cells[i - layer] !== 0 && cells[i + layer] !== 0;
+  const visible: number[] = [];
   let k = 0;
   for (let i = 0; i < cells.length; i++) {
     const code = cells[i];
@@ -104,6 +113,7 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
     unitPos[3 * k + 1] = y;
     unitPos[3 * k + 2] = z;
     unitCell[k] = i;
+    if (!covered(i, x, y, z)) visible.push(k);
     if (x < min[0]) min[0] = x;
     if (y < min[1]) min[1] = y;
     if (z < min[2]) min[2] = z;
@@ -136,8 +146,11 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
     for (let u = 0; u < n; u++) {
       const i = unitCell[u];
       const c = [unitPos[3 * u], unitPos[3 * u + 1], unitPos[3 * u + 2]];
+      const inner = covered(i, c[0], c[1], c[2]);
       for (let a = 0; a < 3; a++) {
         if (c[a] + 1 >= dims[a] || cells[i + stride[a]] === 0) continue;
+        // A bond between two covered units is buried in the structure.
+        if (inner && covered(i + stride[a], c[0] + (a === 0 ? 1 : 0), c[1] + (a === 1 ? 1 : 0), c[2] + (a === 2 ? 1 : 0))) continue;
         mids.push(c[0] + 0.5 + (a === 0 ? 0.5 : 0), c[1] + 0.5 + (a === 1 ? 0.5 : 0), c[2] + 0.5 + (a === 2 ? 0.5 : 0));
         axes.push(a);
       }
@@ -168,7 +181,17 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
     }
   }
 
-  const lamp = world?.light ? lampPlacement(box ?? { min: [0, 0, 0], max: dims }, world.light) : null;
+  // The lamp stands clear of the units and of the ghost.
+  let around = box ? { min: [...box.min] as V3, max: [...box.max] as V3 } : null;
+  for (const i of ghost) {
+    const c = coordOf(dims, i);
+    around ??= { min: [...c] as V3, max: [c[0] + 1, c[1] + 1, c[2] + 1] };
+    for (let a = 0; a < 3; a++) {
+      around.min[a] = Math.min(around.min[a], c[a]);
+      around.max[a] = Math.max(around.max[a], c[a] + 1);
+    }
+  }
+  const lamp = world?.light ? lampPlacement(around ?? { min: [0, 0, 0], max: dims }, world.light, dims) : null;
 
   return {
     dims,
@@ -176,6 +199,7 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
     unitColor,
     unitCell,
     units: n,
+    visible: Uint32Array.from(visible),
     bondMid: new Float32Array(mids),
     bondAxis: Uint8Array.from(axes),
     bonds: axes.length,
@@ -188,14 +212,16 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
   };
 }
 
-/** The lamp of a light source in direction `dir`: beyond the box, an arrow's length away. */
-export function lampPlacement(b: { min: V3; max: V3 }, dir: V3): CubicModel['lamp'] {
+/**
+ * The lamp of a light source in direction `dir`: beyond the box, an arrow's length away. Its size
+ * follows the space, not the structure, so it does not jump when the structure changes.
+ */
+export function lampPlacement(b: { min: V3; max: V3 }, dir: V3, dims: V3 | [number, number, number]): CubicModel['lamp'] {
   const len = Math.hypot(dir[0], dir[1], dir[2]);
   if (!(len > 0)) return null;
   const d: V3 = [dir[0] / len, dir[1] / len, dir[2] / len];
   const centre: V3 = [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2, (b.min[2] + b.max[2]) / 2];
-  const radius = Math.hypot(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]) / 2;
-  const size = Math.max(1, Math.min(4, radius / 2));
+  const size = Math.max(1, Math.min(4, Math.max(dims[0], dims[1], dims[2]) / 24));
   // Half the box's extent along the light, then a gap, the arrow and the lamp itself.
   const half = (Math.abs(d[0]) * (b.max[0] - b.min[0]) + Math.abs(d[1]) * (b.max[1] - b.min[1]) + Math.abs(d[2]) * (b.max[2] - b.min[2])) / 2;
   const reach = half + 0.9 + 2.4 * size;

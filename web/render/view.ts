@@ -112,7 +112,7 @@ export class View {
       const box = occupiedBox(this.layout.dims, this.frame.cells, this.marks.ghost === false ? [] : this.world?.ghost ?? []);
       if (box) {
         // The lamp of a light source is part of the picture.
-        const lamp = this.world?.light ? lampPlacement(box, this.world.light) : null;
+        const lamp = this.world?.light ? lampPlacement(box, this.world.light, this.layout.dims) : null;
         if (lamp) {
           const r = lamp.size * 0.9;
           for (let a = 0; a < 3; a++) {
