@@ -370,7 +370,7 @@ describe('the type-list editor', () => {
   });
 });
 
-test('on a tablet (820×1180) the 3-D view and the editors fit without sideways scrolling', async () => {
+test('on a tablet (820×1180) the 3-D view and the editors fit without sideways scrolling, every control named', async () => {
   const { page, context, problems } = await openCubes('cubes-light', { width: 820, height: 1180 });
   await openEditor(page, 8);
   const m = await page.evaluate(() => ({
@@ -383,6 +383,12 @@ test('on a tablet (820×1180) the 3-D view and the editors fit without sideways 
   assert.ok(m.view >= 400, `the 3-D view is ${m.view}px tall`);
   assert.ok(m.editor.width >= 300 && m.editor.right <= m.width, `the editor is ${m.editor.width}px wide`);
   assert.ok(m.editor.height >= 220, `the editor is ${m.editor.height}px tall`);
+  const unnamed = await page.evaluate(() =>
+    [...document.querySelectorAll('#model-editor :is(button, input, select, textarea, canvas, [role="radio"])')]
+      .filter((e) => !(e.getAttribute('aria-label') || e.labels?.length || (e.tagName === 'BUTTON' && e.textContent.trim())))
+      .map((e) => e.outerHTML.slice(0, 80)),
+  );
+  assert.deepEqual(unnamed, [], 'every control of the editors has an accessible name');
   assert.deepEqual(problems, []);
   await context.close();
 });
