@@ -10,6 +10,7 @@ import { byId, clear, download, el, formatNumber, typingIn } from './ui/dom';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { renderParams } from './ui/params';
+import { Probe, reachOf, type Facts } from './ui/probe';
 import * as core from './wasm';
 
 const SPEEDS = [1, 3, 10, 30, 100, 300, 1000, 10000, Infinity];
@@ -61,6 +62,7 @@ const sim = new SimClient({
     scenario = json;
     view.setLayout(newLayout);
     if (shapeChanged) view.fit();
+    clearSelection();
     renderRunPanel();
     renderScenarioPanel();
     chart.reset(prefs.chartMetric);
@@ -71,6 +73,7 @@ const sim = new SimClient({
     framesDrawn++;
     view.setFrame(frame);
     showFrame(frame);
+    refreshProbes();
   },
   playing(on) {
     playing = on;
@@ -250,8 +253,20 @@ labels.addEventListener('change', () => {
   view.request();
 });
 
+const showGhost = byId<HTMLInputElement>('show-ghost');
+const showBonds = byId<HTMLInputElement>('show-bonds');
+showGhost.addEventListener('change', () => {
+  view.marks.ghost = showGhost.checked;
+  view.request();
+});
+showBonds.addEventListener('change', () => {
+  view.marks.bonds = showBonds.checked;
+  view.request();
+});
+
 function renderRunPanel() {
   if (!layout) return;
+  byId('view3d-options').hidden = layout.lattice !== 'cubic';
   clear(overlay);
   overlay.append(el('option', { value: '', text: 'none' }));
   for (const f of layout.fields) overlay.append(el('option', { value: f.name, text: f.label }));
@@ -299,14 +314,23 @@ function renderDisturbanceNote() {
 }
 
 async function clickCell(cell: number, hit: Hit | null) {
-  if (cell < 0 || !layout) return;
+  if (!layout) return;
+  if (cell < 0) {
+    if (layout.lattice === 'cubic' && tool === 'inspect') {
+      clearSelection();
+      showReach();
+    }
+    return;
+  }
   const t = layout.tools.find((x) => x.name === tool);
   if (t) {
-    sim.apply({ ...t.action, cells: [cell] });
+    // In 3-D an added unit goes on the clicked face, in the empty cell in front of it.
+    const target = t.action.kind === 'add' && hit && hit.front >= 0 ? hit.front : cell;
+    sim.apply({ ...t.action, cells: [target] });
     return;
   }
   const facts = await sim.inspect(cell);
-  showInspector(cell, facts, hit);
+  showInspector(cell, facts);
 }
 
 const inspector = byId('inspector');
@@ -326,21 +350,78 @@ function coords(cell: number): string {
 function showHover(cell: number) {
   if (cell < 0) {
     inspector.hidden = true;
-    return;
+  } else {
+    inspector.hidden = false;
+    inspector.replaceChildren(el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) })));
   }
-  inspector.hidden = false;
-  inspector.replaceChildren(el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) })));
+  if (layout?.lattice === 'cubic') hoverProbe.request(cell);
 }
-function showInspector(cell: number, facts: Record<string, unknown>, hit: Hit | null) {
+
+// In 3-D the unit under the pointer (else the selected one) shows where it could move: the worker
+// is asked, throttled, and its answer drawn as highlighted cells with the difference at each.
+let hoverReach: ReturnType<typeof reachOf> = null;
+let selectReach: ReturnType<typeof reachOf> = null;
+const hoverProbe = new Probe(
+  (cell) => sim.inspect(cell),
+  (cell, facts) => {
+    if (cell !== view.marks.hover) return;
+    hoverReach = reachOf(facts);
+    if (facts && cell >= 0) showHoverFacts(cell, facts);
+    showReach();
+  },
+);
+const selectProbe = new Probe(
+  (cell) => sim.inspect(cell),
+  (cell, facts) => {
+    if (cell !== view.marks.selected) return;
+    // The selected unit moved away: the selection ends with it.
+    if (facts && facts.unit !== true) view.marks.selected = -1;
+    selectReach = reachOf(facts);
+    showReach();
+  },
+);
+function showReach() {
+  const reach = hoverReach ?? selectReach;
+  view.marks.highlight = reach?.cells ?? [];
+  view.marks.highlightValues = reach?.values ?? [];
+  view.request();
+}
+function showHoverFacts(cell: number, facts: Facts) {
+  const dl = el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
+  if (typeof facts.type_list === 'string') dl.append(el('dt', { text: 'type-list' }), el('dd', { text: facts.type_list }));
+  if (typeof facts.difference === 'number') dl.append(el('dt', { text: 'difference' }), el('dd', { text: formatNumber(facts.difference) }));
+  if (Array.isArray(facts.reachable)) dl.append(el('dt', { text: 'reachable' }), el('dd', { text: facts.movable === false ? 'cannot move' : `${facts.reachable.length} position${facts.reachable.length === 1 ? '' : 's'}` }));
+  inspector.hidden = false;
+  inspector.replaceChildren(dl);
+}
+function refreshProbes() {
+  if (layout?.lattice !== 'cubic') return;
+  if (view.marks.hover >= 0) hoverProbe.request(view.marks.hover);
+  if ((view.marks.selected ?? -1) >= 0) selectProbe.request(view.marks.selected ?? -1);
+}
+function clearSelection() {
+  view.marks.selected = -1;
+  view.marks.highlight = [];
+  view.marks.highlightValues = [];
+  hoverReach = null;
+  selectReach = null;
+}
+function showInspector(cell: number, facts: Record<string, unknown>) {
   const dl = el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
   for (const [k, v] of Object.entries(facts)) {
     dl.append(el('dt', { text: k.replace(/_/g, ' ') }), el('dd', { text: typeof v === 'object' ? JSON.stringify(v) : formatNumber(v) }));
   }
   inspector.hidden = false;
   inspector.replaceChildren(dl);
-  const reach = facts.reachable;
-  view.marks.highlight = Array.isArray(reach) ? (reach.filter((x) => typeof x === 'number') as number[]) : [];
-  void hit;
+  const reach = reachOf(facts);
+  if (layout?.lattice === 'cubic') {
+    view.marks.selected = facts.unit === true ? cell : -1;
+    selectReach = reach;
+    showReach();
+    return;
+  }
+  const list = facts.reachable;
+  view.marks.highlight = Array.isArray(list) ? (list.filter((x) => typeof x === 'number') as number[]) : [];
   view.request();
 }
 

@@ -44,6 +44,16 @@ export interface PresetInfo {
   description: string;
 }
 
+/**
+ * What a 3-D view draws beyond the cells (kumiki_core::models::Scene): a target ghost, the light
+ * direction, and a ground plane under layer `ground`. Bonds come with each frame.
+ */
+export interface SceneInfo {
+  ghost?: number[];
+  light?: [number, number, number];
+  ground?: number;
+}
+
 /** One frame of a running simulation, as the worker sends it. */
 export interface Frame {
   steps: number;
@@ -59,6 +69,8 @@ export interface Frame {
   /** One bit mask per cell (bit d: bonded to the neighbour in direction d), or null. */
   bonds: Uint8Array | null;
   stepsPerSecond: number;
+  /** The model's scene when it changed since the last frame (always in the first after a load), else null. */
+  scene: SceneInfo | null;
 }
 
 export interface ExperimentInfo {

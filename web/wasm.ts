@@ -44,3 +44,10 @@ export const experimentInfo = (json: string): ExperimentInfo => {
     runner.free();
   }
 };
+
+/**
+ * A model's helper call (see `models::query` in the core), for instance deriving the type-lists of
+ * a cubic shape. Throws with the core's message, which names the argument and the problem.
+ */
+export const modelQuery = <T = Record<string, unknown>>(model: string, name: string, args: Record<string, unknown>): T =>
+  JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;

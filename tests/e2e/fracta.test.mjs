@@ -28,13 +28,21 @@ test('fracta draws hexagons with bonds and type labels, and runs', async () => {
   const legend = await page.$$eval('#legend span', (s) => s.map((x) => x.textContent));
   assert.ok(legend.includes('K') && legend.includes('o') && legend.includes('s'), legend.join(','));
   // Labels are drawn on the annotation layer only when the structure is large on screen.
-  const inked = await page.$eval('#annotations', (c) => {
+  const inked = () =>
+    page.$eval('#annotations', (c) => {
+      const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
+      return n;
+    });
+  await page.waitForFunction(() => {
+    const c = document.querySelector('#annotations');
     const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
-    return n;
+    for (let i = 3; i < data.length; i += 4) if (data[i] > 0) return true;
+    return false;
   });
-  assert.ok(inked > 500, `the annotation layer drew ${inked} pixels of bonds and labels`);
+  const n = await inked();
+  assert.ok(n > 500, `the annotation layer drew ${n} pixels of bonds and labels`);
   await page.click('#play');
   await waitForSteps(page, 10);
   await page.click('#play');

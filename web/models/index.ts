@@ -1,11 +1,13 @@
 // Model-specific editors by model name, one file each.
 import { amasEditor } from './amas';
-import { fractaEditor } from './fracta';
+import { cubes3dEditor } from './cubes3d';
 import type { ModelEditor } from './editor';
+import { fractaEditor } from './fracta';
 
 export type { EditorContext, ModelEditor, MountedEditor } from './editor';
 
 export const modelEditors: Record<string, ModelEditor> = {
   amas: amasEditor,
+  cubes3d: cubes3dEditor,
   fracta: fractaEditor,
 };

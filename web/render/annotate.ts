@@ -1,7 +1,7 @@
 // The annotation layer, drawn with Canvas 2D over either renderer: events of the last step,
 // gradient arrows, cell labels, the hovered cell and highlighted cells. Only what is visible and
 // large enough to read is drawn.
-import type { Camera2D } from './camera';
+import type { Camera2D, Camera3D } from './camera';
 import { HEX_RADIUS, cellCentre, hexCorners, neighbours } from './geometry';
 import type { Scene } from './renderer';
 
@@ -10,6 +10,15 @@ export interface Marks {
   labels: boolean;
   hover: number;
   highlight: number[];
+  /** A value per highlighted cell (the difference at a reachable position), labelled in 3-D. */
+  highlightValues?: number[];
+  /** The cell picked with the inspector, outlined. */
+  selected?: number;
+  /** An editing cursor in 3-D: where a unit would be added or removed, or the keyboard cursor. */
+  cursor?: { cell: number; kind: 'add' | 'remove' | 'cursor' } | null;
+  /** 3-D view options (default on). */
+  ghost?: boolean;
+  bonds?: boolean;
 }
 
 const MAX_VISIBLE = 40000;
@@ -18,7 +27,11 @@ export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scen
   const { canvas } = ctx;
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.clearRect(0, 0, canvas.width, canvas.height);
-  if (scene.camera.kind !== '2d') return;
+  if (scene.camera.kind !== '2d') {
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    labelReach(ctx, scene, scene.camera, marks);
+    return;
+  }
   const cam = scene.camera;
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   const { layout, frame } = scene;
@@ -170,4 +183,28 @@ function arrow(ctx: CanvasRenderingContext2D, [ax, ay]: [number, number], [bx, b
   ctx.lineTo(ex - ux * head + uy * head * 0.7, ey - uy * head - ux * head * 0.7);
   ctx.closePath();
   ctx.fill();
+}
+
+/** In 3-D: the difference a unit would have at each highlighted (reachable) cell. */
+function labelReach(ctx: CanvasRenderingContext2D, scene: Scene, cam: Camera3D, marks: Marks) {
+  const values = marks.highlightValues;
+  if (!marks.labels || !values || !values.length || marks.highlight.length > 64) return;
+  const [w, h] = scene.layout.dims;
+  ctx.font = '600 12px system-ui, sans-serif';
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  marks.highlight.forEach((i, k) => {
+    const v = values[k];
+    if (!Number.isFinite(v)) return;
+    const p = cam.project((i % w) + 0.5, (Math.floor(i / w) % h) + 0.5, Math.floor(i / (w * h)) + 0.5);
+    if (!p) return;
+    const text = `D ${Number(v.toPrecision(3))}`;
+    const width = ctx.measureText(text).width + 8;
+    ctx.fillStyle = 'rgba(27,35,44,0.82)';
+    ctx.beginPath();
+    ctx.roundRect(p[0] - width / 2, p[1] - 9, width, 18, 4);
+    ctx.fill();
+    ctx.fillStyle = '#f0b429';
+    ctx.fillText(text, p[0], p[1]);
+  });
 }

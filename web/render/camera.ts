@@ -92,6 +92,43 @@ export class Camera3D {
     this.distance = (radius / Math.sin(this.fov / 2)) * 0.9;
   }
 
+  /** Looks at the centre of a world box from the current direction, close enough to fill the view. */
+  fitBox(min: [number, number, number], max: [number, number, number], margin = 1.08) {
+    this.target = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
+    const radius = Math.max(0.75, Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]) / 2);
+    const aspect = this.width / Math.max(1, this.height);
+    const half = Math.min(this.fov / 2, Math.atan(Math.tan(this.fov / 2) * aspect));
+    this.distance = Math.min(2000, Math.max(1.5, (radius / Math.sin(half)) * margin));
+  }
+
+  /** Back to the default viewing direction. */
+  resetOrientation() {
+    this.yaw = Math.PI / 4;
+    this.pitch = 0.6;
+  }
+
+  /** Screen position (CSS pixels) and eye distance of a world point, or null behind the eye. */
+  project(x: number, y: number, z: number): [number, number, number] | null {
+    const { f, right, up, eye } = this.basis();
+    const d: V3 = [x - eye[0], y - eye[1], z - eye[2]];
+    const depth = dot(d, f);
+    if (depth <= 1e-6) return null;
+    const t = Math.tan(this.fov / 2);
+    const aspect = this.width / Math.max(1, this.height);
+    const nx = dot(d, right) / (depth * t * aspect);
+    const ny = dot(d, up) / (depth * t);
+    return [((nx + 1) / 2) * this.width, ((1 - ny) / 2) * this.height, depth];
+  }
+
+  /** Where the ray through a screen point meets the horizontal plane at height z, or null. */
+  hitPlaneZ(sx: number, sy: number, z: number): [number, number] | null {
+    const { origin, dir } = this.ray(sx, sy);
+    if (Math.abs(dir[2]) < 1e-9) return null;
+    const t = (z - origin[2]) / dir[2];
+    if (t <= 0) return null;
+    return [origin[0] + dir[0] * t, origin[1] + dir[1] * t];
+  }
+
   eye(): [number, number, number] {
     const cp = Math.cos(this.pitch);
     return [
@@ -208,6 +245,26 @@ export type Camera = Camera2D | Camera3D;
 export function fitCamera(camera: Camera, layout: Layout) {
   if (camera.kind === '2d') camera.fit(worldBounds(layout));
   else camera.fit(layout.dims);
+}
+
+/**
+ * The box around the occupied cells of a cubic lattice and any extra cells (a ghost), in world
+ * units, or null when there are none: what a 3-D camera frames.
+ */
+export function occupiedBox(dims: [number, number, number], cells: ArrayLike<number>, extra: readonly number[] = []): { min: [number, number, number]; max: [number, number, number] } | null {
+  const [w, h] = dims;
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  const take = (i: number) => {
+    const c = [i % w, Math.floor(i / w) % h, Math.floor(i / (w * h))];
+    for (let a = 0; a < 3; a++) {
+      if (c[a] < min[a]) min[a] = c[a];
+      if (c[a] + 1 > max[a]) max[a] = c[a] + 1;
+    }
+  };
+  for (let i = 0; i < cells.length; i++) if (cells[i] !== 0) take(i);
+  for (const i of extra) take(i);
+  return min[0] <= max[0] ? { min, max } : null;
 }
 
 type V3 = [number, number, number];

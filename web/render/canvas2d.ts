@@ -1,7 +1,9 @@
 // Canvas 2D renderer: planar lattices as an image (square) or hexagon paths (hex), the cubic
-// lattice as shaded cube faces in painter's order. The fallback when WebGL2 is unavailable.
+// lattice as shaded cube faces in painter's order (cubic-canvas.ts). The fallback when WebGL2 is
+// unavailable.
 import type { Layout } from '../types';
-import { Camera2D, Camera3D, multiply } from './camera';
+import type { Camera2D, Camera3D } from './camera';
+import { CubicCanvas } from './cubic-canvas';
 import { HEX_RADIUS, cellCentre, hexCorners } from './geometry';
 import { css, heat, legendTable, type RGBA } from './palette';
 import type { Renderer, Scene } from './renderer';
@@ -12,9 +14,9 @@ export class Canvas2DRenderer implements Renderer {
   private imageCanvas: OffscreenCanvas | HTMLCanvasElement | null = null;
   private cellTable = new Uint32Array(256);
   private cellCss: string[] = [];
-  private cellRgba: RGBA[] = [];
   private dpr = 1;
   private agentCss: string[] = [];
+  private cubic: CubicCanvas | null = null;
 
   private constructor(private readonly canvas: HTMLCanvasElement, private readonly ctx: CanvasRenderingContext2D) {}
 
@@ -31,7 +33,6 @@ export class Canvas2DRenderer implements Renderer {
       const [r, g, b, a] = [table[c * 4], table[c * 4 + 1], table[c * 4 + 2], table[c * 4 + 3]];
       this.cellTable[c] = ((a << 24) | (b << 16) | (g << 8) | r) >>> 0;
       this.cellCss[c] = a ? css([r, g, b, a]) : '';
-      this.cellRgba[c] = [r, g, b, a];
     }
     this.agentCss = [];
     for (const a of layout.agents) this.agentCss[a.code] = a.color;
@@ -153,97 +154,13 @@ export class Canvas2DRenderer implements Renderer {
   }
 
   private drawCubic(scene: Scene, cam: Camera3D) {
-    const { ctx } = this;
-    const [w, h, d] = scene.layout.dims;
-    const cells = scene.frame.cells;
-    const vp = multiply(cam.projection(), cam.view());
-    const project = (x: number, y: number, z: number): [number, number, number] => {
-      const cx = vp[0] * x + vp[4] * y + vp[8] * z + vp[12];
-      const cy = vp[1] * x + vp[5] * y + vp[9] * z + vp[13];
-      const cw = vp[3] * x + vp[7] * y + vp[11] * z + vp[15];
-      return [((cx / cw) * 0.5 + 0.5) * cam.width, (0.5 - (cy / cw) * 0.5) * cam.height, cw];
-    };
-    // Ground grid.
-    ctx.strokeStyle = 'rgba(255,255,255,0.12)';
-    ctx.lineWidth = 1;
-    ctx.beginPath();
-    for (let x = 0; x <= w; x++) {
-      const a = project(x, 0, 0);
-      const b = project(x, h, 0);
-      if (a[2] > 0 && b[2] > 0) {
-        ctx.moveTo(a[0], a[1]);
-        ctx.lineTo(b[0], b[1]);
-      }
-    }
-    for (let y = 0; y <= h; y++) {
-      const a = project(0, y, 0);
-      const b = project(w, y, 0);
-      if (a[2] > 0 && b[2] > 0) {
-        ctx.moveTo(a[0], a[1]);
-        ctx.lineTo(b[0], b[1]);
-      }
-    }
-    ctx.stroke();
-    const eye = cam.eye();
-    const occupied = (x: number, y: number, z: number) =>
-      x >= 0 && y >= 0 && z >= 0 && x < w && y < h && z < d && cells[(z * h + y) * w + x] !== 0;
-    const faces: { depth: number; pts: [number, number][]; fill: string }[] = [];
-    const normals: [number, number, number][] = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]];
-    const light = [0.4, 0.25, 0.88];
-    for (let i = 0; i < cells.length; i++) {
-      const code = cells[i];
-      if (code === 0) continue;
-      const x = i % w;
-      const y = Math.floor(i / w) % h;
-      const z = Math.floor(i / (w * h));
-      const base = this.overlayColor(scene, i) ?? this.cellRgba[code];
-      for (const n of normals) {
-        if (occupied(x + n[0], y + n[1], z + n[2])) continue;
-        const fc = [x + 0.5 + n[0] * 0.5, y + 0.5 + n[1] * 0.5, z + 0.5 + n[2] * 0.5];
-        const toEye = [eye[0] - fc[0], eye[1] - fc[1], eye[2] - fc[2]];
-        if (toEye[0] * n[0] + toEye[1] * n[1] + toEye[2] * n[2] <= 0) continue;
-        const corners = faceCorners(x, y, z, n).map(([a, b, c]) => project(a, b, c));
-        if (corners.some((c) => c[2] <= 0)) continue;
-        const shade = 0.45 + 0.55 * Math.max(0, n[0] * light[0] + n[1] * light[1] + n[2] * light[2]);
-        faces.push({
-          depth: Math.hypot(toEye[0], toEye[1], toEye[2]),
-          pts: corners.map((c) => [c[0], c[1]]),
-          fill: css([base[0] * shade, base[1] * shade, base[2] * shade, 255]),
-        });
-      }
-    }
-    faces.sort((a, b) => b.depth - a.depth);
-    ctx.lineWidth = 1;
-    ctx.strokeStyle = 'rgba(0,0,0,0.35)';
-    for (const f of faces) {
-      ctx.beginPath();
-      ctx.moveTo(f.pts[0][0], f.pts[0][1]);
-      for (let k = 1; k < 4; k++) ctx.lineTo(f.pts[k][0], f.pts[k][1]);
-      ctx.closePath();
-      ctx.fillStyle = f.fill;
-      ctx.fill();
-      ctx.stroke();
-    }
+    this.cubic ??= new CubicCanvas();
+    const stats = this.cubic.draw(this.ctx, scene, cam);
+    this.canvas.dataset.scene = JSON.stringify(stats);
   }
 
   destroy() {
     this.image = null;
     this.imageCanvas = null;
   }
-}
-
-/** The four corners of the face of cell (x, y, z) whose outward normal is n. */
-function faceCorners(x: number, y: number, z: number, n: [number, number, number]): [number, number, number][] {
-  const axis = n[0] !== 0 ? 0 : n[1] !== 0 ? 1 : 2;
-  const o = [x, y, z];
-  if ((n as number[])[axis] > 0) o[axis] += 1;
-  const u = axis === 0 ? 1 : 0;
-  const v = axis === 2 ? 1 : 2;
-  const c = (du: number, dv: number): [number, number, number] => {
-    const p = [...o] as [number, number, number];
-    p[u] += du;
-    p[v] += dv;
-    return p;
-  };
-  return [c(0, 0), c(1, 0), c(1, 1), c(0, 1)];
 }

@@ -1,5 +1,6 @@
 // One renderer interface with two implementations, WebGL2 first and Canvas 2D as the fallback.
-import type { Frame, Layout } from '../types';
+import type { Frame, Layout, SceneInfo } from '../types';
+import type { Marks } from './annotate';
 import type { Camera } from './camera';
 
 export type RendererKind = 'webgl2' | 'canvas2d';
@@ -16,6 +17,10 @@ export interface Scene {
   frame: Frame;
   overlay: Overlay | null;
   camera: Camera;
+  /** 3-D extras from the model (ghost, light, ground, bonds), when it has any. */
+  world?: SceneInfo | null;
+  /** Hover, selection, highlighted cells and view options; the 3-D paths draw them in depth. */
+  marks?: Marks;
 }
 
 export interface Renderer {

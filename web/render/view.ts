@@ -1,8 +1,9 @@
 // The lattice view: owns the canvases, the renderer and the camera; turns pointer, wheel, pinch
 // and keyboard input into camera moves and cell clicks; draws at most once per animation frame.
-import type { Frame, Layout } from '../types';
+import type { Frame, Layout, SceneInfo } from '../types';
 import { annotate, type Marks } from './annotate';
-import { Camera2D, Camera3D, type Camera, type Hit, fitCamera } from './camera';
+import { Camera2D, Camera3D, type Camera, type Hit, fitCamera, occupiedBox } from './camera';
+import { lampPlacement } from './cubic-scene';
 import { type Bounds, HEX_RADIUS, cellCentre } from './geometry';
 import { range } from './palette';
 import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
@@ -20,10 +21,11 @@ export class View {
   private camera: Camera = new Camera2D();
   private layout: Layout | null = null;
   private frame: Frame | null = null;
+  private world: SceneInfo | null = null;
+  /** Fit frames what is on the lattice, so after a new lattice it waits for the first frame. */
+  private fitPending = false;
   private overlay: Overlay | null = null;
   private pendingFrame = false;
-  /** Frame the content when the first frame of a new lattice arrives. */
-  private fitOnFrame = false;
   private scheduled = false;
   private cssWidth = 1;
   private cssHeight = 1;
@@ -31,7 +33,8 @@ export class View {
   private readonly pointers = new Map<number, { x: number; y: number }>();
   private dragMoved = 0;
   private pinch = 0;
-  readonly marks: Marks = { arrows: true, labels: true, hover: -1, highlight: [] };
+  private pinchCentre: { x: number; y: number } | null = null;
+  readonly marks: Marks = { arrows: true, labels: true, hover: -1, highlight: [], selected: -1, ghost: true, bonds: true };
   private readonly annotations: CanvasRenderingContext2D;
 
   constructor(
@@ -68,11 +71,12 @@ export class View {
     const sameShape = this.layout && this.layout.lattice === layout.lattice && this.layout.dims.join() === layout.dims.join();
     this.layout = layout;
     this.frame = null;
+    this.world = null;
     if (!sameShape) {
       this.camera = layout.lattice === 'cubic' ? new Camera3D() : new Camera2D();
       this.sizeCamera();
       fitCamera(this.camera, layout);
-      this.fitOnFrame = true;
+      this.fitPending = true;
     }
     this.renderer?.setLayout(layout);
     this.request();
@@ -80,6 +84,8 @@ export class View {
 
   setFrame(frame: Frame) {
     this.frame = frame;
+    if (frame.scene) this.world = frame.scene;
+    if (this.fitPending) this.fit();
     if (frame.field) {
       const [min, max] = range(frame.field.data);
       this.overlay = { name: frame.field.name, data: frame.field.data, min, max };
@@ -87,10 +93,6 @@ export class View {
       this.overlay = null;
     }
     this.pendingFrame = true;
-    if (this.fitOnFrame) {
-      this.fitOnFrame = false;
-      this.fit();
-    }
     this.request();
   }
 
@@ -98,12 +100,39 @@ export class View {
     return this.overlay ? [this.overlay.min, this.overlay.max] : null;
   }
 
-  /** Frames what is on the lattice (with a margin), or the whole lattice when it is empty. */
+  /**
+   * Frames what is on the lattice with a margin: the units (and in 3-D the ghost and the lamp),
+   * or the whole lattice when it is empty. Before the first frame of a run it waits for it.
+   */
   fit() {
     if (!this.layout) return;
-    const content = this.frame && this.camera.kind === '2d' ? contentBounds(this.layout, this.frame.cells) : null;
-    if (content && this.camera.kind === '2d') this.camera.fit(content);
-    else fitCamera(this.camera, this.layout);
+    const c = this.camera;
+    if (!this.frame) {
+      this.fitPending = true;
+      return;
+    }
+    this.fitPending = false;
+    if (c.kind === '3d') {
+      const box = occupiedBox(this.layout.dims, this.frame.cells, this.marks.ghost === false ? [] : this.world?.ghost ?? []);
+      if (box) {
+        // The lamp of a light source is part of the picture.
+        const lamp = this.world?.light ? lampPlacement(box, this.world.light, this.layout.dims) : null;
+        if (lamp) {
+          const r = lamp.size * 0.9;
+          for (let a = 0; a < 3; a++) {
+            box.min[a] = Math.min(box.min[a], lamp.at[a] - r);
+            box.max[a] = Math.max(box.max[a], lamp.at[a] + r);
+          }
+        }
+        c.fitBox(box.min, box.max);
+      } else {
+        fitCamera(c, this.layout);
+      }
+    } else {
+      const content = contentBounds(this.layout, this.frame.cells);
+      if (content) c.fit(content);
+      else fitCamera(c, this.layout);
+    }
     this.request();
   }
 
@@ -123,7 +152,7 @@ export class View {
 
   private draw() {
     if (this.renderer && this.layout && this.frame) {
-      const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera };
+      const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
       this.renderer.draw(scene);
       annotate(this.annotations, this.dpr, scene, this.marks);
     }
@@ -150,8 +179,8 @@ export class View {
     if (c.kind === '2d' && hadSize) {
       c.cx = wx;
       c.cy = wy;
-    } else if (this.layout) {
-      fitCamera(c, this.layout);
+    } else if (this.layout && !(c.kind === '3d' && hadSize)) {
+      this.fit();
     }
     this.renderer?.resize(this.cssWidth, this.cssHeight, this.dpr);
     const a = this.annotations.canvas;
@@ -178,6 +207,7 @@ export class View {
       this.pointers.set(e.pointerId, local(e));
       this.dragMoved = 0;
       this.pinch = this.pinchDistance();
+      this.pinchCentre = this.pinchMiddle();
     });
     canvas.addEventListener('pointermove', (e) => {
       const p = local(e);
@@ -193,9 +223,13 @@ export class View {
       }
       this.pointers.set(e.pointerId, p);
       if (this.pointers.size === 2) {
+        // Two fingers: the spread zooms, the midpoint pans.
         const d = this.pinchDistance();
+        const mid = this.pinchMiddle();
         if (this.pinch > 0 && d > 0) this.camera.zoom(d / this.pinch);
+        if (this.pinchCentre && mid) this.camera.pan(mid.x - this.pinchCentre.x, mid.y - this.pinchCentre.y);
         this.pinch = d;
+        this.pinchCentre = mid;
         this.dragMoved += 10;
       } else {
         const dx = p.x - prev.x;
@@ -214,6 +248,7 @@ export class View {
         this.on.click(cell, hit);
       }
       this.pinch = this.pinchDistance();
+      this.pinchCentre = this.pinchMiddle();
     };
     canvas.addEventListener('pointerup', end);
     canvas.addEventListener('pointercancel', end);
@@ -237,6 +272,22 @@ export class View {
       { passive: false },
     );
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+    // Keyboard: Shift+arrows orbit a 3-D view, Alt+arrows pan (plain arrows stay the page's).
+    canvas.addEventListener('keydown', (e) => {
+      const dir = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
+      if (!dir || !(e.shiftKey || e.altKey) || e.ctrlKey || e.metaKey) return;
+      e.preventDefault();
+      e.stopPropagation();
+      if (e.shiftKey && this.camera.kind === '3d') this.camera.orbit(dir[0] * 24, dir[1] * 24);
+      else this.camera.pan(-dir[0] * 40, -dir[1] * 40);
+      this.request();
+    });
+  }
+
+  private pinchMiddle(): { x: number; y: number } | null {
+    if (this.pointers.size !== 2) return null;
+    const [a, b] = [...this.pointers.values()];
+    return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
   }
 
   private pinchDistance(): number {

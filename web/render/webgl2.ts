@@ -1,9 +1,10 @@
 // WebGL2 renderer. Planar lattices: one full-screen pass that finds each pixel's cell (square or
 // hex) and looks its code and its agent up in two integer textures, so a 1024×1024 lattice with
-// thousands of robots costs two texture uploads and no geometry per frame. Cubic lattice:
-// instanced, lit cubes on a ground grid.
+// thousands of robots costs two texture uploads and no geometry per frame. Cubic lattice: see
+// cubic-gl.ts.
 import type { Layout } from '../types';
-import { Camera2D, Camera3D, multiply } from './camera';
+import type { Camera2D, Camera3D } from './camera';
+import { CubicGL } from './cubic-gl';
 import { heatTable, legendTable } from './palette';
 import type { Renderer, Scene } from './renderer';
 
@@ -85,56 +86,13 @@ void main() {
   outColor = col;
 }`;
 
-const CUBE_VS = `#version 300 es
-in vec3 a_pos;
-in vec3 a_normal;
-in vec3 a_offset;
-in vec4 a_color;
-uniform mat4 u_vp;
-out vec3 v_normal;
-out vec4 v_color;
-void main() {
-  gl_Position = u_vp * vec4(a_pos * 0.94 + a_offset + 0.5, 1.0);
-  v_normal = a_normal;
-  v_color = a_color;
-}`;
-
-const CUBE_FS = `#version 300 es
-precision mediump float;
-in vec3 v_normal;
-in vec4 v_color;
-out vec4 outColor;
-void main() {
-  vec3 light = normalize(vec3(0.4, 0.25, 0.88));
-  float shade = 0.45 + 0.55 * max(dot(normalize(v_normal), light), 0.0);
-  outColor = vec4(v_color.rgb * shade, v_color.a);
-}`;
-
-const LINE_VS = `#version 300 es
-in vec3 a_pos;
-uniform mat4 u_vp;
-void main() { gl_Position = u_vp * vec4(a_pos, 1.0); }`;
-
-const LINE_FS = `#version 300 es
-precision mediump float;
-uniform vec4 u_color;
-out vec4 outColor;
-void main() { outColor = u_color; }`;
-
 type Program = { program: WebGLProgram; uniform: (name: string) => WebGLUniformLocation | null; attrib: (name: string) => number };
 
 export class WebGL2Renderer implements Renderer {
   readonly kind = 'webgl2' as const;
   private planar: Program;
-  private cubes: Program;
-  private lines: Program;
   private quad: WebGLVertexArrayObject;
-  private cubeVao: WebGLVertexArrayObject;
-  private cubeOffsets: WebGLBuffer;
-  private cubeColors: WebGLBuffer;
-  private gridVao: WebGLVertexArrayObject;
-  private gridBuffer: WebGLBuffer;
-  private gridCount = 0;
+  private cubic: CubicGL | null = null;
   private cellTex: WebGLTexture;
   private agentTex: WebGLTexture;
   private agentPaletteTex: WebGLTexture;
@@ -150,8 +108,6 @@ export class WebGL2Renderer implements Renderer {
 
   private constructor(private readonly canvas: HTMLCanvasElement, private readonly gl: WebGL2RenderingContext) {
     this.planar = link(gl, PLANAR_VS, PLANAR_FS);
-    this.cubes = link(gl, CUBE_VS, CUBE_FS);
-    this.lines = link(gl, LINE_VS, LINE_FS);
 
     this.quad = gl.createVertexArray()!;
     gl.bindVertexArray(this.quad);
@@ -160,30 +116,6 @@ export class WebGL2Renderer implements Renderer {
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
     attribute(gl, this.planar.attrib('a_pos'), 2, gl.FLOAT, false, 0);
 
-    this.cubeVao = gl.createVertexArray()!;
-    gl.bindVertexArray(this.cubeVao);
-    const mesh = cubeMesh();
-    const meshBuf = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, meshBuf);
-    gl.bufferData(gl.ARRAY_BUFFER, mesh, gl.STATIC_DRAW);
-    const pos = this.cubes.attrib('a_pos');
-    const nor = this.cubes.attrib('a_normal');
-    gl.enableVertexAttribArray(pos);
-    gl.vertexAttribPointer(pos, 3, gl.FLOAT, false, 24, 0);
-    gl.enableVertexAttribArray(nor);
-    gl.vertexAttribPointer(nor, 3, gl.FLOAT, false, 24, 12);
-    this.cubeOffsets = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeOffsets);
-    attribute(gl, this.cubes.attrib('a_offset'), 3, gl.FLOAT, false, 1);
-    this.cubeColors = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeColors);
-    attribute(gl, this.cubes.attrib('a_color'), 4, gl.UNSIGNED_BYTE, true, 1);
-
-    this.gridVao = gl.createVertexArray()!;
-    gl.bindVertexArray(this.gridVao);
-    this.gridBuffer = gl.createBuffer()!;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.gridBuffer);
-    attribute(gl, this.lines.attrib('a_pos'), 3, gl.FLOAT, false, 0);
     gl.bindVertexArray(null);
 
     this.cellTex = texture(gl);
@@ -227,12 +159,7 @@ export class WebGL2Renderer implements Renderer {
       gl.bindTexture(gl.TEXTURE_2D, this.fieldTex);
       gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, w, h, 0, gl.RED, gl.FLOAT, null);
     } else {
-      const grid: number[] = [];
-      for (let x = 0; x <= w; x++) grid.push(x, 0, 0, x, h, 0);
-      for (let y = 0; y <= h; y++) grid.push(0, y, 0, w, y, 0);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.gridBuffer);
-      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(grid), gl.STATIC_DRAW);
-      this.gridCount = grid.length / 3;
+      this.cubic ??= new CubicGL(gl);
     }
   }
 
@@ -298,57 +225,9 @@ export class WebGL2Renderer implements Renderer {
   }
 
   private drawCubic(scene: Scene, cam: Camera3D) {
-    const { gl } = this;
-    const [w, h] = scene.layout.dims;
-    const cells = scene.frame.cells;
-    const vp = multiply(cam.projection(), cam.view());
-    gl.enable(gl.DEPTH_TEST);
-
-    const l = this.lines;
-    gl.useProgram(l.program);
-    gl.uniformMatrix4fv(l.uniform('u_vp'), false, vp);
-    gl.uniform4f(l.uniform('u_color'), 1, 1, 1, 0.14);
-    gl.enable(gl.BLEND);
-    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-    gl.bindVertexArray(this.gridVao);
-    gl.drawArrays(gl.LINES, 0, this.gridCount);
-    gl.disable(gl.BLEND);
-
-    let n = 0;
-    for (let i = 0; i < cells.length; i++) if (cells[i] !== 0) n++;
-    if (n > 0) {
-      const offsets = new Float32Array(n * 3);
-      const colors = new Uint8Array(n * 4);
-      const o = scene.overlay;
-      const heat = o ? heatTable() : null;
-      let k = 0;
-      for (let i = 0; i < cells.length; i++) {
-        const code = cells[i];
-        if (code === 0) continue;
-        offsets[3 * k] = i % w;
-        offsets[3 * k + 1] = Math.floor(i / w) % h;
-        offsets[3 * k + 2] = Math.floor(i / (w * h));
-        const v = o ? o.data[i] : NaN;
-        if (o && heat && v === v) {
-          const t = Math.round(Math.min(1, Math.max(0, (v - o.min) / Math.max(o.max - o.min, 1e-9))) * 255);
-          colors.set(heat.subarray(t * 4, t * 4 + 4), 4 * k);
-        } else {
-          colors.set(this.palette.subarray(code * 4, code * 4 + 4), 4 * k);
-        }
-        k++;
-      }
-      const c = this.cubes;
-      gl.useProgram(c.program);
-      gl.uniformMatrix4fv(c.uniform('u_vp'), false, vp);
-      gl.bindVertexArray(this.cubeVao);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeOffsets);
-      gl.bufferData(gl.ARRAY_BUFFER, offsets, gl.STREAM_DRAW);
-      gl.bindBuffer(gl.ARRAY_BUFFER, this.cubeColors);
-      gl.bufferData(gl.ARRAY_BUFFER, colors, gl.STREAM_DRAW);
-      gl.drawArraysInstanced(gl.TRIANGLES, 0, 36, n);
-    }
-    gl.bindVertexArray(null);
-    gl.disable(gl.DEPTH_TEST);
+    this.cubic ??= new CubicGL(this.gl);
+    const stats = this.cubic.draw(scene, cam);
+    this.canvas.dataset.scene = JSON.stringify(stats);
   }
 
   destroy() {
@@ -400,23 +279,4 @@ function texture(gl: WebGL2RenderingContext): WebGLTexture {
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
   return tex;
-}
-
-/** 36 vertices of a unit cube centred on the origin: position and normal, interleaved. */
-function cubeMesh(): Float32Array {
-  const out: number[] = [];
-  const faces: [number[], number[], number[]][] = [
-    [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
-    [[-1, 0, 0], [0, 0, 1], [0, 1, 0]],
-    [[0, 1, 0], [0, 0, 1], [1, 0, 0]],
-    [[0, -1, 0], [1, 0, 0], [0, 0, 1]],
-    [[0, 0, 1], [1, 0, 0], [0, 1, 0]],
-    [[0, 0, -1], [0, 1, 0], [1, 0, 0]],
-  ];
-  for (const [n, u, v] of faces) {
-    const corner = (su: number, sv: number) => [0, 1, 2].map((a) => n[a] * 0.5 + u[a] * su * 0.5 + v[a] * sv * 0.5);
-    const quad = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, -1), corner(1, 1), corner(-1, 1)];
-    for (const p of quad) out.push(...p, ...n);
-  }
-  return new Float32Array(out);
 }

@@ -3,7 +3,7 @@
 // fast simulation never floods the page. Timing here paces the run; it never enters the model.
 import init, { Sim, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
 import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
-import type { Frame, Metrics } from '../types';
+import type { Frame, Metrics, SceneInfo } from '../types';
 import type { FromWorker, ToWorker } from './protocol';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -29,6 +29,8 @@ let lastTick = 0;
 let msPerStep = 1;
 let rateWindow: { t: number; steps: number }[] = [];
 let tickScheduled = false;
+/** The scene last sent, as JSON, so frames carry it only when it changed. */
+let lastScene = '';
 
 const channel = new MessageChannel();
 channel.port1.onmessage = () => {
@@ -73,6 +75,10 @@ function sendFrame(force = false) {
     const withHash = !playing || now - lastHashAt >= HASH_EVERY_MS;
     if (withHash) lastHashAt = now;
     const data = overlay ? s.field(overlay) : undefined;
+    const scene = s.scene() as SceneInfo;
+    const sceneJson = JSON.stringify(scene);
+    const sceneChanged = sceneJson !== lastScene;
+    lastScene = sceneJson;
     return {
       steps: s.steps(),
       maxSteps,
@@ -86,6 +92,7 @@ function sendFrame(force = false) {
       events: s.events(),
       bonds: hasBonds ? s.bonds() : null,
       stepsPerSecond: playing ? measuredRate() : 0,
+      scene: sceneChanged ? scene : null,
     };
   });
   if (!frame) return;
@@ -165,6 +172,7 @@ function handle(msg: ToWorker) {
       post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
       post({ type: 'playing', playing: false });
       awaitingAck = false;
+      lastScene = '';
       sendFrame(true);
       return;
     }

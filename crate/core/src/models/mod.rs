@@ -96,8 +96,6 @@ pub struct Scene {
     /// cells); nothing lies below it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ground: Option<u32>,
-    /// Occupied face-adjacent cells are bonded: draw a bond (arm) between every such pair.
-    pub bonds: bool,
 }
 
 /// An agent standing on a cell (a robot on a module).

@@ -911,7 +911,12 @@ impl Model for Cubes {
             fields,
             tools,
             cell_labels: true,
-            chart: "mean_difference".into(),
+            chart: if self.light.is_some() {
+                "displacement"
+            } else {
+                "mean_difference"
+            }
+            .into(),
         }
     }
 
@@ -920,8 +925,21 @@ impl Model for Cubes {
             ghost: self.targets[self.current].ghost.clone(),
             light: self.light.map(|d| DIRS[d].map(|v| v as f32)),
             ground: (self.ground != Ground::Open).then_some(self.floor_z as u32),
-            bonds: true,
         }
+    }
+
+    /// Every pair of face-adjacent units is bonded (a unit connects to all its neighbours).
+    fn bonds(&self) -> Cow<'_, [u8]> {
+        let mut masks = vec![0u8; self.st.len()];
+        for &c in &self.units {
+            let c = c as usize;
+            for d in 0..6 {
+                if self.st.types[self.st.nb(c, d)] != 0 {
+                    masks[c] |= 1 << d;
+                }
+            }
+        }
+        Cow::Owned(masks)
     }
 
     fn step(&mut self) {
