@@ -17,7 +17,7 @@ if (overlay) {
   await page.selectOption('#overlay', overlay);
 }
 await page.$eval('#speed', (s) => {
-  s.value = '7';
+  s.value = '4';
   s.dispatchEvent(new Event('input'));
 });
 await page.click('#play');
