@@ -2,33 +2,21 @@
 // positions), the voxel editor (add, remove, undo, layer slice, keyboard), the type-list editor
 // (errors that name the line, derive from shape), links, the Canvas 2D fallback and a tablet.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { after, before, describe, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
-import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { launch, openPage, serve } from './harness.mjs';
+import { describe, test } from 'node:test';
+import { loadWasm, openPage, session } from './harness.mjs';
 
-wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+const wasm = loadWasm();
 
-let server;
-let browser;
-before(async () => {
-  server = await serve('/');
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const s = session('/');
 
-const linkTo = (preset, edit = (s) => s) => `${server.url}#${wasm.encode_link(JSON.stringify(edit(JSON.parse(wasm.preset_json(preset)))))}`;
+const linkTo = (preset, edit = (s) => s) => `${s.server.url}#${wasm.encode_link(JSON.stringify(edit(JSON.parse(wasm.preset_json(preset)))))}`;
 const scenarioOf = async (page) => JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
 const unitsIn = (shape) => (shape.match(/#/g) ?? []).length;
 const stats = async (page, selector = '#view') => JSON.parse((await page.getAttribute(selector, 'data-scene')) || '{}');
 
 /** Opens a preset and waits until the 3-D view has drawn its units. */
 async function openCubes(preset, options = {}) {
-  const opened = await openPage(browser, linkTo(preset, options.edit), options);
+  const opened = await openPage(s.browser, linkTo(preset, options.edit), options);
   await opened.page.waitForFunction(() => JSON.parse(document.querySelector('#view').dataset.scene || '{}').units > 0);
   return opened;
 }
@@ -356,7 +344,7 @@ describe('the type-list editor', () => {
     await page.click('#copy-link');
     await page.waitForFunction(() => location.hash.startsWith('#k1.'));
     const link = await page.evaluate(() => location.href);
-    const second = await openPage(browser, link);
+    const second = await openPage(s.browser, link);
     const opened = await scenarioOf(second.page);
     assert.equal(opened.shape, edited.shape);
     assert.deepEqual(opened.targets, edited.targets);

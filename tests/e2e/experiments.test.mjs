@@ -1,22 +1,13 @@
 // The Experiments panel: a grid runs on a pool of workers with progress, is plotted and exported.
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
-import { after, before, test } from 'node:test';
-import { launch, openPage, serve } from './harness.mjs';
+import { test } from 'node:test';
+import { openPage, session } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await serve('/');
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const s = session('/');
 
 test('an experiment runs on a worker pool with a progress bar, is plotted, and exports CSV and JSON', async () => {
-  const { page, context, problems } = await openPage(browser, server.url);
+  const { page, context, problems } = await openPage(s.browser, s.server.url);
   await page.click('#tab-experiments');
   const experiment = {
     version: 1,
@@ -56,7 +47,7 @@ test('an experiment runs on a worker pool with a progress bar, is plotted, and e
 });
 
 test('an invalid experiment is refused with a message and nothing runs', async () => {
-  const { page, context } = await openPage(browser, server.url);
+  const { page, context } = await openPage(s.browser, s.server.url);
   await page.click('#tab-experiments');
   await page.$eval('details:has(#experiment-json)', (d) => (d.open = true));
   await page.fill('#experiment-json', '{"version": 1, "name": "x", "scenarios": ["amas-L"], "grid": {"robots": [0]}}');

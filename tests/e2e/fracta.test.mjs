@@ -1,25 +1,13 @@
 // fracta in the page: hexagons with bonds and type labels, the start-shape and statement editors.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
-import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { launch, openPage, serve, waitForSteps } from './harness.mjs';
+import { test } from 'node:test';
+import { loadWasm, openPage, session, waitForSteps } from './harness.mjs';
 
-wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+const wasm = loadWasm();
 
-let server;
-let browser;
-before(async () => {
-  server = await serve('/');
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const s = session('/');
 
-const open = (preset) => openPage(browser, `${server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
+const open = (preset) => openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
 const scenario = async (page) => JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
 
 test('fracta draws hexagons with bonds and type labels, and runs', async () => {

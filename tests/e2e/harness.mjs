@@ -1,10 +1,13 @@
 // Shared pieces of the browser tests: a static server for dist/ (optionally under a sub-path, to
 // prove the build uses relative URLs) and Debian's Chromium driven by playwright-core.
+import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
+import * as wasm from '../../web/pkg/kumiki_wasm.js';
 
 export const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
 const TYPES = {
@@ -87,4 +90,27 @@ export async function stepCount(page) {
 export async function waitForSteps(page, atLeast, timeout = 20000) {
   await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) >= n, atLeast, { timeout });
   return stepCount(page);
+}
+
+/**
+ * One server and one browser for a test file: registers the hooks that start and stop them and
+ * returns an object whose `server` and `browser` are set once the tests run.
+ */
+export function session(prefix = '/') {
+  const s = { server: null, browser: null };
+  before(async () => {
+    s.server = await serve(prefix);
+    s.browser = await launch();
+  });
+  after(async () => {
+    await s.browser?.close();
+    await s.server?.close();
+  });
+  return s;
+}
+
+/** The wasm package, loaded in Node, for tests that build scenarios and links themselves. */
+export function loadWasm() {
+  wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+  return wasm;
 }

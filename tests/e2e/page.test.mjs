@@ -1,24 +1,12 @@
 // The page in headless Chromium: loading, running, keyboard, links, errors, recovery, persistence.
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
-import { after, before, describe, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
-import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { launch, openPage, serve, stepCount, waitForSteps } from './harness.mjs';
+import { describe, test } from 'node:test';
+import { loadWasm, openPage, session, stepCount, waitForSteps } from './harness.mjs';
 
-wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+const wasm = loadWasm();
 
-let server;
-let browser;
-before(async () => {
-  server = await serve('/classroom/kumiki/');
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const s = session('/classroom/kumiki/');
 
 const hashOf = (page) => page.textContent('#state-hash');
 const scenarioJson = (page) => page.$eval('#scenario-json', (t) => t.value);
@@ -29,7 +17,7 @@ async function waitForHashAt(page, steps) {
 
 describe('the page', () => {
   test('loads from a sub-path with no console errors, and shows step 0 and the state hash', async () => {
-    const { page, context, problems } = await openPage(browser, server.url);
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
     assert.equal(await stepCount(page), 0);
     assert.match(await hashOf(page), /^[0-9a-f]{16}$/);
     assert.match(await page.textContent('#scenario-name'), /\S/);
@@ -38,7 +26,7 @@ describe('the page', () => {
   });
 
   test('play advances the step counter and pause stops it', async () => {
-    const { page, context, problems } = await openPage(browser, server.url);
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
     await page.click('#play');
     const reached = await waitForSteps(page, 5);
     assert.ok(reached >= 5);
@@ -52,7 +40,7 @@ describe('the page', () => {
   });
 
   test('keyboard: Right arrow steps, R resets to the identical state, Space plays', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     const initial = await hashOf(page);
     await page.locator('#view').focus();
     for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
@@ -69,7 +57,7 @@ describe('the page', () => {
   });
 
   test('a copied link restores the scenario exactly, gives the same run, and the CLI agrees', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     await page.fill('#seed', '4242');
     await page.dispatchEvent('#seed', 'change');
     await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"seed": 4242'));
@@ -78,7 +66,7 @@ describe('the page', () => {
     const link = await page.evaluate(() => location.href);
     const json = await scenarioJson(page);
 
-    const second = await openPage(browser, link);
+    const second = await openPage(s.browser, link);
     assert.equal(await scenarioJson(second.page), json);
     for (const p of [page, second.page]) {
       await p.selectOption('#speed', { index: 0 }).catch(() => {});
@@ -105,7 +93,7 @@ describe('the page', () => {
   });
 
   test('a malformed link shows a readable message and the page stays usable', async () => {
-    const { page, context } = await openPage(browser, `${server.url}#k1.this-is-not-a-scenario`);
+    const { page, context } = await openPage(s.browser, `${s.server.url}#k1.this-is-not-a-scenario`);
     await page.waitForSelector('#banner:not([hidden])');
     assert.match(await page.textContent('#banner-text'), /could not be opened/);
     assert.match(await page.textContent('#banner-text'), /link:/);
@@ -120,7 +108,7 @@ describe('the page', () => {
     scenario.name = evil;
     scenario.description = evil;
     const link = wasm.encode_link(JSON.stringify(scenario));
-    const { page, context } = await openPage(browser, `${server.url}#${link}`);
+    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`);
     assert.equal(await page.textContent('#scenario-name'), evil);
     assert.equal(await page.$('#injected'), null);
     assert.equal(await page.evaluate(() => document.body.dataset.pwned), undefined);
@@ -128,7 +116,7 @@ describe('the page', () => {
   });
 
   test('a panic in the simulation is shown and the page recovers with the last good scenario', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     const initial = await hashOf(page);
     await page.click('#tab-about');
     await page.click('#simulate-crash');
@@ -143,7 +131,7 @@ describe('the page', () => {
   });
 
   test('an invalid parameter is refused with a message naming the field, and nothing is lost', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     await page.click('#tab-scenario');
     const before = await scenarioJson(page);
     await page.fill('#param-robots', '0');
@@ -156,7 +144,7 @@ describe('the page', () => {
   });
 
   test('edits survive a reload, and undo brings the previous scenario back', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     await page.fill('#seed', '777');
     await page.dispatchEvent('#seed', 'change');
     await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"seed": 777'));
@@ -178,7 +166,7 @@ describe('the page', () => {
   });
 
   test('clicked disturbances are recorded in the link', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     for (let i = 0; i < 60; i++) await page.keyboard.press('ArrowRight');
     await waitForHashAt(page, 60);
     const tools = await page.$$eval('#tools button', (bs) => bs.map((b) => b.dataset.tool));
@@ -200,7 +188,7 @@ describe('the page', () => {
     const rows = Array.from({ length: 300 }, () => '#'.repeat(400)).join('\n');
     const big = { ...JSON.parse(wasm.preset_json('amas-L')), name: 'big', target: rows, robots: 300, max_steps: 1000000 };
     const link = wasm.encode_link(JSON.stringify(big));
-    const { page, context } = await openPage(browser, `${server.url}#${link}`);
+    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`);
     await page.$eval('#speed', (s) => {
       s.value = '8';
       s.dispatchEvent(new Event('input'));
@@ -232,7 +220,7 @@ describe('the page', () => {
   });
 
   test('every control has an accessible name', async () => {
-    const { page, context } = await openPage(browser, server.url);
+    const { page, context } = await openPage(s.browser, s.server.url);
     const unnamed = await page.evaluate(() => {
       const missing = [];
       for (const el of document.querySelectorAll('button, input, select, textarea, [role="tab"], [role="radio"]')) {
@@ -249,7 +237,7 @@ describe('the page', () => {
 
   test('both renderers draw the lattice', async () => {
     for (const kind of ['webgl2', 'canvas2d']) {
-      const { page, context, problems } = await openPage(browser, server.url);
+      const { page, context, problems } = await openPage(s.browser, s.server.url);
       await page.click('#tab-about');
       await page.selectOption('#renderer-choice', kind);
       await page.waitForFunction((k) => document.body.dataset.renderer === k, kind);
@@ -274,7 +262,7 @@ describe('the page', () => {
   });
 
   test('on a small phone nothing overlaps: the run controls can be pressed', async () => {
-    const { page, context } = await openPage(browser, server.url, { width: 375, height: 667 });
+    const { page, context } = await openPage(s.browser, s.server.url, { width: 375, height: 667 });
     for (const id of ['#play', '#step', '#reset', '#copy-link', '#tab-scenario']) {
       const covered = await page.$eval(id, (el) => {
         el.scrollIntoView({ block: 'center' });
@@ -292,7 +280,7 @@ describe('the page', () => {
   });
 
   test('works on a classroom tablet: no sideways scrolling, the view stays large', async () => {
-    const { page, context } = await openPage(browser, server.url, { width: 820, height: 1180 });
+    const { page, context } = await openPage(s.browser, s.server.url, { width: 820, height: 1180 });
     const { scroll, width, canvasHeight } = await page.evaluate(() => ({
       scroll: document.documentElement.scrollWidth,
       width: window.innerWidth,
@@ -306,7 +294,7 @@ describe('the page', () => {
 
 describe('the AMAS target editor', () => {
   test('painting next to the structure changes the target; a disconnected stroke is refused and kept; undo works', async () => {
-    const { page, context, problems } = await openPage(browser, server.url);
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
     await page.click('#tab-scenario');
     await page.waitForSelector('.grid-canvas');
     const target = async () => JSON.parse(await scenarioJson(page)).target;
@@ -343,7 +331,7 @@ describe('the AMAS target editor', () => {
 describe('the AMAS stage editor', () => {
   test('staged targets are listed, each drawn in turn, and a stage can be added and removed', async () => {
     const link = wasm.encode_link(wasm.preset_json('amas-bridge-staged'));
-    const { page, context, problems } = await openPage(browser, `${server.url}#${link}`);
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${link}`);
     await page.click('#tab-scenario');
     const options = await page.$$eval('#amas-part option', (o) => o.map((x) => x.textContent));
     const stages = JSON.parse(await scenarioJson(page)).stages.length;

@@ -18,6 +18,9 @@ export interface GridEditorOptions {
 
 type Tool = 'paint' | 'erase';
 
+/** Editors made so far, for unique element ids. */
+let editors = 0;
+
 export class GridEditor {
   private shape: Shape;
   private past: Shape[] = [];
@@ -40,7 +43,7 @@ export class GridEditor {
   constructor(private readonly root: HTMLElement, private readonly opts: GridEditorOptions) {
     this.maxSide = opts.maxSide ?? 200;
     this.shape = this.read(opts.text) ?? { w: 8, h: 6, d: 1, cells: new Array(48).fill(0) };
-    const id = `grid-${Math.random().toString(36).slice(2, 8)}`;
+    const id = `grid-${++editors}`;
     const toolGroup = el('div', { class: 'tools', role: 'radiogroup', 'aria-label': 'Drawing tool' });
     for (const [tool, label] of [['paint', 'Paint'], ['erase', 'Erase']] as const) {
       const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(tool === this.tool), text: label, 'data-tool': tool });

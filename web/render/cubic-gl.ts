@@ -5,6 +5,7 @@
 // change, so orbiting a large structure costs one draw call per kind of thing.
 import { multiply, type Camera3D } from './camera';
 import { CubicBuilder, type CubicModel, type RenderStats, type V3, coordOf, statsOf } from './cubic-scene';
+import { type Program, link } from './gl';
 import { parseColor } from './palette';
 import type { Scene } from './renderer';
 
@@ -118,7 +119,6 @@ uniform vec4 u_color;
 out vec4 outColor;
 void main() { outColor = u_color; }`;
 
-type Program = { program: WebGLProgram; u: (name: string) => WebGLUniformLocation | null };
 
 /** Bytes per instance: offset and scale (6 floats) and an RGBA colour. */
 const STRIDE = 28;
@@ -272,17 +272,17 @@ export class CubicGL {
     const toEye = norm([eye[0] - cam.target[0], eye[1] - cam.target[1], eye[2] - cam.target[2]]);
     const p = this.mesh;
     gl.useProgram(p.program);
-    gl.uniformMatrix4fv(p.u('u_vp'), false, vp);
-    gl.uniformMatrix3fv(p.u('u_rot'), false, IDENTITY);
-    gl.uniform3fv(p.u('u_key'), norm([0.42, 0.28, 0.86]));
-    gl.uniform3fv(p.u('u_eye_dir'), toEye);
-    gl.uniform3fv(p.u('u_lamp'), m.lamp ? m.lamp.dir : [0, 0, 1]);
-    gl.uniform1f(p.u('u_lamp_on'), m.lamp ? 1 : 0);
+    gl.uniformMatrix4fv(p.uniform('u_vp'), false, vp);
+    gl.uniformMatrix3fv(p.uniform('u_rot'), false, IDENTITY);
+    gl.uniform3fv(p.uniform('u_key'), norm([0.42, 0.28, 0.86]));
+    gl.uniform3fv(p.uniform('u_eye_dir'), toEye);
+    gl.uniform3fv(p.uniform('u_lamp'), m.lamp ? m.lamp.dir : [0, 0, 1]);
+    gl.uniform1f(p.uniform('u_lamp_on'), m.lamp ? 1 : 0);
     const mode = (k: number, alpha: number, edge: number, fill = 0.12) => {
-      gl.uniform1i(p.u('u_mode'), k);
-      gl.uniform1f(p.u('u_alpha'), alpha);
-      gl.uniform1f(p.u('u_edge'), edge);
-      gl.uniform1f(p.u('u_fill'), fill);
+      gl.uniform1i(p.uniform('u_mode'), k);
+      gl.uniform1f(p.uniform('u_alpha'), alpha);
+      gl.uniform1f(p.uniform('u_edge'), edge);
+      gl.uniform1f(p.uniform('u_fill'), fill);
     };
 
     gl.enable(gl.DEPTH_TEST);
@@ -301,11 +301,11 @@ export class CubicGL {
       mode(3, 1, 0);
       this.lampBatch.draw();
       const rot = rotationTo([-m.lamp.dir[0], -m.lamp.dir[1], -m.lamp.dir[2]]);
-      gl.uniformMatrix3fv(p.u('u_rot'), false, rot);
+      gl.uniformMatrix3fv(p.uniform('u_rot'), false, rot);
       mode(0, 1, 0);
       this.shaft.draw();
       this.head.draw();
-      gl.uniformMatrix3fv(p.u('u_rot'), false, IDENTITY);
+      gl.uniformMatrix3fv(p.uniform('u_rot'), false, IDENTITY);
     }
 
     // Translucent, back to front by kind: the plane, shadows, ghost, reachable cells, cursor.
@@ -396,28 +396,28 @@ export class CubicGL {
     const plane = m.plane!;
     const pl = this.plane;
     gl.useProgram(pl.program);
-    gl.uniformMatrix4fv(pl.u('u_vp'), false, vp);
-    gl.uniform1f(pl.u('u_z'), plane.z);
+    gl.uniformMatrix4fv(pl.uniform('u_vp'), false, vp);
+    gl.uniform1f(pl.uniform('u_z'), plane.z);
     const [w, h] = m.dims;
     const b = m.box;
     const centre = b ? [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2] : [w / 2, h / 2];
     if (plane.solid) {
       // The model's ground: the whole floor of the space, edges included.
-      gl.uniform2f(pl.u('u_min'), 0, 0);
-      gl.uniform2f(pl.u('u_max'), w, h);
-      gl.uniform4f(pl.u('u_fill'), 0.36, 0.33, 0.29, 0.92);
-      gl.uniform4f(pl.u('u_line'), 0.62, 0.57, 0.5, 0.55);
-      gl.uniform1f(pl.u('u_fade'), 0);
+      gl.uniform2f(pl.uniform('u_min'), 0, 0);
+      gl.uniform2f(pl.uniform('u_max'), w, h);
+      gl.uniform4f(pl.uniform('u_fill'), 0.36, 0.33, 0.29, 0.92);
+      gl.uniform4f(pl.uniform('u_line'), 0.62, 0.57, 0.5, 0.55);
+      gl.uniform1f(pl.uniform('u_fade'), 0);
     } else {
       // A reference grid fading out around the structure.
       const r = b ? Math.max(6, Math.hypot(b.max[0] - b.min[0], b.max[1] - b.min[1]) * 1.2 + 4) : Math.max(w, h);
-      gl.uniform2f(pl.u('u_min'), Math.max(0, centre[0] - r), Math.max(0, centre[1] - r));
-      gl.uniform2f(pl.u('u_max'), Math.min(w, centre[0] + r), Math.min(h, centre[1] + r));
-      gl.uniform4f(pl.u('u_fill'), 0.2, 0.25, 0.31, 0.55);
-      gl.uniform4f(pl.u('u_line'), 0.6, 0.68, 0.76, 0.35);
-      gl.uniform1f(pl.u('u_fade'), r);
+      gl.uniform2f(pl.uniform('u_min'), Math.max(0, centre[0] - r), Math.max(0, centre[1] - r));
+      gl.uniform2f(pl.uniform('u_max'), Math.min(w, centre[0] + r), Math.min(h, centre[1] + r));
+      gl.uniform4f(pl.uniform('u_fill'), 0.2, 0.25, 0.31, 0.55);
+      gl.uniform4f(pl.uniform('u_line'), 0.6, 0.68, 0.76, 0.35);
+      gl.uniform1f(pl.uniform('u_fade'), r);
     }
-    gl.uniform2f(pl.u('u_centre'), centre[0], centre[1]);
+    gl.uniform2f(pl.uniform('u_centre'), centre[0], centre[1]);
     gl.disable(gl.CULL_FACE);
     gl.bindVertexArray(this.quad);
     gl.drawArrays(gl.TRIANGLES, 0, 6);
@@ -453,7 +453,7 @@ export class CubicGL {
     if (!groups.length) return;
     const l = this.lines;
     gl.useProgram(l.program);
-    gl.uniformMatrix4fv(l.u('u_vp'), false, vp);
+    gl.uniformMatrix4fv(l.uniform('u_vp'), false, vp);
     gl.bindVertexArray(this.lineVao);
     for (const g of groups) {
       const verts: number[] = [];
@@ -462,10 +462,10 @@ export class CubicGL {
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(verts), gl.STREAM_DRAW);
       // Visible edges bright, hidden ones faint: the mark shows through what covers it.
       gl.depthFunc(gl.GREATER);
-      gl.uniform4f(l.u('u_color'), g.color[0], g.color[1], g.color[2], g.color[3] * 0.35);
+      gl.uniform4f(l.uniform('u_color'), g.color[0], g.color[1], g.color[2], g.color[3] * 0.35);
       gl.drawArrays(gl.LINES, 0, verts.length / 3);
       gl.depthFunc(gl.LEQUAL);
-      gl.uniform4f(l.u('u_color'), g.color[0], g.color[1], g.color[2], g.color[3]);
+      gl.uniform4f(l.uniform('u_color'), g.color[0], g.color[1], g.color[2], g.color[3]);
       gl.drawArrays(gl.LINES, 0, verts.length / 3);
     }
   }
@@ -509,30 +509,6 @@ function rotationTo(d: V3): Float32Array {
     t * x * y - s * z, t * y * y + c, t * y * z + s * x,
     t * x * z + s * y, t * y * z - s * x, t * z * z + c,
   ]);
-}
-
-function compile(gl: WebGL2RenderingContext, type: number, source: string): WebGLShader {
-  const shader = gl.createShader(type)!;
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`shader: ${gl.getShaderInfoLog(shader) ?? 'compile failed'}`);
-  return shader;
-}
-
-function link(gl: WebGL2RenderingContext, vs: string, fs: string): Program {
-  const program = gl.createProgram()!;
-  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vs));
-  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fs));
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`program: ${gl.getProgramInfoLog(program) ?? 'link failed'}`);
-  const cache = new Map<string, WebGLUniformLocation | null>();
-  return {
-    program,
-    u: (name) => {
-      if (!cache.has(name)) cache.set(name, gl.getUniformLocation(program, name));
-      return cache.get(name) ?? null;
-    },
-  };
 }
 
 function upload(gl: WebGL2RenderingContext, data: Float32Array): Mesh {

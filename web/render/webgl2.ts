@@ -6,6 +6,7 @@ import type { Layout } from '../types';
 import type { Camera2D, Camera3D } from './camera';
 import { CubicGL } from './cubic-gl';
 import { heatTable, legendTable } from './palette';
+import { type Program, link } from './gl';
 import type { Renderer, Scene } from './renderer';
 
 const PLANAR_VS = `#version 300 es
@@ -85,8 +86,6 @@ void main() {
   if (col.a == 0.0) discard;
   outColor = col;
 }`;
-
-type Program = { program: WebGLProgram; uniform: (name: string) => WebGLUniformLocation | null; attrib: (name: string) => number };
 
 export class WebGL2Renderer implements Renderer {
   readonly kind = 'webgl2' as const;
@@ -233,35 +232,6 @@ export class WebGL2Renderer implements Renderer {
   destroy() {
     this.gl.getExtension('WEBGL_lose_context')?.loseContext();
   }
-}
-
-function compile(gl: WebGL2RenderingContext, type: number, source: string): WebGLShader {
-  const shader = gl.createShader(type)!;
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    throw new Error(`shader: ${gl.getShaderInfoLog(shader) ?? 'compile failed'}`);
-  }
-  return shader;
-}
-
-function link(gl: WebGL2RenderingContext, vs: string, fs: string): Program {
-  const program = gl.createProgram()!;
-  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vs));
-  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fs));
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-    throw new Error(`program: ${gl.getProgramInfoLog(program) ?? 'link failed'}`);
-  }
-  const uniforms = new Map<string, WebGLUniformLocation | null>();
-  return {
-    program,
-    uniform: (name) => {
-      if (!uniforms.has(name)) uniforms.set(name, gl.getUniformLocation(program, name));
-      return uniforms.get(name) ?? null;
-    },
-    attrib: (name) => gl.getAttribLocation(program, name),
-  };
 }
 
 function attribute(gl: WebGL2RenderingContext, loc: number, size: number, type: number, normalized: boolean, divisor: number) {

@@ -159,6 +159,15 @@ fn parse_one(cur: &mut Cursor) -> Result<TypeList> {
         }
     };
     cur.pos += 1;
+    let mismatch = |cur: &Cursor, c: char| {
+        cur.err(
+            cur.pos,
+            format!(
+                "'{c}' does not match the '{open}' at column {}",
+                open_col + 1
+            ),
+        )
+    };
     let mut neighbours = Vec::new();
     loop {
         cur.skip_space();
@@ -166,13 +175,7 @@ fn parse_one(cur: &mut Cursor) -> Result<TypeList> {
             None => return Err(cur.err(open_col, format!("'{open}' is never closed on this line"))),
             Some(c @ (']' | '}')) => {
                 if c != closer(open) {
-                    return Err(cur.err(
-                        cur.pos,
-                        format!(
-                            "'{c}' does not match the '{open}' at column {}",
-                            open_col + 1
-                        ),
-                    ));
+                    return Err(mismatch(&cur, c));
                 }
                 if !neighbours.is_empty() {
                     return Err(cur.err(cur.pos, "a neighbour type is missing after ','"));
@@ -199,13 +202,7 @@ fn parse_one(cur: &mut Cursor) -> Result<TypeList> {
             }
             Some(c @ (']' | '}')) => {
                 if c != closer(open) {
-                    return Err(cur.err(
-                        cur.pos,
-                        format!(
-                            "'{c}' does not match the '{open}' at column {}",
-                            open_col + 1
-                        ),
-                    ));
+                    return Err(mismatch(&cur, c));
                 }
                 cur.pos += 1;
                 break;
