@@ -175,7 +175,7 @@ fn parse_one(cur: &mut Cursor) -> Result<TypeList> {
             None => return Err(cur.err(open_col, format!("'{open}' is never closed on this line"))),
             Some(c @ (']' | '}')) => {
                 if c != closer(open) {
-                    return Err(mismatch(&cur, c));
+                    return Err(mismatch(cur, c));
                 }
                 if !neighbours.is_empty() {
                     return Err(cur.err(cur.pos, "a neighbour type is missing after ','"));
@@ -202,7 +202,7 @@ fn parse_one(cur: &mut Cursor) -> Result<TypeList> {
             }
             Some(c @ (']' | '}')) => {
                 if c != closer(open) {
-                    return Err(mismatch(&cur, c));
+                    return Err(mismatch(cur, c));
                 }
                 cur.pos += 1;
                 break;
