@@ -59,29 +59,34 @@ export function savePrefs(prefs: Prefs) {
   write(PREFS_KEY, JSON.stringify(prefs));
 }
 
-/** Undo and redo over whole scenario texts. */
-export class History {
-  private past: string[] = [];
-  private future: string[] = [];
-  private static readonly LIMIT = 100;
+/** Undo and redo over whole states (scenario texts, an editor's shape), the oldest dropped. */
+export class History<T = string> {
+  private past: T[] = [];
+  private future: T[] = [];
+
+  constructor(private readonly limit = 100) {}
 
   /** Records `previous` before a change to something else. */
-  push(previous: string) {
+  push(previous: T) {
     this.past.push(previous);
-    if (this.past.length > History.LIMIT) this.past.shift();
+    if (this.past.length > this.limit) this.past.shift();
     this.future = [];
   }
-  undo(current: string): string | null {
+  undo(current: T): T | null {
     const prev = this.past.pop();
     if (prev === undefined) return null;
     this.future.push(current);
     return prev;
   }
-  redo(current: string): string | null {
+  redo(current: T): T | null {
     const next = this.future.pop();
     if (next === undefined) return null;
     this.past.push(current);
     return next;
+  }
+  clear() {
+    this.past = [];
+    this.future = [];
   }
   get canUndo() {
     return this.past.length > 0;

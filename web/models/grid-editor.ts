@@ -2,6 +2,7 @@
 // touch), move a cursor with the arrow keys and toggle with Space, resize, trim, undo and redo,
 // and edit the same shape as text. Shapes are read and written by the core's own rules.
 import { HEX_RADIUS, HEX_ROW, cellAt, cellCentre, hexCorners } from '../render/geometry';
+import { History } from '../store';
 import { clear, el } from '../ui/dom';
 import { formatShape, message, parseShape, type Shape } from '../wasm';
 
@@ -23,8 +24,7 @@ let editors = 0;
 
 export class GridEditor {
   private shape: Shape;
-  private past: Shape[] = [];
-  private future: Shape[] = [];
+  private readonly history = new History<Shape>(200);
   private tool: Tool = 'paint';
   private cursor = 0;
   private stroke: { erase: boolean; last: number; changed: boolean } | null = null;
@@ -104,8 +104,7 @@ export class GridEditor {
     const s = this.read(text, false);
     if (s && formatShape(this.opts.lattice, s) !== formatShape(this.opts.lattice, this.shape)) {
       this.shape = s;
-      this.past = [];
-      this.future = [];
+      this.history.clear();
       this.error.textContent = '';
       this.sync();
     }
@@ -133,9 +132,7 @@ export class GridEditor {
 
   /** Records the current shape for undo, shows `next` and applies it. */
   private commit(next: Shape) {
-    this.past.push(this.shape);
-    if (this.past.length > 200) this.past.shift();
-    this.future = [];
+    this.history.push(this.shape);
     this.shape = next;
     this.sync();
     this.push();
@@ -151,19 +148,16 @@ export class GridEditor {
   }
 
   private undo() {
-    const prev = this.past.pop();
-    if (!prev) return;
-    this.future.push(this.shape);
-    this.shape = prev;
-    this.sync();
-    this.push();
+    this.restore(this.history.undo(this.shape));
   }
 
   private redo() {
-    const next = this.future.pop();
-    if (!next) return;
-    this.past.push(this.shape);
-    this.shape = next;
+    this.restore(this.history.redo(this.shape));
+  }
+
+  private restore(shape: Shape | null) {
+    if (!shape) return;
+    this.shape = shape;
     this.sync();
     this.push();
   }
@@ -216,8 +210,8 @@ export class GridEditor {
     if (document.activeElement !== this.text) this.text.value = formatShape(this.opts.lattice, this.shape);
     const n = this.shape.cells.filter(Boolean).length;
     this.status.textContent = `${n} cell${n === 1 ? '' : 's'} · ${this.shape.w} × ${this.shape.h}`;
-    this.undoButton.disabled = !this.past.length;
-    this.redoButton.disabled = !this.future.length;
+    this.undoButton.disabled = !this.history.canUndo;
+    this.redoButton.disabled = !this.history.canRedo;
     this.cursor = Math.min(this.cursor, this.shape.w * this.shape.h - 1);
     this.draw();
   }
@@ -302,8 +296,7 @@ export class GridEditor {
     const v = erase ? 0 : 1;
     if (this.shape.cells[i] !== v) {
       if (!this.stroke.changed) {
-        this.past.push({ ...this.shape, cells: [...this.shape.cells] });
-        this.future = [];
+        this.history.push({ ...this.shape, cells: [...this.shape.cells] });
         this.stroke.changed = true;
       }
       this.shape.cells[i] = v;

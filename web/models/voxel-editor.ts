@@ -8,6 +8,7 @@
 import { Camera3D, type Hit } from '../render/camera';
 import { createRenderer, type Renderer, type Scene } from '../render/renderer';
 import type { Frame, Layout, SceneInfo } from '../types';
+import { History } from '../store';
 import { clear, el } from '../ui/dom';
 import { formatShape, message, parseShape } from '../wasm';
 
@@ -36,8 +37,7 @@ const unkey = (k: string): Cell => k.split(',').map(Number) as Cell;
 export class VoxelEditor {
   private subject: VoxelSubject = { label: 'the shape', text: '', apply: () => null };
   private units = new Set<string>();
-  private past: string[][] = [];
-  private future: string[][] = [];
+  private readonly history = new History<string[]>(200);
   private tool: Tool = 'add';
   private sliceMode: SliceMode = 'all';
   private level = 0;
@@ -166,8 +166,7 @@ export class VoxelEditor {
   /** Edits another shape (the initial one, a target's): forgets the undo history. */
   load(subject: VoxelSubject) {
     this.subject = subject;
-    this.past = [];
-    this.future = [];
+    this.history.clear();
     this.error.textContent = '';
     this.textError.textContent = '';
     this.units = this.read(subject.text) ?? new Set();
@@ -187,8 +186,7 @@ export class VoxelEditor {
     const units = this.read(text);
     if (!units || formatUnits(units) === formatUnits(this.units)) return;
     this.units = units;
-    this.past = [];
-    this.future = [];
+    this.history.clear();
     this.error.textContent = '';
     this.rebuild();
   }
@@ -241,28 +239,23 @@ export class VoxelEditor {
     const next = new Set(this.units);
     change(next);
     if (next.size === this.units.size && [...next].every((k) => this.units.has(k))) return;
-    this.past.push([...this.units]);
-    if (this.past.length > 200) this.past.shift();
-    this.future = [];
+    this.history.push([...this.units]);
     this.units = settle(next);
     this.rebuild();
     this.push();
   }
 
   private undo() {
-    const prev = this.past.pop();
-    if (!prev) return;
-    this.future.push([...this.units]);
-    this.units = new Set(prev);
-    this.rebuild();
-    this.push();
+    this.restore(this.history.undo([...this.units]));
   }
 
   private redo() {
-    const next = this.future.pop();
-    if (!next) return;
-    this.past.push([...this.units]);
-    this.units = new Set(next);
+    this.restore(this.history.redo([...this.units]));
+  }
+
+  private restore(units: string[] | null) {
+    if (!units) return;
+    this.units = new Set(units);
     this.rebuild();
     this.push();
   }
@@ -337,8 +330,8 @@ export class VoxelEditor {
     const n = this.units.size;
     const [w, h, d] = this.extent();
     this.status.textContent = `${cap(this.subject.label)}: ${n} unit${n === 1 ? '' : 's'}${n ? ` · ${w} × ${h} × ${d}` : ''}`;
-    this.undoButton.disabled = !this.past.length;
-    this.redoButton.disabled = !this.future.length;
+    this.undoButton.disabled = !this.history.canUndo;
+    this.redoButton.disabled = !this.history.canRedo;
     this.sliceSelect.value = this.sliceMode;
     this.levelInput.max = String(this.box.d - 1);
     this.levelInput.value = String(this.level);

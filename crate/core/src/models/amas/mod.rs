@@ -523,6 +523,23 @@ impl Amas {
         }
     }
 
+    /// The module of lowest cost among `options`, ties broken at random.
+    fn pick_lowest(&mut self, options: &[(u32, f32)]) -> Option<u32> {
+        let best = options
+            .iter()
+            .map(|&(_, c)| c)
+            .fold(f32::INFINITY, f32::min);
+        let mut pick = [0u32; 4];
+        let mut m = 0;
+        for &(j, c) in options {
+            if c == best {
+                pick[m] = j;
+                m += 1;
+            }
+        }
+        self.pick_random(&pick[..m])
+    }
+
     /// The move the module under the robot shows it (footnote 3): towards the best neighbour,
     /// or, with no effective gradient, a random neighbouring module. On a blackboard the robot
     /// avoids engaged modules and takes the best free one.
@@ -555,19 +572,9 @@ impl Amas {
             }
         }
         if hi - lo >= self.p.threshold && hi >= lo {
-            let best = valued[..nv]
-                .iter()
-                .map(|&(_, c)| c)
-                .fold(f32::INFINITY, f32::min);
-            let mut opts = [0u32; 4];
-            let mut no = 0;
-            for &(j, c) in &valued[..nv] {
-                if c == best {
-                    opts[no] = j;
-                    no += 1;
-                }
-            }
-            return self.pick_random(&opts[..no]).map_or(Plan::Wait, Plan::Move);
+            return self
+                .pick_lowest(&valued[..nv])
+                .map_or(Plan::Wait, Plan::Move);
         }
         self.robots[r].lost = true;
         self.pick_random(&walk[..nw]).map_or(Plan::Wait, Plan::Move)
@@ -586,19 +593,7 @@ impl Amas {
                 n += 1;
             }
         }
-        let best = opts[..n]
-            .iter()
-            .map(|&(_, c)| c)
-            .fold(f32::INFINITY, f32::min);
-        let mut pick = [0u32; 4];
-        let mut m = 0;
-        for &(j, c) in &opts[..n] {
-            if c == best {
-                pick[m] = j;
-                m += 1;
-            }
-        }
-        self.pick_random(&pick[..m])
+        self.pick_lowest(&opts[..n])
     }
 
     /// What robot `r` wants to do this step.
