@@ -56,6 +56,8 @@ function dismiss() {
 /** Set while the banner explains the load that follows (a restart, a link that could not be
  * opened), so that load does not clear it. */
 let keepBanner = false;
+/** The banner is showing the watchdog's message. */
+let stallShown = false;
 byId('banner-close').addEventListener('click', dismiss);
 
 // ---- simulation -------------------------------------------------------------------------------
@@ -116,6 +118,22 @@ const sim = new SimClient({
     if (context === 'apply') report(`That did not work: ${message}`);
     else if (context === 'load') report(`This scenario cannot run: ${message}`);
     else report(message);
+  },
+  stalled(ms) {
+    if (ms === 0) {
+      if (stallShown) {
+        dismiss();
+        keepBanner = false;
+      }
+      stallShown = false;
+      return;
+    }
+    stallShown = true;
+    keepBanner = true;
+    report(`The simulation has not answered for ${Math.round(ms / 1000)} s. It may be busy with a large scenario; your last good scenario is kept.`, {
+      label: 'Stop it and reload the last good scenario',
+      run: () => sim.recover(),
+    });
   },
   panic(message) {
     keepBanner = true;
