@@ -41,7 +41,7 @@ const bannerAction = byId<HTMLButtonElement>('banner-action');
 function report(text: string, action?: { label: string; run: () => void }) {
   bannerText.textContent = text;
   bannerAction.hidden = !action;
-  bannerAction.textContent = action?.label ?? '';
+  if (action) bannerAction.textContent = action.label;
   bannerAction.onclick = action
     ? () => {
         dismiss();
@@ -167,6 +167,16 @@ function open(json: string) {
   loadedOpening = false;
   noteOpening(json);
   sim.load(json);
+}
+
+/** Whoever opens a shared link sees its name and description first. */
+function introduce(json: string) {
+  const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
+  byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
+  byId('intro-model').textContent = String(doc.model ?? '');
+  byId('intro-description').textContent = displayText(doc.description ?? '', 4000, true) || 'It comes with no description.';
+  const dialog = byId<HTMLDialogElement>('intro');
+  if (!dialog.open) dialog.showModal();
 }
 
 function history_replace(hash: string) {
@@ -628,6 +638,7 @@ function openHash(): boolean {
     scenario = json;
     open(json);
     updateUndo();
+    introduce(json);
     dismiss();
     return true;
   } catch (e) {

@@ -66,8 +66,11 @@ export function launch() {
   });
 }
 
-/** A page that records console errors, page errors and CSP violations. */
-export async function openPage(browser, url, { width = 1280, height = 800 } = {}) {
+/**
+ * A page that records console errors, page errors and CSP violations. A shared link opens with
+ * its introduction; it is closed unless `keepIntro` is set.
+ */
+export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false } = {}) {
   const context = await browser.newContext({ viewport: { width, height } });
   const page = await context.newPage();
   const problems = [];
@@ -80,6 +83,10 @@ export async function openPage(browser, url, { width = 1280, height = 800 } = {}
   });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  if (!keepIntro && (await page.isVisible('#intro'))) {
+    await page.click('#intro button.primary');
+    await page.waitForSelector('#intro', { state: 'hidden' });
+  }
   return { page, context, problems };
 }
 

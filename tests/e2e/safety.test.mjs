@@ -86,6 +86,29 @@ describe('hostile links', () => {
   });
 });
 
+describe('a shared link', () => {
+  test('introduces itself first: its name and description, in a panel that Escape closes', async () => {
+    const description = 'Line one.\nLine two, with <b>markup</b> that stays text.';
+    const link = wasm.encode_link(withKeys({ name: 'Class 3: \u202Eexercise', description }));
+    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`, { keepIntro: true });
+    await page.waitForSelector('#intro[open]');
+    assert.equal(await page.textContent('#intro-title'), 'Class 3: exercise');
+    assert.equal(await page.textContent('#intro-model'), 'amas');
+    assert.equal(await page.$eval('#intro-description', (p) => p.innerText), 'Line one.\nLine two, with <b>markup</b> that stays text.');
+    await page.keyboard.press('Escape');
+    await page.waitForSelector('#intro', { state: 'hidden' });
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    await context.close();
+  });
+
+  test('a preset opened from the gallery is not introduced', async () => {
+    const { page, context } = await openPage(s.browser, s.server.url, { keepIntro: true });
+    assert.equal(await page.isVisible('#intro'), false);
+    await context.close();
+  });
+});
+
 describe('the About tab', () => {
   test("shows the model's reproduction rows, the same as docs/reproduction.json", async () => {
     const report = JSON.parse(readFileSync(new URL('../../docs/reproduction.json', import.meta.url), 'utf8'));
