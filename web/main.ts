@@ -137,9 +137,28 @@ const sim = new SimClient({
   },
   panic(message) {
     keepBanner = true;
-    report(`The simulation stopped on an internal error and was restarted with the last good scenario.\n${message}`);
+    const model = layout ? String((JSON.parse(scenario) as { model?: string }).model ?? 'the model') : 'the model';
+    const bug = [
+      `Kumiki ${core.version()} hit an internal error in ${model}.`,
+      message,
+      `Scenario: ${scenarioLink()}`,
+      `Browser: ${navigator.userAgent}`,
+    ].join('\n');
+    report(`Kumiki hit an internal error in ${model}; your scenario is kept and was restarted from its start.\n${message}`, {
+      label: 'Copy the report',
+      run: () => void navigator.clipboard?.writeText(bug).catch(() => download('kumiki-error-report.txt', bug, 'text/plain')),
+    });
   },
 });
+
+/** A link to the scenario in view, or its JSON when it cannot be encoded. */
+function scenarioLink(): string {
+  try {
+    return `${location.origin}${location.pathname}#${core.encodeLink(scenario)}`;
+  } catch {
+    return scenario;
+  }
+}
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false } = {}): boolean {

@@ -5,6 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { describe, test } from 'node:test';
 import { deflateRawSync } from 'node:zlib';
+import { createServer } from 'node:http';
 import { loadWasm, openPage, session, waitForSteps } from './harness.mjs';
 
 const wasm = loadWasm();
@@ -106,6 +107,35 @@ describe('a shared link', () => {
     const { page, context } = await openPage(s.browser, s.server.url, { keepIntro: true });
     assert.equal(await page.isVisible('#intro'), false);
     await context.close();
+  });
+});
+
+describe('framing', () => {
+  test('the page is sent with its policy as a header, frame-ancestors included', async () => {
+    const res = await fetch(s.server.url);
+    const policy = res.headers.get('content-security-policy');
+    const meta = /http-equiv="Content-Security-Policy" content="([^"]+)"/.exec(await res.text())[1];
+    assert.equal(policy, `${meta}; frame-ancestors 'self' https: http://localhost:* http://127.0.0.1:*`);
+    assert.equal(res.headers.get('x-content-type-options'), 'nosniff');
+  });
+
+  test('a course page on another origin may embed it; a page with no origin may not', async () => {
+    const host = createServer((_, res) => res.writeHead(200, { 'content-type': 'text/html' }).end(`<iframe id="k" src="${s.server.url}" width="900" height="600"></iframe>`));
+    await new Promise((r) => host.listen(0, '127.0.0.1', r));
+    const context = await s.browser.newContext();
+    const page = await context.newPage();
+    await page.goto(`http://127.0.0.1:${host.address().port}/`);
+    const frame = await (await page.waitForSelector('#k')).contentFrame();
+    await frame.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+
+    await page.goto(`data:text/html,<iframe id="k" src="${s.server.url}"></iframe>`);
+    const blocked = await (await page.waitForSelector('#k')).contentFrame();
+    await page.waitForFunction(() => document.querySelector('#k').contentWindow !== null);
+    await blocked.waitForLoadState();
+    assert.equal(await blocked.$('body[data-ready="true"]'), null);
+    assert.match(blocked.url(), /^chrome-error:/, 'the browser refused to frame it');
+    await context.close();
+    await new Promise((r) => host.close(r));
   });
 });
 
