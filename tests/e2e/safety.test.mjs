@@ -2,7 +2,7 @@
 // in view is kept; a page stopped while opening a scenario does not reopen it by itself. Also the
 // About tab's reproduction rows, which come from the same report as docs/reproduction.md.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { readFileSync, readdirSync } from 'node:fs';
 import { describe, test } from 'node:test';
 import { deflateRawSync } from 'node:zlib';
 import { createServer } from 'node:http';
@@ -15,6 +15,23 @@ const s = session();
 const linkOf = (text) => `k1.${deflateRawSync(Buffer.from(text)).toString('base64url')}`;
 const amas = () => JSON.parse(wasm.preset_json('amas-L'));
 const withKeys = (keys) => JSON.stringify({ ...amas(), ...keys });
+
+/**
+ * Resident memory of every Chromium process, in MB (Linux's /proc). The simulation worker lives in
+ * the page's renderer process, so what a link makes it allocate shows here.
+ */
+function chromiumMb() {
+  let kb = 0;
+  for (const pid of readdirSync('/proc').filter((p) => /^\d+$/.test(p))) {
+    try {
+      if (!/chrom/.test(readFileSync(`/proc/${pid}/cmdline`, 'utf8'))) continue;
+      kb += Number(/VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'))?.[1] ?? 0);
+    } catch {
+      // The process ended while it was read.
+    }
+  }
+  return kb / 1024;
+}
 
 /** Milliseconds the page takes to answer a trivial question. */
 async function answerTime(page) {
@@ -35,9 +52,11 @@ const HOSTILE = [
 
 describe('hostile links', () => {
   for (const [what, text, expected] of HOSTILE) {
-    test(`${what}: a plain message, an answer within 1 s, and the scenario in view kept`, async () => {
+    test(`${what}: a plain message, an answer within 1 s, under 200 MB more memory, and the scenario in view kept`, async () => {
       const { page, context, problems } = await openPage(s.browser, s.server.url);
       const before = await page.textContent('#state-hash');
+      const memoryBefore = chromiumMb();
+      assert.ok(memoryBefore > 50, `the browser's memory is measured (${memoryBefore.toFixed(0)} MB)`);
       const link = linkOf(text);
       assert.ok(link.length <= 64 * 1024, `the link is ${link.length} bytes`);
       await page.evaluate((l) => {
@@ -45,6 +64,8 @@ describe('hostile links', () => {
       }, link);
       await page.waitForSelector('#banner:not([hidden])');
       assert.ok((await answerTime(page)) < 1000, 'the page answers within 1 s');
+      const grown = chromiumMb() - memoryBefore;
+      assert.ok(grown < 200, `the browser grew by ${grown.toFixed(0)} MB`);
       const message = await page.textContent('#banner-text');
       assert.match(message, expected);
       assert.doesNotMatch(message, /unreachable|invalid type|Invalid symbol|expected u32/);
