@@ -2,6 +2,7 @@
 
 mod bench;
 mod pool;
+mod reproduce;
 mod shard;
 
 // Counts only while `kumiki bench` measures; see `bench::Counting` for why it is installed.
@@ -75,6 +76,20 @@ enum Command {
     Bench {
         #[arg(required = true, value_name = "WORKLOAD.json")]
         files: Vec<PathBuf>,
+        #[command(flatten)]
+        jobs: Jobs,
+    },
+    /// Run every model's paper experiments and write docs/reproduction.md and .json under DIR
+    Reproduce {
+        /// Print this model's part as Markdown instead of writing the report
+        #[arg(long, value_name = "M", conflicts_with = "check")]
+        model: Option<String>,
+        /// Compare the report under DIR with what the experiments give now; fail if it differs
+        #[arg(long)]
+        check: bool,
+        /// The repository root the report lives under
+        #[arg(long, value_name = "DIR", default_value = ".")]
+        root: PathBuf,
         #[command(flatten)]
         jobs: Jobs,
     },
@@ -158,13 +173,23 @@ fn parse_set(text: &str) -> Result<(String, Value), String> {
     parse_override(text).map_err(|e| e.to_string())
 }
 
-/// A failure of the run itself (exit code 1); usage errors are clap's (exit code 2).
-struct Failure(String);
+/// A usage error clap cannot see (exit code 2) or a failure of the run itself (exit code 1).
+pub enum Failure {
+    Usage(String),
+    Run(String),
+}
 
 impl<E: std::fmt::Display> From<E> for Failure {
     fn from(e: E) -> Self {
-        Failure(e.to_string())
+        Failure::Run(e.to_string())
     }
+}
+
+/// Usage errors, clap's and ours, print the same way: one line naming the problem and a pointer
+/// to the help.
+fn usage_error(message: &str) -> ExitCode {
+    eprintln!("kumiki: {message}\n(see 'kumiki help')");
+    ExitCode::from(2)
 }
 
 fn main() -> ExitCode {
@@ -184,16 +209,13 @@ fn main() -> ExitCode {
                 .take_while(|l| !l.trim().is_empty())
                 .map(str::trim)
                 .collect();
-            eprintln!(
-                "kumiki: {}\n(see 'kumiki help')",
-                message.join(" ").trim_start_matches("error: ")
-            );
-            return ExitCode::from(2);
+            return usage_error(message.join(" ").trim_start_matches("error: "));
         }
     };
     match dispatch(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(Failure(msg)) => {
+        Err(Failure::Usage(msg)) => usage_error(&msg),
+        Err(Failure::Run(msg)) => {
             eprintln!("kumiki: {msg}");
             ExitCode::from(1)
         }
@@ -252,6 +274,19 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 writeln!(out, "{}", bench::measure(w, jobs.threads()))?;
             }
         }
+        Some(Command::Reproduce {
+            model,
+            check,
+            root,
+            jobs,
+        }) => {
+            let mode = match (&model, check) {
+                (Some(_), _) => reproduce::Mode::Print,
+                (None, true) => reproduce::Mode::Check,
+                (None, false) => reproduce::Mode::Write,
+            };
+            reproduce::run(model.as_deref(), mode, &root, jobs.threads())?;
+        }
         Some(Command::Queries) => {
             for q in kumiki_core::models::QUERIES {
                 writeln!(out, "{} {}\t{}", q.model, q.name, q.description)?;
@@ -277,7 +312,7 @@ fn load_scenario(target: &str) -> Result<Scenario, Failure> {
     let path = Path::new(target);
     if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
-        return Scenario::from_json(&text).map_err(|e| Failure(format!("{target}: {e}")));
+        return Scenario::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")));
     }
     if target.contains('#') || target.starts_with(link::PREFIX) {
         return Ok(link::decode(target)?);
@@ -285,7 +320,7 @@ fn load_scenario(target: &str) -> Result<Scenario, Failure> {
     if presets::names().any(|n| n == target) {
         return Ok(presets::scenario(target)?);
     }
-    Err(Failure(format!(
+    Err(Failure::Run(format!(
         "'{target}' is not a file, a share link or a preset (see 'kumiki presets')"
     )))
 }
@@ -340,7 +375,7 @@ fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
     let path = Path::new(target);
     let experiment = if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
-        Experiment::from_json(&text).map_err(|e| Failure(format!("{target}: {e}")))?
+        Experiment::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")))?
     } else {
         Experiment::named_or_json(target)?
     };
@@ -379,7 +414,7 @@ impl Output {
         work: impl Fn(usize) -> Result<Row, String> + Sync,
     ) -> Result<(), Failure> {
         if self.shard.is_some() && self.format == Format::Csv {
-            return Err(Failure(
+            return Err(Failure::Run(
                 "a shard is written as JSON lines; give --format csv to kumiki merge instead"
                     .into(),
             ));
@@ -388,16 +423,9 @@ impl Output {
             Some(s) => s.jobs(total),
             None => (0..total).collect(),
         };
-        let bar = if self.progress && std::io::stderr().is_terminal() {
-            let bar = ProgressBar::new(indices.len() as u64).with_prefix(self.source.clone());
-            bar.set_style(
-                ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} runs, {eta} left")
-                    .expect("the template is valid")
-                    .progress_chars("#>."),
-            );
-            bar
-        } else {
-            ProgressBar::hidden()
+        let bar = match self.progress {
+            true => progress_bar(&self.source, indices.len()),
+            false => ProgressBar::hidden(),
         };
         let mut rows: Vec<Row> = Vec::new();
         pool::run_ordered(
@@ -431,4 +459,19 @@ impl Output {
         }
         Ok(())
     }
+}
+
+/// A progress bar over `total` runs on stderr, or a hidden one when stderr is not a terminal (a
+/// log file or a pipe gets no bar).
+pub fn progress_bar(prefix: &str, total: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    ProgressBar::new(total as u64)
+        .with_prefix(prefix.to_string())
+        .with_style(
+            ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} runs, {eta} left")
+                .expect("the template is valid")
+                .progress_chars("#>."),
+        )
 }
