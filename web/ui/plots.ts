@@ -108,11 +108,11 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
     series.push({ label: line.label, stroke: color, width: 2, points: { show: xs.length < 40 } });
     data.push(line.ys.map((y) => (Number.isFinite(y) ? y : null)));
     if (line.band) {
-      series.push({ label: `${line.label} (low)`, stroke: color + '55', width: 1, points: { show: false } });
-      series.push({ label: `${line.label} (high)`, stroke: color + '55', width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (low)`, stroke: `${color}55`, width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (high)`, stroke: `${color}55`, width: 1, points: { show: false } });
       data.push(line.band[0].map((y) => (Number.isFinite(y) ? y : null)));
       data.push(line.band[1].map((y) => (Number.isFinite(y) ? y : null)));
-      bands.push({ series: [idx + 2, idx + 1], fill: color + '22' });
+      bands.push({ series: [idx + 2, idx + 1], fill: `${color}22` });
     }
   });
   const width = Math.max(260, panel.clientWidth || panel.parentElement?.clientWidth || 340);
@@ -187,7 +187,7 @@ function trace(panel: HTMLElement, spec: Spec, rows: Row[]) {
   const seriesPath = str(spec, 'series');
   const spread = str(spec, 'spread', 'sd');
   const carry = str(spec, 'carry', 'last') === 'last';
-  const traced = rows.filter((r) => r.trace && r.trace.values[y]);
+  const traced = rows.filter((r) => r.trace?.values[y]);
   if (!traced.length) {
     panel.append(el('p', { class: 'hint', text: `No runs traced '${y}'.` }));
     return;
@@ -248,7 +248,7 @@ function histogram(box: HTMLElement, spec: Spec, rows: Row[]) {
     const st = stats(values);
     panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.median)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
     chart(panel, xs, [{ label: 'runs', ys: counts, band: null }], spec, short(path), 'runs', {
-      series: [{ label: short(path) }, { label: 'runs', fill: COLORS[0] + '99', stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
+      series: [{ label: short(path) }, { label: 'runs', fill: `${COLORS[0]}99`, stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
     });
   }
 }
