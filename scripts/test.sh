@@ -21,6 +21,9 @@ cargo clippy -p kumiki-wasm --target wasm32-unknown-unknown --all-targets --quie
 step "gate: biome lint (web/, tests/, scripts/)"
 npx --no-install biome lint --error-on-warnings
 
+step "TypeScript unit tests (vitest, tests/unit/)"
+npx --no-install vitest run
+
 step "native tests (cargo test)"
 cargo test --workspace --quiet
 

@@ -30,7 +30,8 @@ function groupBy<T>(items: T[], f: (t: T) => string): Map<string, T[]> {
   return m;
 }
 
-function stats(values: number[]) {
+/** Count, mean, sample sd, extremes and quartiles of the finite values. */
+export function stats(values: number[]) {
   const v = values.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
   const n = v.length;
   if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, median: NaN, q3: NaN };
@@ -46,7 +47,8 @@ function stats(values: number[]) {
   return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), median: q(0.5), q3: q(0.75) };
 }
 
-function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
+/** The band a plot draws around a mean: `minmax`, `sd`, `quartiles`, or none. */
+export function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
   if (spread === 'minmax') return [s.min, s.max];
   if (spread === 'sd') return [s.mean - s.sd, s.mean + s.sd];
   if (spread === 'quartiles') return [s.q1, s.q3];
