@@ -315,7 +315,18 @@ fn load_scenario(target: &str) -> Result<Scenario, Failure> {
         return Scenario::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")));
     }
     if target.contains('#') || target.starts_with(link::PREFIX) {
-        return Ok(link::decode(target)?);
+        let opened = link::open(target)?;
+        if opened.version_differs() {
+            let when = match opened.made_with < opened.current {
+                true => "an earlier",
+                false => "a newer",
+            };
+            eprintln!(
+                "kumiki: this link was made with {when} Kumiki ({} behaviour version {}, this one runs {}); results may differ",
+                opened.scenario.model, opened.made_with, opened.current
+            );
+        }
+        return Ok(opened.scenario);
     }
     if presets::names().any(|n| n == target) {
         return Ok(presets::scenario(target)?);
