@@ -36,6 +36,7 @@ let framesDrawn = 0;
 
 const banner = byId('banner');
 const bannerText = byId('banner-text');
+const linkNotice = byId('link-notice');
 function report(text: string) {
   bannerText.textContent = text;
   banner.hidden = false;
@@ -113,6 +114,7 @@ function load(json: string, { record = true, quiet = false } = {}): boolean {
   saveScenario(normal);
   sim.load(normal);
   if (location.hash) history_replace('');
+  linkNotice.hidden = true;
   updateUndo();
   return true;
 }
@@ -571,6 +573,10 @@ function openHash(): boolean {
   if (!hash) return false;
   try {
     const json = core.decodeLink(hash);
+    // A link made with another behaviour of its model opens, but its run may not be its maker's.
+    const { made_with, current } = core.linkVersions(hash);
+    linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+    linkNotice.hidden = made_with === current;
     if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
     saveScenario(json);
