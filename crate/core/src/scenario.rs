@@ -156,11 +156,14 @@ impl Scenario {
     }
 }
 
+/// A scenario document as JSON keys and values, before it is read into a [`Scenario`].
+pub type Document = Map<String, Value>;
+
 /// One step of the scenario format, from version `from` to `from + 1`: it rewrites a document of
 /// the older format (without its `version` key) into the newer one.
 pub struct Migration {
     pub from: u64,
-    pub apply: fn(Map<String, Value>) -> Result<Map<String, Value>>,
+    pub apply: fn(Document) -> Result<Document>,
 }
 
 /// Every step from an older scenario format to [`FORMAT_VERSION`]. Empty while version 1 is the
@@ -170,7 +173,7 @@ pub const MIGRATIONS: &[Migration] = &[];
 
 /// Brings a scenario document of format `version` (its `version` key taken out) up to
 /// [`FORMAT_VERSION`], one step at a time.
-pub fn migrate(version: u64, doc: Map<String, Value>) -> Result<Map<String, Value>> {
+pub fn migrate(version: u64, doc: Document) -> Result<Document> {
     migrate_with(MIGRATIONS, FORMAT_VERSION, version, doc)
 }
 
@@ -178,8 +181,8 @@ fn migrate_with(
     chain: &[Migration],
     current: u64,
     version: u64,
-    mut doc: Map<String, Value>,
-) -> Result<Map<String, Value>> {
+    mut doc: Document,
+) -> Result<Document> {
     if version > current {
         return Err(Error::field(
             "version",
@@ -411,7 +414,7 @@ mod tests {
     /// A synthetic format 0, older than any real one: it called the step limit `steps` and
     /// wrote the seed as text. Version 1 is the first real format, so the real chain is empty and
     /// the chain mechanism is tested with this one.
-    fn from_0(mut doc: Map<String, Value>) -> Result<Map<String, Value>> {
+    fn from_0(mut doc: Document) -> Result<Document> {
         if let Some(steps) = doc.remove("steps") {
             doc.insert("max_steps".into(), steps);
         }
