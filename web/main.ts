@@ -4,10 +4,10 @@ import { renderReproduction } from './ui/reproduction';
 import type { Hit } from './render/camera';
 import { View } from './render/view';
 import { SimClient } from './sim/client';
-import { History, loadPrefs, savePrefs, saveScenario, savedScenario } from './store';
+import { History, loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
 import type { Frame, Layout, Metrics } from './types';
 import { MetricChart } from './ui/chart';
-import { byId, clear, download, el, formatNumber, typingIn } from './ui/dom';
+import { byId, clear, displayText, download, el, formatNumber, typingIn } from './ui/dom';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { renderParams } from './ui/params';
@@ -37,13 +37,28 @@ let framesDrawn = 0;
 const banner = byId('banner');
 const bannerText = byId('banner-text');
 const linkNotice = byId('link-notice');
-function report(text: string) {
+const bannerAction = byId<HTMLButtonElement>('banner-action');
+/** Shows a message, with one button that offers a way out when `action` is given. */
+function report(text: string, action?: { label: string; run: () => void }) {
   bannerText.textContent = text;
+  bannerAction.hidden = !action;
+  if (action) bannerAction.textContent = action.label;
+  bannerAction.onclick = action
+    ? () => {
+        dismiss();
+        action.run();
+      }
+    : null;
   banner.hidden = false;
 }
 function dismiss() {
   banner.hidden = true;
 }
+/** Set while the banner explains the load that follows (a restart, a link that could not be
+ * opened), so that load does not clear it. */
+let keepBanner = false;
+/** The banner is showing the watchdog's message. */
+let stallShown = false;
 byId('banner-close').addEventListener('click', dismiss);
 
 // ---- simulation -------------------------------------------------------------------------------
@@ -59,6 +74,10 @@ const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('
 
 const sim = new SimClient({
   loaded(newLayout, json) {
+    // A scenario opened or the run was reset: an earlier message no longer applies.
+    if (!keepBanner) dismiss();
+    keepBanner = false;
+    loadedOpening = opening !== null;
     const shapeChanged = !layout || layout.lattice !== newLayout.lattice || layout.dims.join() !== newLayout.dims.join();
     layout = newLayout;
     scenario = json;
@@ -70,6 +89,12 @@ const sim = new SimClient({
     chart.reset(prefs.chartMetric);
   },
   frame(frame) {
+    if (opening !== null && loadedOpening) {
+      // It opened and drew: now it may be restored after a reload.
+      saveScenario(opening);
+      openedScenario();
+      opening = null;
+    }
     lastFrame = frame;
     document.body.dataset.ready = 'true';
     framesDrawn++;
@@ -95,10 +120,46 @@ const sim = new SimClient({
     else if (context === 'load') report(`This scenario cannot run: ${message}`);
     else report(message);
   },
+  stalled(ms) {
+    if (ms === 0) {
+      if (stallShown) {
+        dismiss();
+        keepBanner = false;
+      }
+      stallShown = false;
+      return;
+    }
+    stallShown = true;
+    keepBanner = true;
+    report(`The simulation has not answered for ${Math.round(ms / 1000)} s. It may be busy with a large scenario; your last good scenario is kept.`, {
+      label: 'Stop it and reload the last good scenario',
+      run: () => sim.recover(),
+    });
+  },
   panic(message) {
-    report(`The simulation stopped on an internal error and was restarted with the last good scenario.\n${message}`);
+    keepBanner = true;
+    const model = layout ? String((JSON.parse(scenario) as { model?: string }).model ?? 'the model') : 'the model';
+    const bug = [
+      `Kumiki ${core.version()} hit an internal error in ${model}.`,
+      message,
+      `Scenario: ${scenarioLink()}`,
+      `Browser: ${navigator.userAgent}`,
+    ].join('\n');
+    report(`Kumiki hit an internal error in ${model}; your scenario is kept and was restarted from its start.\n${message}`, {
+      label: 'Copy the report',
+      run: () => void navigator.clipboard?.writeText(bug).catch(() => download('kumiki-error-report.txt', bug, 'text/plain')),
+    });
   },
 });
+
+/** A link to the scenario in view, or its JSON when it cannot be encoded. */
+function scenarioLink(): string {
+  try {
+    return `${location.origin}${location.pathname}#${core.encodeLink(scenario)}`;
+  } catch {
+    return scenario;
+  }
+}
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false } = {}): boolean {
@@ -111,12 +172,32 @@ function load(json: string, { record = true, quiet = false } = {}): boolean {
   }
   if (record && scenario && normal !== scenario) history.push(scenario);
   scenario = normal;
-  saveScenario(normal);
-  sim.load(normal);
+  open(normal);
   if (location.hash) history_replace('');
   linkNotice.hidden = true;
   updateUndo();
   return true;
+}
+
+/** The scenario being opened; saved for reloads only once it has drawn a frame. */
+let opening: string | null = null;
+/** The worker has loaded the scenario being opened; its next frame is the new run's. */
+let loadedOpening = false;
+function open(json: string) {
+  opening = json;
+  loadedOpening = false;
+  noteOpening(json);
+  sim.load(json);
+}
+
+/** Whoever opens a shared link sees its name and description first. */
+function introduce(json: string) {
+  const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
+  byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
+  byId('intro-model').textContent = String(doc.model ?? '');
+  byId('intro-description').textContent = displayText(doc.description ?? '', 4000, true) || 'It comes with no description.';
+  const dialog = byId<HTMLDialogElement>('intro');
+  if (!dialog.open) dialog.showModal();
 }
 
 function history_replace(hash: string) {
@@ -453,9 +534,10 @@ function applyChange(key: string, valueJson: string, onError?: (problem: string)
 
 function renderScenarioPanel() {
   const doc = JSON.parse(scenario) as Record<string, unknown>;
-  byId('scenario-name').textContent = String(doc.name || 'untitled scenario');
+  const name = displayText(String(doc.name ?? ''), 100);
+  byId('scenario-name').textContent = name || 'untitled scenario';
   byId('scenario-model').textContent = String(doc.model ?? '');
-  document.title = `${String(doc.name || 'untitled')} · Kumiki`;
+  document.title = `${name || 'untitled'} · Kumiki`;
   seedInput.value = String(doc.seed ?? 0);
   const model = String(doc.model);
   const spec = modelEditors[model];
@@ -579,9 +661,9 @@ function openHash(): boolean {
     linkNotice.hidden = made_with === current;
     if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
-    saveScenario(json);
-    sim.load(json);
+    open(json);
     updateUndo();
+    introduce(json);
     dismiss();
     return true;
   } catch (e) {
@@ -693,7 +775,22 @@ async function start() {
   setupGallery(core.presets(), (name) => load(core.presetJson(name)));
   setupExperiments(prefs, persistPrefs, report);
   selectTab(tabs.includes(prefs.tab) ? prefs.tab : 'run');
+  const unfinished = openingScenario();
+  if (unfinished !== null) {
+    // The page was closed or stopped while a scenario was opening: it may be what stopped it.
+    openedScenario();
+    load(core.presetJson(DEFAULT_PRESET), { record: false });
+    if (location.hash) history_replace('');
+    keepBanner = true;
+    report('The last scenario did not finish opening before the page closed, so the default one is shown. It may be too large for this device.', {
+      label: 'Open it anyway',
+      run: () => load(unfinished),
+    });
+    return;
+  }
   if (openHash()) return;
+  // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
+  keepBanner = !banner.hidden;
   const saved = savedScenario();
   if (!(saved && load(saved, { record: false, quiet: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false });
 }

@@ -136,8 +136,9 @@ describe('the page', () => {
     await page.click('#tab-about');
     await page.click('#simulate-crash');
     await page.waitForSelector('#banner:not([hidden])');
-    assert.match(await page.textContent('#banner-text'), /internal error/);
+    assert.match(await page.textContent('#banner-text'), /Kumiki hit an internal error in amas; your scenario is kept/);
     assert.match(await page.textContent('#banner-text'), /simulated panic/);
+    assert.equal(await page.textContent('#banner-action'), 'Copy the report');
     await waitForHashAt(page, 0);
     assert.equal(await hashOf(page), initial);
     await page.click('#step');

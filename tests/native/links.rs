@@ -145,13 +145,21 @@ fn damaged_links_are_errors_that_say_so() {
         ("", "starts with"),
         ("#hello", "starts with"),
         ("#k9.abcdef", "another Kumiki version"),
-        ("#k1.***", "damaged"),
+        (
+            "#k1.***",
+            "damaged: it holds '*', which no Kumiki link has (character 1",
+        ),
+        ("#k1.ab%20", "'%'"),
         (&good[..good.len() / 2], "damaged"),
     ];
     for (input, expect) in cases {
         let err = link::decode(input).unwrap_err();
         assert!(matches!(err, Error::Link(_)), "{input}: {err}");
         assert!(err.to_string().contains(expect), "{input}: {err}");
+        assert!(
+            !err.to_string().contains("Invalid symbol"),
+            "{input}: {err}"
+        );
     }
 }
 

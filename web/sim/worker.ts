@@ -229,13 +229,18 @@ function handle(msg: ToWorker) {
     case 'crash':
       guard('step', () => simulate_panic());
       return;
+    case 'ping':
+      return;
   }
 }
 
 const queue: ToWorker[] = [];
 let ready = false;
 scope.onmessage = (e: MessageEvent<ToWorker>) => {
-  if (ready) handle(e.data);
+  // Answered at once, even before the wasm is ready: the page's watchdog asks whether this
+  // thread still takes messages at all.
+  if (e.data.type === 'ping') post({ type: 'pong', id: e.data.id });
+  else if (ready) handle(e.data);
   else queue.push(e.data);
 };
 

@@ -10,6 +10,7 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
 
 pub mod error;
+pub mod exercise;
 pub mod experiment;
 pub mod hash;
 pub mod lattice;

@@ -86,6 +86,14 @@ pub fn open(link: &str) -> Result<Opened> {
     })
 }
 
+/// A byte as a person can read it: a visible character in quotes, anything else by its code.
+fn shown_byte(byte: u8) -> String {
+    match byte {
+        b'!'..=b'~' => format!("'{}'", byte as char),
+        _ => format!("the byte 0x{byte:02x}"),
+    }
+}
+
 /// The JSON inside a link (the scenario and its model version), not yet validated.
 pub fn decode_json(link: &str) -> Result<String> {
     let link = link.trim();
@@ -107,7 +115,14 @@ pub fn decode_json(link: &str) -> Result<String> {
     })?;
     let packed = URL_SAFE_NO_PAD
         .decode(payload.trim_end_matches('='))
-        .map_err(|e| Error::Link(format!("the link is damaged or cut short ({e})")))?;
+        .map_err(|e| match e {
+            base64::DecodeError::InvalidByte(at, byte) => Error::Link(format!(
+                "the link is damaged: it holds {}, which no Kumiki link has (character {} after '{PREFIX}')",
+                shown_byte(byte),
+                at + 1
+            )),
+            _ => Error::Link("the link is damaged or cut short".into()),
+        })?;
     let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_SCENARIO_BYTES)
         .map_err(|e| match e.status {
             miniz_oxide::inflate::TINFLStatus::HasMoreOutput => Error::Link(format!(

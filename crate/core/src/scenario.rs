@@ -28,6 +28,9 @@ pub const FORMAT_VERSION: u64 = 1;
 pub const MAX_SEED: u64 = (1 << 53) - 1;
 /// No run may ask for more steps than this.
 pub const MAX_STEPS: u64 = 100_000_000;
+/// The longest name and description, in characters: a link's title stays a title.
+pub const MAX_NAME_CHARS: usize = 100;
+pub const MAX_DESCRIPTION_CHARS: usize = 4000;
 
 const ENVELOPE: [&str; 7] = [
     "version",
@@ -75,8 +78,8 @@ impl Scenario {
         let model = take_string(&mut map, "model", None)?;
         let entry = models::entry(&model)?;
         let mut scenario = Scenario {
-            name: take_string(&mut map, "name", Some(""))?,
-            description: take_string(&mut map, "description", Some(""))?,
+            name: take_text(&mut map, "name", MAX_NAME_CHARS)?,
+            description: take_text(&mut map, "description", MAX_DESCRIPTION_CHARS)?,
             seed: take_u64(&mut map, "seed", Some(1), MAX_SEED)?,
             max_steps: take_u64(
                 &mut map,
@@ -301,6 +304,19 @@ fn take_string(map: &mut Map<String, Value>, key: &str, default: Option<&str>) -
     }
 }
 
+/// Optional text of at most `max` characters.
+fn take_text(map: &mut Map<String, Value>, key: &str, max: usize) -> Result<String> {
+    let text = take_string(map, key, Some(""))?;
+    let chars = text.chars().count();
+    match chars <= max {
+        true => Ok(text),
+        false => Err(Error::field(
+            key,
+            format!("{chars} characters is too long; at most {max}"),
+        )),
+    }
+}
+
 fn as_u64(key: &str, value: &Value, max: u64) -> Result<u64> {
     match value.as_u64() {
         Some(n) if n <= max => Ok(n),
@@ -480,6 +496,25 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(err.contains("newer Kumiki"), "{err}");
+    }
+
+    #[test]
+    fn long_names_and_descriptions_are_refused_by_length() {
+        let doc = |name: &str, description: &str| {
+            let mut doc = crate::presets::scenario("amas-L").unwrap().to_value();
+            doc["name"] = name.into();
+            doc["description"] = description.into();
+            doc
+        };
+        assert!(Scenario::from_value(doc(&"n".repeat(MAX_NAME_CHARS), "")).is_ok());
+        let err = Scenario::from_value(doc(&"é".repeat(MAX_NAME_CHARS + 1), ""))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(err, "name: 101 characters is too long; at most 100");
+        let err = Scenario::from_value(doc("x", &"d".repeat(MAX_DESCRIPTION_CHARS + 1)))
+            .unwrap_err()
+            .to_string();
+        assert!(err.starts_with("description: 4001 characters"), "{err}");
     }
 
     #[test]
