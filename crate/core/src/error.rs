@@ -92,10 +92,7 @@ pub(crate) fn plain(message: &str) -> String {
         );
     }
     if let Some(rest) = message.strip_prefix("unknown variant ") {
-        return format!(
-            "{}",
-            ticked(rest).replace(", expected", " is not a choice; expected")
-        );
+        return ticked(rest).replace(", expected", " is not a choice; expected");
     }
     let found_expected = message
         .strip_prefix("invalid type: ")
