@@ -36,6 +36,7 @@ let framesDrawn = 0;
 
 const banner = byId('banner');
 const bannerText = byId('banner-text');
+const linkNotice = byId('link-notice');
 const bannerAction = byId<HTMLButtonElement>('banner-action');
 /** Shows a message, with one button that offers a way out when `action` is given. */
 function report(text: string, action?: { label: string; run: () => void }) {
@@ -177,6 +178,7 @@ function load(json: string, { record = true, quiet = false } = {}): boolean {
   scenario = normal;
   open(normal);
   if (location.hash) history_replace('');
+  linkNotice.hidden = true;
   updateUndo();
   return true;
 }
@@ -673,6 +675,10 @@ function openHash(): boolean {
   if (!hash) return false;
   try {
     const json = core.decodeLink(hash);
+    // A link made with another behaviour of its model opens, but its run may not be its maker's.
+    const { made_with, current } = core.linkVersions(hash);
+    linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+    linkNotice.hidden = made_with === current;
     if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
     open(json);

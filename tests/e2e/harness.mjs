@@ -108,6 +108,11 @@ export async function stepCount(page) {
   return Number((await page.textContent('#step-count')).replace(/,/g, ''));
 }
 
+/** Resolves once the page has drawn two more animation frames: whatever was requested is drawn. */
+export async function settle(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
 export async function waitForSteps(page, atLeast, timeout = 20000) {
   await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) >= n, atLeast, { timeout });
   return stepCount(page);

@@ -116,6 +116,7 @@ describe('a shared link', () => {
     await page.waitForSelector('#intro[open]');
     assert.equal(await page.textContent('#intro-title'), 'Class 3: exercise');
     assert.equal(await page.textContent('#intro-model'), 'amas');
+    // biome-ignore lint/performance/useDomNodeTextContent: innerText is the text as laid out, line breaks included.
     assert.equal(await page.$eval('#intro-description', (p) => p.innerText), 'Line one.\nLine two, with <b>markup</b> that stays text.');
     await page.keyboard.press('Escape');
     await page.waitForSelector('#intro', { state: 'hidden' });

@@ -1,7 +1,9 @@
 //! The exported handle as JavaScript sees it, run in headless Node.
 #![cfg(target_arch = "wasm32")]
 
-use kumiki_wasm::{decode_link, encode_link, model_query, preset_json, ExperimentRunner, Sim};
+use kumiki_wasm::{
+    decode_link, encode_link, link_model_versions, model_query, preset_json, ExperimentRunner, Sim,
+};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test]
@@ -28,6 +30,15 @@ fn link_round_trip_in_wasm() {
         decode_link(&format!("https://x.example/kumiki/#{link}")).unwrap(),
         json
     );
+    let versions = link_model_versions(&link).unwrap();
+    let get = |key: &str| {
+        js_sys::Reflect::get(&versions, &key.into())
+            .unwrap()
+            .as_f64()
+    };
+    // A link made now carries the running model's version.
+    assert!(get("current").is_some_and(|v| v >= 1.0));
+    assert_eq!(get("made_with"), get("current"));
 }
 
 #[wasm_bindgen_test]

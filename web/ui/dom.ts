@@ -58,6 +58,7 @@ export function typingIn(target: EventTarget | null): boolean {
 
 // Bidirectional controls (LRM, RLM, ALM, the embeddings, overrides and isolates) can make a name
 // read as something else; NUL and other control characters have no business in a title.
+// biome-ignore lint/suspicious/noControlCharactersInRegex: finding control characters is its purpose.
 const HIDDEN = /[\u0000-\u0008\u000b-\u001f\u007f-\u009f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
 
 /**

@@ -1,6 +1,5 @@
 //! `kumiki reproduce`: runs every model's paper experiments and writes the reproduction report.
 
-use std::io::IsTerminal;
 use std::path::Path;
 
 use kumiki_core::experiment::{Experiment, Row};
@@ -38,32 +37,20 @@ pub fn sections(papers: &[&Paper], threads: usize) -> Result<Vec<Section>, Failu
         .enumerate()
         .flat_map(|(e, x)| x.jobs().into_iter().map(move |j| (e, j)))
         .collect();
-    let total = jobs.len();
-    let progress = std::io::stderr().is_terminal();
+    let bar = crate::progress_bar("reproduce", jobs.len());
     let mut rows: Vec<Vec<Row>> = vec![Vec::new(); experiments.len()];
-    let mut done = 0usize;
     pool::run_ordered(
-        total,
+        jobs.len(),
         threads,
         |i| experiments[jobs[i].0].run_job(&jobs[i].1),
         |i, row| {
             let row = row.map_err(|e| Failure::Run(format!("{}: {e}", names[jobs[i].0])))?;
             rows[jobs[i].0].push(row);
-            done += 1;
-            if progress {
-                let filled = done * 30 / total.max(1);
-                eprint!(
-                    "\rreproduce [{}{}] {done}/{total} runs",
-                    "#".repeat(filled),
-                    ".".repeat(30 - filled)
-                );
-                if done == total {
-                    eprintln!();
-                }
-            }
+            bar.inc(1);
             Ok::<(), Failure>(())
         },
     )?;
+    bar.finish_and_clear();
     let mut results = Results::new();
     for (name, rows) in names.iter().zip(rows) {
         results.insert(name, rows);

@@ -113,6 +113,22 @@ pub fn decode_link(link_text: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+/// The behaviour version of its model that made a link, and this program's:
+/// `{made_with, current}`. The page warns when they differ.
+#[wasm_bindgen]
+pub fn link_model_versions(link_text: &str) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Versions {
+        made_with: u32,
+        current: u32,
+    }
+    let opened = link::open(link_text).map_err(js_err)?;
+    to_js(&Versions {
+        made_with: opened.made_with,
+        current: opened.current,
+    })
+}
+
 /// Applies one dotted-path override to scenario JSON and returns the validated result.
 #[wasm_bindgen]
 pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {

@@ -36,6 +36,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
+    model_version: 1,
     build: |s| Ok(Box::new(Fracta::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
