@@ -171,7 +171,7 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
         metrics: &outcome.metrics,
         scenario: &doc,
     });
-    let locked_edited = exercise
+    let locked_edited: Vec<String> = exercise
         .locked_changes(&doc)
         .into_iter()
         .map(|(path, want, got)| format!("{path}: {want} → {got}"))
@@ -186,13 +186,20 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
         ),
         None => (Vec::new(), false),
     };
+    let mut because = check.because;
+    if !locked_edited.is_empty() {
+        because = format!(
+            "the hand-in changed locked fields ({}); {because}",
+            locked_edited.join(", ")
+        );
+    }
+    if exercise_edited {
+        because = format!("the hand-in edited the exercise itself; {because}");
+    }
     Ok(Grade {
         name: handin.name.clone(),
-        met: check.met && !exercise_edited,
-        because: match exercise_edited {
-            true => format!("the hand-in edited the exercise itself; {}", check.because),
-            false => check.because,
-        },
+        met: check.met && !exercise_edited && locked_edited.is_empty(),
+        because,
         completed: outcome.completed,
         steps: outcome.steps,
         hash: outcome.hash,
@@ -1151,6 +1158,13 @@ mod tests {
         let tampered = teacher.with_override("robots", json!(9)).unwrap();
         let g = grade(&tampered, None).unwrap();
         assert_eq!(g.locked_edited, vec!["robots: 5 → 9"]);
+        assert!(!g.met);
+        assert!(
+            g.because
+                .starts_with("the hand-in changed locked fields (robots: 5 → 9); "),
+            "{}",
+            g.because
+        );
 
         let mut cheat = fair.clone();
         cheat.exercise.as_mut().unwrap().goal = "true".into();
