@@ -110,7 +110,11 @@ const sim = new SimClient({
     button.setAttribute('aria-pressed', String(on));
   },
   scenario(json) {
+    // A click recorded a disturbance (and, in the past, forked the run): undo brings back the
+    // scenario before it.
+    if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
+    updateUndo();
     saveScenario(json);
     renderDisturbanceNote();
     syncJsonEditor();
@@ -223,6 +227,15 @@ speed.value = String(prefs.speedIndex);
 speed.addEventListener('input', applySpeed);
 applySpeed();
 
+const timeline = byId<HTMLInputElement>('timeline');
+/** While the timeline is dragged, frames do not move its thumb under the pointer. */
+let timelineDragging = false;
+timeline.addEventListener('input', () => sim.seek(Number(timeline.value)));
+timeline.addEventListener('pointerdown', () => (timelineDragging = true));
+timeline.addEventListener('pointerup', () => (timelineDragging = false));
+timeline.addEventListener('pointercancel', () => (timelineDragging = false));
+const stepBack = () => lastFrame && lastFrame.steps > 0 && sim.seek(lastFrame.steps - 1);
+
 const togglePlay = () => (playing ? sim.pause() : sim.play());
 const stepOnce = () => sim.step(1);
 const reset = () => {
@@ -268,6 +281,13 @@ function showFrame(frame: Frame) {
   const status = byId('run-status');
   status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? 'step limit reached' : '';
   status.classList.toggle('failed', frame.finished && !frame.completed);
+  if (!timelineDragging) {
+    timeline.max = String(frame.furthest);
+    timeline.value = String(frame.steps);
+  }
+  timeline.setAttribute('aria-valuetext', `step ${frame.steps} of ${frame.furthest}`);
+  byId('timeline-out').textContent = `${frame.steps.toLocaleString('en-US')} / ${frame.furthest.toLocaleString('en-US')}`;
+  chart.truncate(frame.furthest);
   const bar = byId('run-progress');
   const pct = frame.completed ? 100 : Math.min(100, (100 * frame.steps) / Math.max(1, frame.maxSteps));
   (bar.firstElementChild as HTMLElement).style.width = `${pct}%`;
@@ -707,7 +727,6 @@ for (const t of tabs) {
 
 document.addEventListener('keydown', (e) => {
   if (e.defaultPrevented || typingIn(e.target) || (document.querySelector('dialog[open]') && e.key !== 'Escape')) return;
-  const onButton = e.target instanceof HTMLButtonElement || e.target instanceof HTMLAnchorElement || e.target instanceof HTMLElement && e.target.tagName === 'SUMMARY';
   if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z') {
     e.preventDefault();
     if (e.shiftKey) redo();
@@ -715,15 +734,23 @@ document.addEventListener('keydown', (e) => {
     return;
   }
   if (e.ctrlKey || e.metaKey || e.altKey) return;
+  // The page's keys act only when no control has the focus: Space on a checkbox ticks it, and
+  // the arrows move sliders and tool groups. Left steps back only from the view.
+  const onView = e.target === byId('view');
+  if (!onView && e.target instanceof HTMLElement && e.target !== document.body && e.target.closest('input, select, textarea, button, a, summary, [role="radiogroup"], [role="tablist"], [tabindex]')) return;
   switch (e.key) {
     case ' ':
-      if (onButton) return;
       e.preventDefault();
       togglePlay();
       return;
     case 'ArrowRight':
       e.preventDefault();
       stepOnce();
+      return;
+    case 'ArrowLeft':
+      if (!onView) return;
+      e.preventDefault();
+      stepBack();
       return;
     case 'r':
     case 'R':

@@ -132,6 +132,10 @@ export class SimClient {
   step(count = 1) {
     this.send({ type: 'step', count });
   }
+  /** Goes to an earlier (or, up to the furthest reached, later) step of the run. */
+  seek(step: number) {
+    this.send({ type: 'seek', step });
+  }
   setSpeed(stepsPerSecond: number) {
     this.speed = stepsPerSecond;
     this.send({ type: 'speed', stepsPerSecond });

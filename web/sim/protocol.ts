@@ -6,6 +6,7 @@ export type ToWorker =
   | { type: 'play' }
   | { type: 'pause' }
   | { type: 'step'; count: number }
+  | { type: 'seek'; step: number }
   | { type: 'speed'; stepsPerSecond: number }
   | { type: 'overlay'; field: string | null }
   | { type: 'apply'; action: string }

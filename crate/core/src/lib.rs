@@ -23,6 +23,7 @@ pub mod rng;
 pub mod run;
 pub mod scenario;
 pub mod shape;
+pub mod timeline;
 
 pub use error::{Error, Result};
 pub use experiment::{Experiment, Row};

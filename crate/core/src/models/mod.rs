@@ -112,8 +112,20 @@ pub struct Event {
     pub kind: u8,
 }
 
+/// A copy of a model in the middle of its run, for keyframes ([`crate::timeline`]). Every
+/// model gets it by deriving `Clone`.
+pub trait Snapshot {
+    fn snapshot(&self) -> Box<dyn Model>;
+}
+
+impl<T: Model + Clone + 'static> Snapshot for T {
+    fn snapshot(&self) -> Box<dyn Model> {
+        Box::new(self.clone())
+    }
+}
+
 /// A simulation model. Implementations are deterministic functions of their scenario and seed.
-pub trait Model {
+pub trait Model: Snapshot {
     fn layout(&self) -> Layout;
     /// Advances one step.
     fn step(&mut self);

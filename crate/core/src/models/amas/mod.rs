@@ -87,6 +87,7 @@ const VISITING: u8 = 1;
 const MOVES: u8 = 2;
 const STAYS: u8 = 3;
 
+#[derive(Clone)]
 pub struct Amas {
     w: usize,
     h: usize,

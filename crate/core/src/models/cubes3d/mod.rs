@@ -169,6 +169,7 @@ fn default_stable_steps() -> u32 {
 
 /// A target: its type-lists (unit type and six padded neighbour slots each) and a shape to draw
 /// as a ghost when the scenario gave one.
+#[derive(Clone)]
 struct Target {
     name: String,
     lists: Vec<[u8; 7]>,
@@ -177,6 +178,7 @@ struct Target {
     hold_lit: bool,
 }
 
+#[derive(Clone)]
 pub struct Cubes {
     st: Structure,
     /// Flags per cell (`HELD_*`), moving with their unit.

@@ -175,6 +175,7 @@ struct Plan {
     turn: Turn,
 }
 
+#[derive(Clone)]
 pub struct Fracta {
     lattice: Hex,
     /// Neighbour cell of each cell in each direction, or `NO_UNIT` outside the lattice.
