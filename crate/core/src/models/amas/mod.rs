@@ -61,6 +61,8 @@ struct Robot {
     give_way: bool,
     /// Moved at random at its last plan: no effective gradient (footnote 3).
     lost: bool,
+    /// The highest row (smallest y) it has stood on.
+    top: u32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -115,6 +117,9 @@ pub struct Amas {
     releasable: Vec<u64>,
     /// The structure changed since `releasable` was computed.
     dirty: bool,
+    /// Some module to be removed may go now: the disassembly area is the module supply and
+    /// the conveyor stops offering modules, so dismantled modules are reused (section 6).
+    reuse: bool,
     /// Stage targets as bit sets over the rows above the supply, the final target last.
     stages: Vec<Vec<u64>>,
     stage: usize,
@@ -136,6 +141,10 @@ pub struct Amas {
     broken: u64,
     lower_bound: u64,
     path_bound: u64,
+    /// Figure 24: the lowest row where the final target narrows (the corner robots pass to
+    /// reach the narrower part), or its top row if it never narrows.
+    corner_row: u32,
+    corner_relays: u64,
     events: Vec<Event>,
 }
 
@@ -178,6 +187,11 @@ impl Amas {
             sh,
             u64::from(plan.robots),
         );
+        let corner_row = corner_row(
+            plan.stages.last().expect("the target is always there"),
+            w,
+            sh,
+        );
         let supply_cells = w * plan.supply_rows as usize;
         let mut place_rng = Rng::stream(scenario.seed, STREAM_PLACEMENT);
         let starts = place_rng.sample_distinct(supply_cells, plan.robots as usize);
@@ -194,6 +208,7 @@ impl Amas {
                     busy: 0,
                     give_way: false,
                     lost: false,
+                    top: (cell / w) as u32,
                 }
             })
             .collect();
@@ -224,6 +239,7 @@ impl Amas {
             disturb_rng: Rng::stream(scenario.seed, STREAM_DISTURBANCE),
             releasable: vec![0; n.div_ceil(64)],
             dirty: true,
+            reuse: false,
             stages,
             stage: 0,
             return_mode: false,
@@ -242,6 +258,8 @@ impl Amas {
             broken: 0,
             lower_bound,
             path_bound,
+            corner_row,
+            corner_relays: 0,
             events: Vec::new(),
         };
         m.recount();
@@ -318,7 +336,7 @@ impl Amas {
                 if self.return_mode {
                     front = true;
                 } else {
-                    source = true;
+                    source |= !self.reuse;
                 }
             }
             (s & !(FRONT | SOURCE))
@@ -350,6 +368,13 @@ impl Amas {
         }
         for i in changed {
             self.refresh_around(i);
+        }
+        let reuse = self.releasable.iter().any(|&b| b != 0);
+        if reuse != self.reuse {
+            self.reuse = reuse;
+            for i in self.supply_top * self.w..self.state.len() {
+                self.refresh(i);
+            }
         }
     }
 
@@ -596,6 +621,21 @@ impl Amas {
         self.pick_lowest(&opts[..n])
     }
 
+    /// A vacant target site among `nb`, chosen at random; on a blackboard, not one another
+    /// robot has already claimed.
+    fn vacant_site(&mut self, nb: &[usize], board: bool) -> Option<u32> {
+        let mut opts = [0u32; 4];
+        let mut n = 0;
+        for &j in nb {
+            let t = self.state[j];
+            if t & VACANT != 0 && !(board && t & CLAIMED != 0) {
+                opts[n] = j as u32;
+                n += 1;
+            }
+        }
+        self.pick_random(&opts[..n])
+    }
+
     /// What robot `r` wants to do this step.
     fn decide(&mut self, r: usize) -> Plan {
         let rb = self.robots[r];
@@ -610,8 +650,15 @@ impl Amas {
             }
         }
         if s & ACTIVE_MASK != MODULE {
-            // A broken module tells the robot nothing: it walks at random.
+            // A broken module tells the robot nothing. A loaded robot still knows the target
+            // shape and its coordinates (4.1) and sees the sites next to it, so it fills a
+            // vacant target site beside it; otherwise it walks at random.
             let (nb, k) = self.neighbours(i);
+            if rb.loaded {
+                if let Some(t) = self.vacant_site(&nb[..k], board) {
+                    return Plan::Place(t);
+                }
+            }
             let mut walk = [0u32; 4];
             let mut n = 0;
             for &j in &nb[..k] {
@@ -629,17 +676,8 @@ impl Amas {
                 if s & CONVEYOR != 0 && self.return_mode {
                     return Plan::Return;
                 }
-                let mut opts = [0u32; 4];
-                let mut n = 0;
-                for &j in &nb[..k] {
-                    let t = self.state[j];
-                    if t & VACANT != 0 && !(board && t & CLAIMED != 0) {
-                        opts[n] = j as u32;
-                        n += 1;
-                    }
-                }
-                if n > 0 {
-                    return self.pick_random(&opts[..n]).map_or(Plan::Wait, Plan::Place);
+                if let Some(t) = self.vacant_site(&nb[..k], board) {
+                    return Plan::Place(t);
                 }
                 if board {
                     return Plan::Wait;
@@ -666,7 +704,7 @@ impl Amas {
                     .pick_random(&opts[..n])
                     .map_or(Plan::Wait, Plan::Remove);
             }
-            if s & CONVEYOR != 0 && !self.return_mode {
+            if s & CONVEYOR != 0 && !self.return_mode && !self.reuse {
                 return Plan::Pick;
             }
         }
@@ -886,6 +924,12 @@ impl Amas {
                     self.robots[r].busy = self.p.relay_d - 1;
                     self.robots[o].busy = self.p.relay_d - 1;
                     self.relays += 1;
+                    // At the corner: the handing robot stands on the corner row or the row
+                    // below it.
+                    let row = self.robots[r].cell / self.w as u32;
+                    if row == self.corner_row || row == self.corner_row + 1 {
+                        self.corner_relays += 1;
+                    }
                     self.events.push(Event {
                         cell: t,
                         kind: EV_RELAY,
@@ -936,6 +980,7 @@ impl Amas {
                 if self.status[r] == MOVES {
                     self.occupant[t as usize] = r as u32;
                     self.robots[r].cell = t;
+                    self.robots[r].top = self.robots[r].top.min(t / self.w as u32);
                     self.robots[r].busy = self.p.move_d - 1;
                 }
             }
@@ -1011,6 +1056,17 @@ impl Amas {
             (self.target_cells - self.vacant) as f64 / self.target_cells as f64
         }
     }
+}
+
+/// The row of the corner of figure 24: going up from the supply, the first row of `target`
+/// holding fewer cells than the row below it; the top row of the target if none does.
+fn corner_row(target: &[bool], w: usize, sh: usize) -> u32 {
+    let count = |y: usize| target[y * w..(y + 1) * w].iter().filter(|&&c| c).count();
+    let top = (0..sh).find(|&y| count(y) > 0).unwrap_or(0);
+    (top..sh.saturating_sub(1))
+        .rev()
+        .find(|&y| count(y) < count(y + 1))
+        .unwrap_or(top) as u32
 }
 
 /// Footnote 2 and the tighter bound through the shape: Σ 2·d over the modules to assemble,
@@ -1168,6 +1224,7 @@ impl Model for Amas {
         );
         m.insert("collisions".into(), self.collisions.into());
         m.insert("relays".into(), self.relays.into());
+        m.insert("corner_relays".into(), self.corner_relays.into());
         m.insert("lower_bound".into(), self.lower_bound.into());
         m.insert("path_bound".into(), self.path_bound.into());
         m.insert("built".into(), json!(self.built_fraction()));
@@ -1178,6 +1235,15 @@ impl Model for Amas {
         m.insert("removed".into(), self.removed.into());
         m.insert("broken".into(), self.broken.into());
         m.insert("stage".into(), (self.stage as u64 + 1).into());
+        let below = self
+            .robots
+            .iter()
+            .filter(|r| r.top > self.corner_row)
+            .count();
+        m.insert(
+            "never_past_corner".into(),
+            json!(below as f64 / self.robots.len() as f64),
+        );
         m
     }
 
