@@ -22,7 +22,7 @@ mod field;
 mod spec;
 mod state;
 
-pub use spec::{Collision, FieldKind, MAX_SIDE, MAX_SUPPLY_ROWS};
+pub use spec::{Collision, Communication, FieldKind, MAX_SIDE, MAX_SUPPLY_ROWS};
 
 use field::{Field, FAR};
 use spec::{Params, Spec};
@@ -63,7 +63,12 @@ struct Robot {
     lost: bool,
     /// The highest row (smallest y) it has stood on.
     top: u32,
+    /// The direction it faces (see [`Amas::heading_to`]): a move another way turns first.
+    heading: u8,
 }
+
+/// Robots start facing up, towards the structure.
+const UP: u8 = 1;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Plan {
@@ -209,6 +214,7 @@ impl Amas {
                     give_way: false,
                     lost: false,
                     top: (cell / w) as u32,
+                    heading: UP,
                 }
             })
             .collect();
@@ -813,6 +819,10 @@ impl Amas {
         if self.status[r] != UNKNOWN {
             return;
         }
+        if self.p.communication == Communication::Radius2 {
+            self.status[r] = if self.moves_locally(r) { MOVES } else { STAYS };
+            return;
+        }
         self.chain.clear();
         let mut cur = r;
         let result = loop {
@@ -841,6 +851,37 @@ impl Amas {
         };
         for &q in &self.chain {
             self.status[q as usize] = result;
+        }
+    }
+
+    /// Appendix A.1 (2): with radius-2 communication robot `r` sees the robot on its target
+    /// and that robot's target, no further. It moves onto a free module, or follows a robot
+    /// that moves onto a free module (claims are exclusive, so that robot surely moves).
+    fn moves_locally(&self, r: usize) -> bool {
+        let Plan::Move(t) = self.plans[r] else {
+            return false;
+        };
+        match self.occupant[t as usize] {
+            NONE => true,
+            o => match self.plans[o as usize] {
+                Plan::Move(t2) => self.occupant[t2 as usize] == NONE,
+                _ => false,
+            },
+        }
+    }
+
+    /// The direction of a move from cell `a` to its neighbour `b`: 0 right, 1 up, 2 left,
+    /// 3 down.
+    fn heading_to(&self, a: u32, b: u32) -> u8 {
+        let w = self.w as u32;
+        if b == a + 1 {
+            0
+        } else if b + w == a {
+            1
+        } else if b + 1 == a {
+            2
+        } else {
+            3
         }
     }
 
@@ -978,10 +1019,17 @@ impl Amas {
         for r in 0..n {
             if let Plan::Move(t) = self.plans[r] {
                 if self.status[r] == MOVES {
+                    let heading = self.heading_to(self.robots[r].cell, t);
+                    let turn = if heading == self.robots[r].heading {
+                        0
+                    } else {
+                        self.p.turn_d
+                    };
                     self.occupant[t as usize] = r as u32;
                     self.robots[r].cell = t;
+                    self.robots[r].heading = heading;
                     self.robots[r].top = self.robots[r].top.min(t / self.w as u32);
-                    self.robots[r].busy = self.p.move_d - 1;
+                    self.robots[r].busy = self.p.move_d - 1 + turn;
                 }
             }
         }
@@ -1265,6 +1313,10 @@ impl Model for Amas {
             h.bool(r.loaded);
             h.u32(r.busy);
             h.bool(r.give_way);
+            // The heading only matters, and only enters the hash, when turns take time.
+            if self.p.turn_d > 0 {
+                h.u8(r.heading);
+            }
         }
         for v in [
             self.collisions,
