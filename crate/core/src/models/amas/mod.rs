@@ -19,6 +19,7 @@ use crate::scenario::Scenario;
 
 mod actions;
 mod field;
+pub mod paper;
 mod spec;
 mod state;
 
