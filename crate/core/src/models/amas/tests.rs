@@ -1,5 +1,11 @@
+use std::collections::VecDeque;
+
+use super::field::FAR;
+use super::state::{code, CLAIMED, CONVEYOR, FRONT, MODULE, SOURCE, VACANT};
+use super::view::action;
 use super::*;
 use crate::run::Run;
+use crate::scenario::Scenario;
 use proptest::prelude::*;
 
 const L: &str = "##....\n##....\n##....\n######\n######\n";
