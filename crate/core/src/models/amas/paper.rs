@@ -357,7 +357,10 @@ fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         "§5.5, fig. 27",
         "When the number of disturbances does not exceed some threshold, efficiency is not much \
          affected by the disturbances.",
-        format!("median steps against the undisturbed run: {}", text.join("; ")),
+        format!(
+            "median steps against the undisturbed run: {}",
+            text.join("; ")
+        ),
         r.rows("amas-fig27").len(),
         Verdict::from(flat),
         "Holds if the fewest disturbances tried cost less than 5 % of the undisturbed median. \
