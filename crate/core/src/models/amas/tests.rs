@@ -640,3 +640,19 @@ fn layout_describes_what_the_model_draws() {
         assert!(m.inspect(usize::MAX).is_empty());
     }
 }
+
+#[test]
+fn the_corner_is_the_row_where_the_target_narrows() {
+    // L: rows 0-2 are the stem (2 wide), rows 3-4 the foot (6 wide): the corner row is 2.
+    let m = model(json!({}));
+    assert_eq!(m.corner_row, 2);
+    // A rectangle never narrows: its top row.
+    let m = model(json!({"target": {"rect": [4, 3]}}));
+    assert_eq!(m.corner_row, 0);
+    // Robots that stay on the supply never pass it; relays are counted where they happen.
+    let mut m = model(json!({"robots": 3, "collision": "relay", "seed": 2}));
+    assert_eq!(m.metrics()["never_past_corner"], json!(1.0));
+    run_to_end(&mut m, 20000);
+    assert!(m.corner_relays <= m.relays);
+    assert!(m.metrics()["never_past_corner"].as_f64().unwrap() < 1.0);
+}
