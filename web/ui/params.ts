@@ -2,7 +2,7 @@
 // validated by the core; an invalid value stays in its field with the core's message under it.
 import { clear, el } from './dom';
 
-const HIDDEN = new Set(['version', 'model', 'disturbances']);
+const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise']);
 const ORDER = ['name', 'description', 'max_steps'];
 
 export type Apply = (key: string, valueJson: string) => string | null;

@@ -30,7 +30,8 @@ function groupBy<T>(items: T[], f: (t: T) => string): Map<string, T[]> {
   return m;
 }
 
-function stats(values: number[]) {
+/** Count, mean, sample sd, extremes and quartiles of the finite values. */
+export function stats(values: number[]) {
   const v = values.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
   const n = v.length;
   if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, median: NaN, q3: NaN };
@@ -46,7 +47,8 @@ function stats(values: number[]) {
   return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), median: q(0.5), q3: q(0.75) };
 }
 
-function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
+/** The band a plot draws around a mean: `minmax`, `sd`, `quartiles`, or none. */
+export function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
   if (spread === 'minmax') return [s.min, s.max];
   if (spread === 'sd') return [s.mean - s.sd, s.mean + s.sd];
   if (spread === 'quartiles') return [s.q1, s.q3];
@@ -108,11 +110,11 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
     series.push({ label: line.label, stroke: color, width: 2, points: { show: xs.length < 40 } });
     data.push(line.ys.map((y) => (Number.isFinite(y) ? y : null)));
     if (line.band) {
-      series.push({ label: `${line.label} (low)`, stroke: color + '55', width: 1, points: { show: false } });
-      series.push({ label: `${line.label} (high)`, stroke: color + '55', width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (low)`, stroke: `${color}55`, width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (high)`, stroke: `${color}55`, width: 1, points: { show: false } });
       data.push(line.band[0].map((y) => (Number.isFinite(y) ? y : null)));
       data.push(line.band[1].map((y) => (Number.isFinite(y) ? y : null)));
-      bands.push({ series: [idx + 2, idx + 1], fill: color + '22' });
+      bands.push({ series: [idx + 2, idx + 1], fill: `${color}22` });
     }
   });
   const width = Math.max(260, panel.clientWidth || panel.parentElement?.clientWidth || 340);
@@ -187,7 +189,7 @@ function trace(panel: HTMLElement, spec: Spec, rows: Row[]) {
   const seriesPath = str(spec, 'series');
   const spread = str(spec, 'spread', 'sd');
   const carry = str(spec, 'carry', 'last') === 'last';
-  const traced = rows.filter((r) => r.trace && r.trace.values[y]);
+  const traced = rows.filter((r) => r.trace?.values[y]);
   if (!traced.length) {
     panel.append(el('p', { class: 'hint', text: `No runs traced '${y}'.` }));
     return;
@@ -248,7 +250,7 @@ function histogram(box: HTMLElement, spec: Spec, rows: Row[]) {
     const st = stats(values);
     panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.median)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
     chart(panel, xs, [{ label: 'runs', ys: counts, band: null }], spec, short(path), 'runs', {
-      series: [{ label: short(path) }, { label: 'runs', fill: COLORS[0] + '99', stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
+      series: [{ label: short(path) }, { label: 'runs', fill: `${COLORS[0]}99`, stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
     });
   }
 }

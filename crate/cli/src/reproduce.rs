@@ -1,6 +1,5 @@
 //! `kumiki reproduce`: runs every model's paper experiments and writes the reproduction report.
 
-use std::io::IsTerminal;
 use std::path::Path;
 
 use kumiki_core::experiment::{Experiment, Row};
@@ -23,7 +22,10 @@ pub enum Mode {
 
 /// Runs the experiments of `papers` on `threads` threads and returns their sections.
 pub fn sections(papers: &[&Paper], threads: usize) -> Result<Vec<Section>, Failure> {
-    let mut names: Vec<&str> = papers.iter().flat_map(|p| p.experiments.iter().copied()).collect();
+    let mut names: Vec<&str> = papers
+        .iter()
+        .flat_map(|p| p.experiments.iter().copied())
+        .collect();
     names.sort_unstable();
     names.dedup();
     let experiments = names
@@ -35,32 +37,20 @@ pub fn sections(papers: &[&Paper], threads: usize) -> Result<Vec<Section>, Failu
         .enumerate()
         .flat_map(|(e, x)| x.jobs().into_iter().map(move |j| (e, j)))
         .collect();
-    let total = jobs.len();
-    let progress = std::io::stderr().is_terminal();
+    let bar = crate::progress_bar("reproduce", jobs.len());
     let mut rows: Vec<Vec<Row>> = vec![Vec::new(); experiments.len()];
-    let mut done = 0usize;
     pool::run_ordered(
-        total,
+        jobs.len(),
         threads,
         |i| experiments[jobs[i].0].run_job(&jobs[i].1),
         |i, row| {
             let row = row.map_err(|e| Failure::Run(format!("{}: {e}", names[jobs[i].0])))?;
             rows[jobs[i].0].push(row);
-            done += 1;
-            if progress {
-                let filled = done * 30 / total.max(1);
-                eprint!(
-                    "\rreproduce [{}{}] {done}/{total} runs",
-                    "#".repeat(filled),
-                    ".".repeat(30 - filled)
-                );
-                if done == total {
-                    eprintln!();
-                }
-            }
+            bar.inc(1);
             Ok::<(), Failure>(())
         },
     )?;
+    bar.finish_and_clear();
     let mut results = Results::new();
     for (name, rows) in names.iter().zip(rows) {
         results.insert(name, rows);
@@ -79,7 +69,11 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
         Some(m) => vec![reproduce::paper(m).ok_or_else(|| {
             Failure::Usage(format!(
                 "no paper is registered for model '{m}'; known: {}",
-                reproduce::PAPERS.iter().map(|p| p.model).collect::<Vec<_>>().join(", ")
+                reproduce::PAPERS
+                    .iter()
+                    .map(|p| p.model)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ))
         })?],
         None => reproduce::PAPERS.iter().collect(),
@@ -99,13 +93,7 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
             Ok(())
         }
         Mode::Check => {
-            let stale: Vec<&str> = [(MARKDOWN, &markdown), (JSON, &json)]
-                .into_iter()
-                .filter(|(file, text)| {
-                    std::fs::read_to_string(root.join(file)).ok().as_deref() != Some(text.as_str())
-                })
-                .map(|(file, _)| file)
-                .collect();
+            let stale = stale(root, &[(MARKDOWN, &markdown), (JSON, &json)]);
             match stale.is_empty() {
                 true => {
                     eprintln!("the reproduction report is current");
@@ -118,5 +106,44 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
                 ))),
             }
         }
+    }
+}
+
+/// The files under `root` whose text is not the one given (or that cannot be read).
+fn stale<'a>(root: &Path, files: &[(&'a str, &String)]) -> Vec<&'a str> {
+    files
+        .iter()
+        .filter(|(file, text)| {
+            std::fs::read_to_string(root.join(file)).ok().as_deref() != Some(text.as_str())
+        })
+        .map(|(file, _)| *file)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stale_names_the_files_that_differ_or_are_missing() {
+        let root = std::env::temp_dir().join(format!("kumiki-stale-{}", std::process::id()));
+        std::fs::create_dir_all(root.join("docs")).unwrap();
+        let (md, json) = ("# report\n".to_string(), "{}\n".to_string());
+        let files = [(MARKDOWN, &md), (JSON, &json)];
+        assert_eq!(stale(&root, &files), vec![MARKDOWN, JSON]);
+        std::fs::write(root.join(MARKDOWN), &md).unwrap();
+        std::fs::write(root.join(JSON), &json).unwrap();
+        assert!(stale(&root, &files).is_empty());
+        std::fs::write(root.join(MARKDOWN), "# report\nedited by hand\n").unwrap();
+        assert_eq!(stale(&root, &files), vec![MARKDOWN]);
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn the_report_texts_are_markdown_and_json_of_the_same_sections() {
+        let (md, json) = texts(&[]);
+        assert!(md.starts_with("# Reproduction report"));
+        let parsed: serde_json::Value = serde_json::from_str(&json).unwrap();
+        assert!(parsed["models"].is_object());
     }
 }

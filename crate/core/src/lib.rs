@@ -10,6 +10,7 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
 
 pub mod error;
+pub mod exercise;
 pub mod experiment;
 pub mod hash;
 pub mod lattice;
@@ -22,6 +23,7 @@ pub mod rng;
 pub mod run;
 pub mod scenario;
 pub mod shape;
+pub mod timeline;
 
 pub use error::{Error, Result};
 pub use experiment::{Experiment, Row};
