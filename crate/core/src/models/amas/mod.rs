@@ -32,7 +32,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
-    model_version: 1,
+    model_version: 2,
     build: |s| Ok(Box::new(Amas::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
