@@ -16,6 +16,9 @@ step "wasm tests (wasm-bindgen-test in headless Node)"
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test -p kumiki-wasm --target wasm32-unknown-unknown
 
+step "the reproduction report is current (kumiki reproduce --check)"
+cargo run --release --quiet -p kumiki-cli -- reproduce --check
+
 step "build and type check"
 bash scripts/build.sh
 npx --no-install tsc --noEmit -p .

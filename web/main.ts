@@ -1,5 +1,6 @@
 // Kumiki's page: wires the simulation worker, the lattice view and the panels together.
 import { modelEditors, type MountedEditor } from './models/index';
+import { renderReproduction } from './ui/reproduction';
 import type { Hit } from './render/camera';
 import { View } from './render/view';
 import { SimClient } from './sim/client';
@@ -467,6 +468,7 @@ function renderScenarioPanel() {
     editor = null;
     clear(root);
     editorModel = model;
+    renderReproduction(byId('paper-report'), model);
     if (spec) {
       root.append(el('h3', { text: spec.title }));
       const mount = el('div');

@@ -33,11 +33,17 @@ function groupBy<T>(items: T[], f: (t: T) => string): Map<string, T[]> {
 function stats(values: number[]) {
   const v = values.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
   const n = v.length;
-  if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, q3: NaN };
+  if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, median: NaN, q3: NaN };
   const mean = v.reduce((a, b) => a + b, 0) / n;
   const sd = Math.sqrt(v.reduce((a, b) => a + (b - mean) ** 2, 0) / Math.max(1, n - 1));
-  const q = (p: number) => v[Math.min(n - 1, Math.floor(p * (n - 1)))];
-  return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), q3: q(0.75) };
+  // Linear interpolation between order statistics, as the reproduction report computes them.
+  const q = (p: number) => {
+    const pos = p * (n - 1);
+    const lo = Math.floor(pos);
+    const hi = Math.ceil(pos);
+    return v[lo] + (v[hi] - v[lo]) * (pos - lo);
+  };
+  return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), median: q(0.5), q3: q(0.75) };
 }
 
 function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
@@ -240,7 +246,7 @@ function histogram(box: HTMLElement, spec: Spec, rows: Row[]) {
     for (const v of values) counts[Math.min(bins - 1, Math.floor((v - lo) / width))]++;
     const xs = counts.map((_, i) => lo + (i + 0.5) * width);
     const st = stats(values);
-    panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.q1 + (st.q3 - st.q1) / 2)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
+    panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.median)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
     chart(panel, xs, [{ label: 'runs', ys: counts, band: null }], spec, short(path), 'runs', {
       series: [{ label: short(path) }, { label: 'runs', fill: COLORS[0] + '99', stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
     });

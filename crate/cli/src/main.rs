@@ -2,6 +2,7 @@
 
 mod bench;
 mod pool;
+mod reproduce;
 
 #[global_allocator]
 static ALLOC: bench::Counting = bench::Counting;
@@ -26,6 +27,10 @@ USAGE
   kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
   kumiki bench WORKLOAD.json... [--jobs J]
                                        time workloads (see tests/bench); one JSON line each
+  kumiki reproduce [--model M] [--check] [--root DIR] [--jobs J]
+                                       run every model's paper experiments and write
+                                       docs/reproduction.md and .json under DIR (default .);
+                                       --check compares instead; --model M prints one model's part
   kumiki queries                       the models' helper calls: MODEL NAME and what each does
   kumiki query MODEL NAME [ARGS]       a model's helper call; ARGS is JSON text or a JSON file,
                                        e.g. kumiki query cubes3d derive '{\"shape\": \"##\\n##\\n\"}'
@@ -38,7 +43,7 @@ as JSON when it parses (5, true, [1,2]) and as text otherwise. Runs of many seed
 (--jobs to choose). Output: one JSON object per run and line, or CSV with a header.";
 
 /// A usage error (exit code 2) or a failure of the run itself (exit code 1).
-enum Failure {
+pub enum Failure {
     Usage(String),
     Run(String),
 }
@@ -113,6 +118,25 @@ fn dispatch(args: &[String]) -> Result<(), Failure> {
         "run" => run(rest),
         "sweep" => sweep(rest),
         "bench" => bench(rest),
+        "reproduce" => {
+            let check = rest.iter().any(|a| a == "--check");
+            let rest: Vec<String> = rest.iter().filter(|a| *a != "--check").cloned().collect();
+            let (positional, opts) = parse_options(&rest, &["--model", "--root", "--jobs"])?;
+            no_more(&positional)?;
+            let model = opts.get("--model").map(String::as_str);
+            let mode = match (model, check) {
+                (Some(_), true) => {
+                    return Err(Failure::Usage(
+                        "--check covers every model; drop --model".into(),
+                    ))
+                }
+                (Some(_), false) => reproduce::Mode::Print,
+                (None, true) => reproduce::Mode::Check,
+                (None, false) => reproduce::Mode::Write,
+            };
+            let root = opts.get("--root").map_or(".", String::as_str);
+            reproduce::run(model, mode, std::path::Path::new(root), threads(&opts)?)
+        }
         "queries" => {
             no_more(rest)?;
             let mut out = std::io::stdout().lock();

@@ -5,7 +5,8 @@
 //! - [`scenario`]: the versioned JSON document that determines a run, and [`shape`] for the text
 //!   shapes inside it;
 //! - [`link`]: the share-link codec;
-//! - [`run`] and [`experiment`]: driving one run, and grids of runs;
+//! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`reproduce`]: the papers'
+//!   claims beside the figures of those runs;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
 
 pub mod error;
@@ -16,6 +17,7 @@ pub mod link;
 pub mod math;
 pub mod models;
 pub mod presets;
+pub mod reproduce;
 pub mod rng;
 pub mod run;
 pub mod scenario;
