@@ -48,7 +48,8 @@ function stats(values: number[]) {
 
 function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
   if (spread === 'minmax') return [s.min, s.max];
-  if (spread === 'sd') return [s.mean - s.sd, s.mean + s.sd];
+  // Clipped to the runs' range: a quantity that cannot be negative gets no band below zero.
+  if (spread === 'sd') return [Math.max(s.min, s.mean - s.sd), Math.min(s.max, s.mean + s.sd)];
   if (spread === 'quartiles') return [s.q1, s.q3];
   return null;
 }
@@ -134,7 +135,7 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
 }
 
 function spreadName(spread: string): string {
-  return spread === 'minmax' ? 'bands: min to max' : spread === 'quartiles' ? 'bands: quartiles' : spread === 'sd' ? 'bands: ± one standard deviation' : '';
+  return spread === 'minmax' ? 'bands: min to max' : spread === 'quartiles' ? 'bands: quartiles' : spread === 'sd' ? 'bands: ± one standard deviation, clipped to the runs\' range' : '';
 }
 
 /** A compact legend: one swatch per line, and what the bands show. */

@@ -1135,6 +1135,7 @@ impl Model for Amas {
                 },
             ],
             cell_labels: false,
+            goal: true,
             chart: "built".into(),
         }
     }

@@ -22,6 +22,7 @@ use crate::scenario::Scenario;
 use crate::shape::{self, Grid3};
 
 pub mod motion;
+pub mod paper;
 pub mod typelist;
 pub mod types;
 
@@ -1009,6 +1010,7 @@ impl Model for Cubes {
             fields,
             tools,
             cell_labels: true,
+            goal: self.targets.len() == 1,
             chart: if self.light.is_some() {
                 "displacement"
             } else {

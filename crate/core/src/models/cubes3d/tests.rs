@@ -895,3 +895,37 @@ fn derived_descriptions_hold_for_the_shape_they_came_from() {
         assert_eq!(padded, m.targets[0].lists);
     }
 }
+
+#[test]
+fn the_box_preset_has_the_self_repair_papers_goal_and_movable_types() {
+    // Equation 6 of "Experiment of self-repairing modular machine", as printed.
+    let eq6 = typelist::parse("C31{C31, C31, C41} C41{C31, C31, C41, C41}").unwrap();
+    let m = Cubes::new(&presets::scenario("cubes-box12-ladder").unwrap()).unwrap();
+    let padded: Vec<[u8; 7]> = eq6.iter().map(TypeList::padded).collect();
+    assert_eq!(m.targets[0].lists, padded);
+    let movable = (1u16 << types::C1) | (1u16 << types::C21) | (1u16 << types::C31);
+    assert_eq!(m.movable_types, movable);
+}
+
+#[test]
+fn steepest_descent_takes_the_least_difference_of_all_units() {
+    let mut m = model(json!({
+        "shape": "######\n######\n", "selection": "steepest",
+        "targets": [{"type_lists": "C31[C41, C31, C31]\nC41[C41, C41, C31, C31]"}]
+    }));
+    let mut least = f64::INFINITY;
+    for &u in &m.movable.clone() {
+        for r in m.reach_report(u as usize) {
+            least = least.min(r.1);
+        }
+    }
+    let before = m.moves;
+    m.step();
+    assert_eq!(
+        m.moves,
+        before + 1,
+        "steepest descent moves even when it raises D"
+    );
+    let moved = m.events.iter().find(|e| e.kind == ARRIVED).unwrap().cell as usize;
+    assert_eq!(m.diff[moved], least);
+}
