@@ -39,6 +39,9 @@ const BOX_X4: u128 = box_plane(1, 4);
 const BOX_Y0: u128 = box_plane(5, 0);
 const BOX_Y4: u128 = box_plane(5, 4);
 
+/// The step in box bits along each direction (in the order of [`DIRS`]).
+const BOX_STEP: [i32; 6] = [1, -1, 5, -5, 25, -25];
+
 /// The box cell `b` alone (without a 128-bit shift by a variable amount, which wasm lacks).
 #[inline]
 fn one(b: u32) -> u128 {
@@ -371,7 +374,7 @@ impl Structure {
         if s.terminals.len() <= 1 {
             return true;
         }
-        if self.local_join(p, carrier, s) {
+        if self.local_join(p, carrier) {
             return true;
         }
         s.searches += 1;
@@ -386,18 +389,19 @@ impl Structure {
     /// instead of a stack and a visited mark per cell. That is the same search as walking cell by
     /// cell, and much faster, in wasm especially (its engines keep no Vec pointers in registers
     /// across a loop of pushes and loads, so the walk cost about twice what it costs natively).
-    fn local_join(&self, p: usize, carrier: Option<(usize, usize)>, s: &mut Scratch) -> bool {
+    fn local_join(&self, p: usize, carrier: Option<(usize, usize)>) -> bool {
         let centre = match carrier {
             Some((q, _)) => q,
             None => p,
         };
-        let c0 = self.coord(centre);
-        let bit = |c: usize| -> Option<u32> {
-            let c = self.coord(c);
-            let d = [c[0] - c0[0] + 2, c[1] - c0[1] + 2, c[2] - c0[2] + 2];
-            d.iter()
-                .all(|v| (0..5).contains(v))
-                .then(|| (d[0] + 5 * d[1] + 25 * d[2]) as u32)
+        // Bits are found from the centre (bit 62) by steps along the directions, with no
+        // division: p is the centre or next to it, every terminal next to p or the carrier.
+        let p_bit = match carrier {
+            Some((q, _)) => match (0..6).find(|&d| self.nb(q, d) == p) {
+                Some(d) => (62 + BOX_STEP[d]) as u32,
+                None => return false,
+            },
+            None => 62,
         };
         // The occupied cells of the box, p lifted out. Built in two 64-bit halves: wasm has no
         // 128-bit shift by a variable amount and calls a helper for each.
@@ -419,31 +423,38 @@ impl Structure {
                 }
             }
         }
-        let mut occ = u128::from(lo) | (u128::from(hi) << 64);
-        if let Some(b) = bit(p) {
-            occ &= !one(b);
-        }
+        let occ = (u128::from(lo) | (u128::from(hi) << 64)) & !one(p_bit);
         // The carrier holds on only along its axis: take it out of the flood and let it join
         // its two axis neighbours to each other.
         let (bridge, q_bit) = match carrier {
-            Some((q, a)) => {
-                let qb = 62u32;
-                debug_assert_eq!(bit(q), Some(qb));
+            Some((_, a)) => {
                 let step = [1u32, 5, 25][a];
-                let pair = one(qb - step) | one(qb + step);
-                (pair & occ, one(qb))
+                let pair = one(62 - step) | one(62 + step);
+                (pair & occ, one(62))
             }
             None => (0, 0),
         };
         let open = occ & !q_bit;
+        // The terminals of `stays_connected`: p's neighbours and the carrier's neighbours off
+        // its axis.
         let mut want: u128 = 0;
-        for &t in &s.terminals {
-            match bit(t as usize) {
-                Some(b) => want |= one(b),
-                None => return false,
+        let mut reach: u128 = 0;
+        for (d, step) in BOX_STEP.iter().enumerate() {
+            if self.occupied(self.nb(p, d)) {
+                want |= one((p_bit as i32 + step) as u32);
             }
         }
-        let mut reach = one(bit(s.terminals[0] as usize).unwrap_or(0));
+        if let Some((q, a)) = carrier {
+            for (d, step) in BOX_STEP.iter().enumerate() {
+                let j = self.nb(q, d);
+                if d / 2 != a && j != p && self.occupied(j) {
+                    want |= one((62 + step) as u32);
+                }
+            }
+        }
+        if want != 0 {
+            reach = want & want.wrapping_neg();
+        }
         loop {
             if reach & want == want {
                 return true;
