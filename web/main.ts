@@ -286,8 +286,9 @@ function showFrame(frame: Frame) {
   byId('step-count').textContent = frame.steps.toLocaleString('en-US');
   if (frame.hash) byId('state-hash').textContent = frame.hash;
   const status = byId('run-status');
-  status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? 'step limit reached' : '';
-  status.classList.toggle('failed', frame.finished && !frame.completed);
+  const goal = layout?.goal ?? true;
+  status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? (goal ? 'step limit reached' : `ran ${frame.steps.toLocaleString('en-US')} steps`) : '';
+  status.classList.toggle('failed', frame.finished && !frame.completed && goal);
   if (!timelineDragging) {
     timeline.max = String(frame.furthest);
     timeline.value = String(frame.steps);

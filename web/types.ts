@@ -33,6 +33,8 @@ export interface Layout {
   cell_labels: boolean;
   /** The metric charted by default. */
   chart: string;
+  /** The run has a goal it completes; without one, reaching the step limit is no failure. */
+  goal: boolean;
 }
 
 export type Metrics = Record<string, number | boolean | string | null>;

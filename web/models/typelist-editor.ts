@@ -210,7 +210,7 @@ export class TargetsEditor {
     this.error = el('p', { class: 'error', role: 'status', 'aria-live': 'polite' });
     clear(root);
     root.append(
-      el('p', { class: 'hint', text: 'With two or more targets the structure switches to the next when its total difference stays below the threshold for stable steps.' }),
+      el('p', { class: 'hint', text: 'With two or more targets each unit switches to the next when its own difference D_0 stays below the threshold of its target for stable steps.' }),
       this.list,
       el('div', { class: 'row-buttons' }, this.addButton),
       this.error,

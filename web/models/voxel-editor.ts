@@ -712,6 +712,7 @@ function editorLayout(dims: [number, number, number]): Layout {
     tools: [],
     cell_labels: false,
     chart: '',
+    goal: true,
   };
 }
 

@@ -50,7 +50,8 @@ export function stats(values: number[]) {
 /** The band a plot draws around a mean: `minmax`, `sd`, `quartiles`, or none. */
 export function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
   if (spread === 'minmax') return [s.min, s.max];
-  if (spread === 'sd') return [s.mean - s.sd, s.mean + s.sd];
+  // Clipped to the runs' range: a quantity that cannot be negative gets no band below zero.
+  if (spread === 'sd') return [Math.max(s.min, s.mean - s.sd), Math.min(s.max, s.mean + s.sd)];
   if (spread === 'quartiles') return [s.q1, s.q3];
   return null;
 }
@@ -136,7 +137,7 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
 }
 
 function spreadName(spread: string): string {
-  return spread === 'minmax' ? 'bands: min to max' : spread === 'quartiles' ? 'bands: quartiles' : spread === 'sd' ? 'bands: ± one standard deviation' : '';
+  return spread === 'minmax' ? 'bands: min to max' : spread === 'quartiles' ? 'bands: quartiles' : spread === 'sd' ? 'bands: ± one standard deviation, clipped to the runs\' range' : '';
 }
 
 /** A compact legend: one swatch per line, and what the bands show. */

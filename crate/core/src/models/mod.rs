@@ -79,6 +79,9 @@ pub struct Layout {
     pub cell_labels: bool,
     /// The metric worth charting against step by default.
     pub chart: String,
+    /// The run has a goal it completes. Without one (a structure that keeps moving toward a
+    /// light, say) a run that reaches its step limit has simply run its course.
+    pub goal: bool,
 }
 
 /// Optional scene information for 3-D views, beyond the cells. Models without any return the

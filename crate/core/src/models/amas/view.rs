@@ -90,6 +90,7 @@ impl Amas {
             ],
             cell_labels: false,
             chart: "built".into(),
+            goal: true,
         }
     }
 

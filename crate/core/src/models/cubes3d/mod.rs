@@ -22,6 +22,7 @@ use crate::scenario::Scenario;
 use crate::shape::{self, Grid3};
 
 pub mod motion;
+pub mod paper;
 pub mod typelist;
 pub mod types;
 
@@ -115,8 +116,6 @@ struct Spec {
     ground: Ground,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     light: Option<String>,
-    #[serde(default = "default_light_priority")]
-    light_priority: f64,
     #[serde(default = "default_stable_steps")]
     stable_steps: u32,
 }
@@ -160,9 +159,6 @@ fn default_mover_distance() -> u32 {
 fn default_margin() -> u32 {
     8
 }
-fn default_light_priority() -> f64 {
-    1.0
-}
 fn default_stable_steps() -> u32 {
     30
 }
@@ -192,7 +188,11 @@ pub struct Cubes {
     mpos: Vec<u32>,
     movable_types: u16,
     targets: Vec<Target>,
-    current: usize,
+    /// The target each unit is working toward (section 6: each unit switches its own), per
+    /// cell, moving with the unit.
+    target: Vec<u8>,
+    /// Consecutive steps the unit's D_0 has stayed under its target's threshold, per cell.
+    stable: Vec<u32>,
     table: [[f64; CODES]; CODES],
     w: f64,
     c: f64,
@@ -203,9 +203,8 @@ pub struct Cubes {
     /// The lowest layer units may occupy.
     floor_z: i32,
     light: Option<usize>,
-    light_priority: f64,
     stable_steps: u32,
-    stable_run: u32,
+    /// Target switches made by units, all together.
     switches: u64,
     /// Offsets of the cells within Manhattan distance 2.
     near2: Vec<isize>,
@@ -217,7 +216,12 @@ pub struct Cubes {
     /// Centre of mass along the light at the start.
     start_light: f64,
     scratch: Scratch,
-    chosen: Vec<u32>,
+    /// The movable units in this step's random order.
+    order: Vec<u32>,
+    /// Moves chosen this step that do not approach the light, in the order they were chosen.
+    deferred: Vec<(u32, u32)>,
+    /// Cells the units that moved this step arrived at.
+    arrived: Vec<u32>,
     options: Vec<(u32, f64)>,
     weights: Vec<f64>,
     events: Vec<Event>,
@@ -264,12 +268,6 @@ impl Cubes {
         check_positive("w", spec.w)?;
         check_positive("a", spec.a)?;
         check_positive("c", spec.c)?;
-        if !(spec.light_priority.is_finite() && spec.light_priority >= 0.0) {
-            return Err(Error::field(
-                "light_priority",
-                "must be a finite number of at least 0",
-            ));
-        }
         if spec.stable_steps == 0 {
             return Err(Error::field("stable_steps", "must be at least 1"));
         }
@@ -441,7 +439,8 @@ impl Cubes {
             mpos: vec![u32::MAX; len],
             movable_types,
             targets,
-            current: 0,
+            target: vec![0; len],
+            stable: vec![0; len],
             table: typelist::diff_table(spec.a),
             w: spec.w,
             c: spec.c,
@@ -451,9 +450,7 @@ impl Cubes {
             ground: spec.ground,
             floor_z: PAD as i32,
             light,
-            light_priority: spec.light_priority,
             stable_steps: spec.stable_steps,
-            stable_run: 0,
             switches: 0,
             near2,
             rng: Rng::stream(scenario.seed, 1),
@@ -462,7 +459,9 @@ impl Cubes {
             zero: 0,
             start_light: 0.0,
             scratch: Scratch::default(),
-            chosen: Vec::new(),
+            order: Vec::new(),
+            deferred: Vec::new(),
+            arrived: Vec::new(),
             options: Vec::new(),
             weights: Vec::new(),
             events: Vec::new(),
@@ -477,11 +476,11 @@ impl Cubes {
         Ok(model)
     }
 
-    /// Equation 4 for a unit whose type and sorted neighbour types are `prof`, against the
-    /// current target: the least weighted difference over its type-lists.
-    fn difference(&self, prof: &[u8; 7]) -> f64 {
+    /// Equation 4 for a unit whose type and sorted neighbour types are `prof`, against target
+    /// `target`: the least weighted difference over its type-lists.
+    fn difference(&self, target: u8, prof: &[u8; 7]) -> f64 {
         let mut best = f64::INFINITY;
-        for l in &self.targets[self.current].lists {
+        for l in &self.targets[target as usize].lists {
             let mut s = self.w * self.table[l[0] as usize][prof[0] as usize];
             for n in 1..7 {
                 s += self.table[l[n] as usize][prof[n] as usize];
@@ -535,7 +534,7 @@ impl Cubes {
         if !self.st.occupied(i) {
             return;
         }
-        let new = self.difference(&self.st.profile(i));
+        let new = self.difference(self.target[i], &self.st.profile(i));
         let old = self.diff[i];
         if old == 0.0 && new != 0.0 {
             self.zero -= 1;
@@ -578,6 +577,8 @@ impl Cubes {
         }
         self.diff[i] = f64::NAN;
         self.flags[i] = 0;
+        self.target[i] = 0;
+        self.stable[i] = 0;
         let k = self.upos[i] as usize;
         self.upos[i] = u32::MAX;
         self.units.swap_remove(k);
@@ -588,6 +589,8 @@ impl Cubes {
 
     fn do_move(&mut self, from: usize, to: usize) {
         let flags = self.flags[from];
+        let target = self.target[from];
+        let stable = self.stable[from];
         let k = self.upos[from];
         // Moving keeps the unit's place in the list, so sums over units keep their order.
         if self.diff[from] == 0.0 {
@@ -595,10 +598,14 @@ impl Cubes {
         }
         self.diff[from] = f64::NAN;
         self.flags[from] = 0;
+        self.target[from] = 0;
+        self.stable[from] = 0;
         self.upos[from] = u32::MAX;
         self.units[k as usize] = to as u32;
         self.upos[to] = k;
         self.flags[to] = flags;
+        self.target[to] = target;
+        self.stable[to] = stable;
         self.st.relocate(from, to);
         self.after_change(&[from, to]);
         self.moves += 1;
@@ -655,66 +662,173 @@ impl Cubes {
         self.units.iter().map(|&c| self.diff[c as usize]).sum()
     }
 
-    /// Moves to the next target (section 6): units that see the light are held while the new
-    /// target asks for it.
-    fn switch_target(&mut self) {
-        self.current = (self.current + 1) % self.targets.len();
-        self.stable_run = 0;
+    /// The target most units are working toward (the lower index on a tie).
+    fn main_target(&self) -> usize {
+        let mut count = [0usize; MAX_TARGETS];
+        for &c in &self.units {
+            count[self.target[c as usize] as usize] += 1;
+        }
+        let best = count.iter().copied().max().unwrap_or(0);
+        count.iter().position(|&n| n == best).unwrap_or(0)
+    }
+
+    /// The unit at `c` moves on to target `to` (section 6): if that target asks for it and the
+    /// unit sees the light, it holds still until its next switch.
+    fn switch_unit(&mut self, c: usize, to: usize) {
+        self.target[c] = to as u8;
+        self.stable[c] = 0;
         self.switches += 1;
-        let hold = self.targets[self.current].hold_lit;
+        self.flags[c] &= !HELD_LIT;
+        if self.targets[to].hold_lit && self.lit(c) {
+            self.flags[c] |= HELD_LIT;
+        }
+        self.rediff(c);
+        self.refresh(c);
+    }
+
+    /// The switching rule of section 6, run by every unit after each step: a unit whose D_0
+    /// has stayed under its target's threshold for `stable_steps` steps moves on to the next
+    /// target.
+    fn switch_targets(&mut self) {
         for k in 0..self.units.len() {
             let c = self.units[k] as usize;
-            self.flags[c] &= !HELD_LIT;
-            if hold && self.lit(c) {
-                self.flags[c] |= HELD_LIT;
+            if self.diff[c] < self.targets[self.target[c] as usize].threshold {
+                self.stable[c] += 1;
+            } else {
+                self.stable[c] = 0;
+            }
+            if self.stable[c] >= self.stable_steps {
+                let next = (self.target[c] as usize + 1) % self.targets.len();
+                self.switch_unit(c, next);
             }
         }
-        self.recompute_all();
     }
 
-    /// Picks this step's movers: one unit uniformly among the movable ones, or with `movers` > 1
-    /// up to that many, each at least `mover_distance` (Manhattan) from those already picked.
-    fn choose(&mut self, chosen: &mut Vec<u32>) {
-        chosen.clear();
-        if self.movable.is_empty() {
+    /// Is `c` at least `mover_distance` (Manhattan) from every unit that moved this step?
+    fn far_from_movers(&self, c: usize) -> bool {
+        let cc = self.st.coord(c);
+        self.arrived.iter().all(|&o| {
+            let oc = self.st.coord(o as usize);
+            let dist: i32 = (0..3).map(|k| (cc[k] - oc[k]).abs()).sum();
+            dist >= self.mover_distance as i32
+        })
+    }
+
+    /// One control step's moves (section 5): every unit makes its choice, and of those that
+    /// choose to move, one moves (up to `movers` with footnote 2, each at least
+    /// `mover_distance` from the others). Asking the units in a random order and letting the
+    /// first that chooses to move go gives each of them the same chance as drawing among all
+    /// that chose to move, and asks only as many as needed. With a light, a unit whose choice
+    /// approaches the source goes before one whose choice does not (section 6: "a higher moving
+    /// priority to reachable positions approaching the light source").
+    fn move_units(&mut self, temp: f64, s: &mut Scratch) {
+        let mut order = std::mem::take(&mut self.order);
+        order.clear();
+        order.extend_from_slice(&self.movable);
+        self.arrived.clear();
+        self.deferred.clear();
+        let want = self.movers as usize;
+        if self.selection == Selection::Steepest {
+            while self.arrived.len() < want {
+                let Some((p, dest)) = self.steepest(&order, s) else {
+                    break;
+                };
+                self.do_move(p, dest);
+                self.arrived.push(dest as u32);
+            }
+            self.order = order;
             return;
         }
-        if self.movers == 1 {
-            chosen.push(self.movable[self.rng.index(self.movable.len())]);
-            return;
-        }
-        for _ in 0..4 * self.movers {
-            if chosen.len() == self.movers as usize {
+        let n = order.len();
+        for k in 0..n {
+            if self.arrived.len() == want {
                 break;
             }
-            let c = self.movable[self.rng.index(self.movable.len())];
-            let cc = self.st.coord(c as usize);
-            let far = chosen.iter().all(|&o| {
-                let oc = self.st.coord(o as usize);
-                let dist: i32 = (0..3).map(|k| (cc[k] - oc[k]).abs()).sum();
-                dist >= self.mover_distance as i32
-            });
-            if far {
-                chosen.push(c);
+            let j = k + self.rng.index(n - k);
+            order.swap(k, j);
+            let p = order[k] as usize;
+            if !self.eligible(p) || !self.far_from_movers(p) {
+                continue;
+            }
+            let Some(dest) = self.decide(p, temp, s) else {
+                continue;
+            };
+            if self.light.is_some() && self.along_light(dest) <= self.along_light(p) {
+                self.deferred.push((p as u32, dest as u32));
+                continue;
+            }
+            self.do_move(p, dest);
+            self.arrived.push(dest as u32);
+        }
+        let mut deferred = std::mem::take(&mut self.deferred);
+        for &(p, dest) in &deferred {
+            if self.arrived.len() == want {
+                break;
+            }
+            let (p, dest) = (p as usize, dest as usize);
+            if !self.eligible(p) || !self.far_from_movers(p) {
+                continue;
+            }
+            // An earlier move of this step may have changed what this unit can reach.
+            self.st.reachable(p, s);
+            if s.moves.iter().any(|m| m.dest as usize == dest) {
+                self.do_move(p, dest);
+                self.arrived.push(dest as u32);
             }
         }
+        deferred.clear();
+        self.deferred = deferred;
+        self.order = order;
     }
 
-    /// Steps (i) to (iii) of section 4 for the unit at `p`: reachable positions, their
-    /// differences, and the choice.
-    fn act(&mut self, p: usize, temp: f64, s: &mut Scratch) {
+    /// The steepest-descent baseline of section 5: of all the reachable positions of the units
+    /// that may move (and are far enough from this step's movers), the one with the least
+    /// difference, ties broken at random. A unit takes it whether or not it is better than
+    /// staying: the rule selects a reachable position.
+    fn steepest(&mut self, units: &[u32], s: &mut Scratch) -> Option<(usize, usize)> {
+        let mut best = None;
+        let mut least = f64::INFINITY;
+        let mut ties = 0u32;
+        for &p in units {
+            let p = p as usize;
+            if !self.eligible(p) || !self.far_from_movers(p) {
+                continue;
+            }
+            self.st.reachable(p, s);
+            for m in &s.moves {
+                let dest = m.dest as usize;
+                let d = self.difference(self.target[p], &self.st.profile_after(p, dest));
+                if d < least {
+                    (least, ties, best) = (d, 1, Some((p, dest)));
+                } else if d == least {
+                    ties += 1;
+                    if self.rng.below(ties) == 0 {
+                        best = Some((p, dest));
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Steps (i) to (iii) of section 4 for the unit at `p`: its reachable positions, their
+    /// differences, and its choice, `None` for staying where it is. The MRF rule weighs
+    /// staying (D_0, "no motion" as i = 0) against every position; the random rule of section
+    /// 5 selects a reachable position, so a unit that can move does. (Steepest descent is
+    /// [`Cubes::steepest`].)
+    fn decide(&mut self, p: usize, temp: f64, s: &mut Scratch) -> Option<usize> {
         self.st.reachable(p, s);
         if s.moves.is_empty() {
-            return;
+            return None;
         }
-        let here = self.along_light(p);
+        let target = self.target[p];
         self.options.clear();
-        self.options.push((p as u32, self.diff[p]));
+        if self.selection == Selection::Mrf {
+            self.options.push((p as u32, self.diff[p]));
+        }
         for m in &s.moves {
-            let d = self.difference(&self.st.profile_after(p, m.dest as usize));
-            let toward = self.along_light(m.dest as usize) - here;
-            self.options
-                .push((m.dest, d - self.light_priority * toward));
+            let d = self.difference(target, &self.st.profile_after(p, m.dest as usize));
+            self.options.push((m.dest, d));
         }
         let n = self.options.len();
         let least = self
@@ -722,33 +836,17 @@ impl Cubes {
             .iter()
             .map(|o| o.1)
             .fold(f64::INFINITY, f64::min);
-        let pick = match self.selection {
-            Selection::Random => self.rng.index(n),
-            Selection::Steepest => {
-                self.weights.clear();
-                self.weights.extend(
-                    self.options
-                        .iter()
-                        .map(|o| if o.1 == least { 1.0 } else { 0.0 }),
-                );
-                let ties = self.weights.iter().filter(|&&w| w > 0.0).count();
-                if ties == 1 {
-                    self.weights.iter().position(|&w| w > 0.0).unwrap_or(0)
-                } else {
-                    self.rng.weighted(&self.weights).unwrap_or(0)
-                }
+        self.weights.clear();
+        let pick = if self.selection == Selection::Mrf {
+            for o in &self.options {
+                self.weights.push(math::exp(-(o.1 - least) / temp));
             }
-            Selection::Mrf => {
-                self.weights.clear();
-                for o in &self.options {
-                    self.weights.push(math::exp(-(o.1 - least) / temp));
-                }
-                self.rng.weighted(&self.weights).unwrap_or(0)
-            }
+            self.rng.weighted(&self.weights).unwrap_or(0)
+        } else {
+            self.rng.index(n)
         };
-        if pick > 0 {
-            self.do_move(p, self.options[pick].0 as usize);
-        }
+        let dest = self.options[pick].0 as usize;
+        (dest != p).then_some(dest)
     }
 
     /// The difference and reachable positions (with the difference at each) of the unit at `p`.
@@ -760,7 +858,7 @@ impl Cubes {
             .map(|m| {
                 (
                     m.dest,
-                    self.difference(&self.st.profile_after(p, m.dest as usize)),
+                    self.difference(self.target[p], &self.st.profile_after(p, m.dest as usize)),
                 )
             })
             .collect()
@@ -820,6 +918,7 @@ impl Cubes {
         if self.units.len() >= MAX_UNITS {
             return Err(Error::field("cells", format!("at most {MAX_UNITS} units")));
         }
+        self.target[i] = self.main_target() as u8;
         self.upos[i] = self.units.len() as u32;
         self.units.push(i as u32);
         self.st.add(i);
@@ -914,6 +1013,7 @@ impl Model for Cubes {
             fields,
             tools,
             cell_labels: true,
+            goal: self.targets.len() == 1,
             chart: if self.light.is_some() {
                 "displacement"
             } else {
@@ -925,7 +1025,7 @@ impl Model for Cubes {
 
     fn scene(&self) -> Scene {
         Scene {
-            ghost: self.targets[self.current].ghost.clone(),
+            ghost: self.targets[self.main_target()].ghost.clone(),
             light: self.light.map(|d| DIRS[d].map(|v| v as f32)),
             ground: (self.ground != Ground::Open).then_some(self.floor_z as u32),
         }
@@ -949,26 +1049,11 @@ impl Model for Cubes {
         self.events.clear();
         let temp = self.c / math::ln_1p((self.steps + 1) as f64);
         let mut s = std::mem::take(&mut self.scratch);
-        let mut chosen = std::mem::take(&mut self.chosen);
-        self.choose(&mut chosen);
-        for &p in &chosen {
-            // With movers close together an earlier move may have changed a later one's type.
-            if self.eligible(p as usize) {
-                self.act(p as usize, temp, &mut s);
-            }
-        }
-        self.chosen = chosen;
+        self.move_units(temp, &mut s);
         self.scratch = s;
         self.steps += 1;
         if self.targets.len() > 1 {
-            if self.total_difference() < self.targets[self.current].threshold {
-                self.stable_run += 1;
-            } else {
-                self.stable_run = 0;
-            }
-            if self.stable_run >= self.stable_steps {
-                self.switch_target();
-            }
+            self.switch_targets();
         }
     }
 
@@ -1000,7 +1085,7 @@ impl Model for Cubes {
             self.scratch.search_cells.into(),
         );
         if self.targets.len() > 1 {
-            m.insert("target".into(), self.current.into());
+            m.insert("target".into(), self.main_target().into());
             m.insert("switches".into(), self.switches.into());
         }
         if self.light.is_some() {
@@ -1021,8 +1106,10 @@ impl Model for Cubes {
         for &u in &self.movable {
             h.u32(u);
         }
-        h.u64(self.current as u64);
-        h.u32(self.stable_run);
+        h.bytes(&self.target);
+        for &u in &self.units {
+            h.u32(self.stable[u as usize]);
+        }
         h.u64(self.switches);
         h.u64(self.moves);
     }
@@ -1085,7 +1172,10 @@ impl Model for Cubes {
         let a = parse_action(action)?;
         match a.kind.as_str() {
             "switch" => {
-                self.switch_target();
+                let next = (self.main_target() + 1) % self.targets.len();
+                for k in 0..self.units.len() {
+                    self.switch_unit(self.units[k] as usize, next);
+                }
                 Ok(())
             }
             kind => {
@@ -1115,7 +1205,11 @@ impl Model for Cubes {
         m.insert("x".into(), c[0].into());
         m.insert("y".into(), c[1].into());
         m.insert("z".into(), c[2].into());
-        let target = &self.targets[self.current];
+        let target = &self.targets[if self.st.occupied(i) {
+            self.target[i] as usize
+        } else {
+            self.main_target()
+        }];
         if !target.name.is_empty() {
             m.insert("target".into(), target.name.clone().into());
         }

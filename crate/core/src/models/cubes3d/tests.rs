@@ -222,9 +222,9 @@ fn difference_follows_equations_4_to_6() {
     let prof = [types::C30, types::C31, types::C21, 0, 0, 0, 0];
     // W·diff(C31, C30) + diff(C41, C31) + diff(C31, C21) + diff(C31, blank)
     // = 3·1 + 2·1 + 2·1 + 2·3 = 13.
-    assert_eq!(m.difference(&prof), 13.0);
+    assert_eq!(m.difference(0, &prof), 13.0);
     let exact = [types::C31, types::C41, types::C31, types::C31, 0, 0, 0];
-    assert_eq!(m.difference(&exact), 0.0);
+    assert_eq!(m.difference(0, &exact), 0.0);
 }
 
 // ---------------------------------------------------------------- reachable positions
@@ -553,10 +553,10 @@ fn check_invariants(m: &Cubes) {
         assert!(!m.st.wall[c]);
         assert_eq!(m.st.types[c], TYPE_OF_MASK[m.st.mask(c) as usize]);
         let prof = m.st.profile(c);
-        let d = m.difference(&prof);
+        let d = m.difference(m.target[c], &prof);
         assert_eq!(m.diff[c].to_bits(), d.to_bits(), "stale difference at {c}");
         // D is zero exactly when the unit's type-list is one of the target's.
-        let matches = m.targets[m.current].lists.contains(&prof);
+        let matches = m.targets[m.target[c] as usize].lists.contains(&prof);
         assert_eq!(d == 0.0, matches, "cell {c}: D = {d}");
         zero += usize::from(d == 0.0);
         assert_eq!(m.mpos[c] != u32::MAX, m.eligible(c));
@@ -738,31 +738,44 @@ fn light_switches_targets_and_holds_the_lit_units() {
         .filter(|&c| m.lit(c))
         .collect();
     assert_eq!(lit.len(), 4, "the cube's face toward the light");
+    // Each unit switches on its own D_0, after it has stayed under the threshold for 30
+    // steps.
     while m.switches == 0 && m.steps < 1000 {
-        let before = m.current;
         m.step();
-        if m.switches > 0 {
-            assert_eq!(m.current, (before + 1) % 2);
-        }
+        assert!(m.steps >= 30 || m.switches == 0);
     }
     assert!(
         m.switches > 0,
-        "the complete cube stays under its threshold for 30 steps"
+        "units of the cube stay under their threshold"
     );
-    assert_eq!(m.current, 1);
-    // After the switch to the ladder, the units that see the light are held.
     for &c in &m.units {
         let c = c as usize;
-        assert_eq!(m.flags[c] & HELD_LIT != 0, m.lit(c), "cell {c}");
-        if m.lit(c) {
+        if m.target[c] == 1 {
+            assert_eq!(m.stable[c], 0);
+        }
+    }
+    // The units that switched to the ladder and see the light are held.
+    for &c in &m.units {
+        let c = c as usize;
+        assert_eq!(
+            m.flags[c] & HELD_LIT != 0,
+            m.target[c] == 1 && m.lit(c),
+            "cell {c}"
+        );
+        if m.target[c] == 1 && m.lit(c) {
             assert!(!m.eligible(c));
         }
     }
     check_invariants(&m);
-    // Switching back releases them.
+    // A switch by click moves every unit on from the target most units hold.
+    if m.main_target() == 0 {
+        m.apply(&json!({"kind": "switch"}).as_object().cloned().unwrap())
+            .unwrap();
+    }
+    assert!(m.units.iter().all(|&c| m.target[c as usize] == 1));
     m.apply(&json!({"kind": "switch"}).as_object().cloned().unwrap())
         .unwrap();
-    assert_eq!(m.current, 0);
+    assert!(m.units.iter().all(|&c| m.target[c as usize] == 0));
     assert!(m.units.iter().all(|&c| m.flags[c as usize] & HELD_LIT == 0));
     check_invariants(&m);
 }
@@ -881,4 +894,38 @@ fn derived_descriptions_hold_for_the_shape_they_came_from() {
         let padded: Vec<[u8; 7]> = lists.iter().map(TypeList::padded).collect();
         assert_eq!(padded, m.targets[0].lists);
     }
+}
+
+#[test]
+fn the_box_preset_has_the_self_repair_papers_goal_and_movable_types() {
+    // Equation 6 of "Experiment of self-repairing modular machine", as printed.
+    let eq6 = typelist::parse("C31{C31, C31, C41} C41{C31, C31, C41, C41}").unwrap();
+    let m = Cubes::new(&presets::scenario("cubes-box12-ladder").unwrap()).unwrap();
+    let padded: Vec<[u8; 7]> = eq6.iter().map(TypeList::padded).collect();
+    assert_eq!(m.targets[0].lists, padded);
+    let movable = (1u16 << types::C1) | (1u16 << types::C21) | (1u16 << types::C31);
+    assert_eq!(m.movable_types, movable);
+}
+
+#[test]
+fn steepest_descent_takes_the_least_difference_of_all_units() {
+    let mut m = model(json!({
+        "shape": "######\n######\n", "selection": "steepest",
+        "targets": [{"type_lists": "C31[C41, C31, C31]\nC41[C41, C41, C31, C31]"}]
+    }));
+    let mut least = f64::INFINITY;
+    for &u in &m.movable.clone() {
+        for r in m.reach_report(u as usize) {
+            least = least.min(r.1);
+        }
+    }
+    let before = m.moves;
+    m.step();
+    assert_eq!(
+        m.moves,
+        before + 1,
+        "steepest descent moves even when it raises D"
+    );
+    let moved = m.events.iter().find(|e| e.kind == ARRIVED).unwrap().cell as usize;
+    assert_eq!(m.diff[moved], least);
 }

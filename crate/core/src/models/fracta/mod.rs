@@ -845,6 +845,7 @@ impl Model for Fracta {
                     .unwrap_or_default(),
             }],
             cell_labels: true,
+            goal: true,
             chart: "mean_difference".into(),
         }
     }
