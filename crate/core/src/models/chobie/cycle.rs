@@ -146,13 +146,15 @@ impl Chobie {
     /// order, until a kind is present, and only that kind commands.
     fn announce(&self, comm: &mut Comm, mut leaders: Vec<Elected>) -> Vec<Elected> {
         if self.p.priority && self.mode == Mode::Crawl {
-            let best = leaders.iter().map(|e| e.kind).min();
-            let order = [
-                Kind::TopRight,
-                Kind::TopLeft,
-                Kind::BottomLeft,
-                Kind::BottomRight,
-            ];
+            let rank = |k: Kind| {
+                self.p
+                    .order
+                    .iter()
+                    .position(|&o| o == k)
+                    .unwrap_or(usize::MAX)
+            };
+            let best = leaders.iter().map(|e| e.kind).min_by_key(|&k| rank(k));
+            let order = self.p.order;
             let silent = best.map_or(order.len(), |k| {
                 order.iter().position(|&o| o == k).unwrap_or(0)
             });
@@ -217,7 +219,14 @@ impl Chobie {
                 if all.is_empty() {
                     all = election::corner(body);
                 }
-                let best = all.iter().map(|e| e.kind).min();
+                let rank = |k: Kind| {
+                    self.p
+                        .order
+                        .iter()
+                        .position(|&o| o == k)
+                        .unwrap_or(usize::MAX)
+                };
+                let best = all.iter().map(|e| e.kind).min_by_key(|&k| rank(k));
                 all.retain(|e| Some(e.kind) == best);
                 all
             }
@@ -281,7 +290,11 @@ impl Chobie {
         let tip = self.tip();
         let loads: Vec<[f64; 3]> = (0..body.len())
             .map(|r| {
-                let tip_load = if r as u32 == tip { self.p.tip_load } else { 0.0 };
+                let tip_load = if r as u32 == tip {
+                    self.p.tip_load
+                } else {
+                    0.0
+                };
                 [0.0, -(m.weight + self.loads[r] + tip_load), 0.0]
             })
             .collect();

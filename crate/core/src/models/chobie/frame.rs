@@ -40,7 +40,12 @@ fn element_matrix(m: &Mechanics, c: f64, s: f64) -> [[f64; 6]; 6] {
     let l = m.length;
     let ea = m.e * m.area / l;
     let ei = m.e * m.inertia;
-    let (k1, k2, k3, k4) = (12.0 * ei / (l * l * l), 6.0 * ei / (l * l), 4.0 * ei / l, 2.0 * ei / l);
+    let (k1, k2, k3, k4) = (
+        12.0 * ei / (l * l * l),
+        6.0 * ei / (l * l),
+        4.0 * ei / l,
+        2.0 * ei / l,
+    );
     let local = [
         [ea, 0.0, 0.0, -ea, 0.0, 0.0],
         [0.0, k1, k2, 0.0, -k1, k2],

@@ -1,12 +1,23 @@
 //! The model built from its scenario.
 
-use super::election::Mode;
+use super::election::{Kind, Mode};
 use super::motion::Body;
 use super::spec::{self, Mechanics, Spec, Task};
 use super::{Chobie, Last, Params, Totals};
 use crate::error::Result;
 use crate::models;
 use crate::scenario::Scenario;
+
+/// The priority sequence of figure 18, highest first: the vertical commands (lift the left
+/// end, lower the right end) before the horizontal ones. Figure 18 is not in the text; of the
+/// 24 orders, those that put top + left ahead of top + right let the most two-tier forms with
+/// several leaders crawl (`tests::priority_sequence_lets_form_d_crawl`).
+pub const PRIORITY: [Kind; 4] = [
+    Kind::TopLeft,
+    Kind::BottomRight,
+    Kind::TopRight,
+    Kind::BottomLeft,
+];
 
 /// The largest goal, in cells.
 pub const MAX_GOAL: u32 = 100_000;
@@ -53,6 +64,7 @@ impl Chobie {
                 tip_load,
                 hop_us,
                 mech,
+                order: PRIORITY,
             },
             loads: vec![0.0; n],
             mode: match s.task {

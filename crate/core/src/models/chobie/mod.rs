@@ -51,6 +51,8 @@ pub struct Params {
     pub tip_load: f64,
     pub hop_us: f64,
     pub mech: Mechanics,
+    /// The priority sequence of figure 18.
+    pub order: [election::Kind; 4],
 }
 
 /// Counters over the whole run.

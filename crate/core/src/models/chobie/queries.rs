@@ -23,7 +23,11 @@ pub fn crawl_world(robots: u64, form: u64, margin: u64) -> String {
     let row = |start: u64, len: u64| {
         let mut s = String::with_capacity(w);
         for x in 0..w as u64 {
-            s.push(if x >= start && x < start + len { '#' } else { '.' });
+            s.push(if x >= start && x < start + len {
+                '#'
+            } else {
+                '.'
+            });
         }
         s
     };
@@ -52,7 +56,10 @@ pub fn crawl(args: &Value) -> Result<Value> {
     if !(1..=4).contains(&form) {
         return Err(Error::field("form", "a crawl form is 1, 2, 3 or 4"));
     }
-    let margin = args.get("margin").map_or(Some(10), Value::as_u64).unwrap_or(u64::MAX);
+    let margin = args
+        .get("margin")
+        .map_or(Some(10), Value::as_u64)
+        .unwrap_or(u64::MAX);
     if margin > 1000 {
         return Err(Error::field("margin", "from 0 to 1000 empty columns"));
     }

@@ -296,7 +296,10 @@ fn check_world(world: &World, first_line: usize) -> Result<()> {
         .filter(|&(x, y)| world.get(x, y) == Tile::Robot)
         .collect();
     if robots.is_empty() {
-        return Err(Error::field("world", "there is no robot; draw robots with '#'"));
+        return Err(Error::field(
+            "world",
+            "there is no robot; draw robots with '#'",
+        ));
     }
     if robots.len() > MAX_ROBOTS {
         return Err(Error::field(

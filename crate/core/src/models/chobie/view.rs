@@ -80,8 +80,16 @@ impl Model for Chobie {
                 },
             ],
             tools: vec![
-                tool("load", "Load 100 N", json!({"kind": "load", "force": 100.0})),
-                tool("unload", "Remove load", json!({"kind": "load", "force": 0.0})),
+                tool(
+                    "load",
+                    "Load 100 N",
+                    json!({"kind": "load", "force": 100.0}),
+                ),
+                tool(
+                    "unload",
+                    "Remove load",
+                    json!({"kind": "load", "force": 0.0}),
+                ),
             ],
             cell_labels: false,
             chart: match self.p.task {
@@ -110,7 +118,8 @@ impl Model for Chobie {
 
     fn metrics(&self) -> Metrics {
         let t = &self.totals;
-        let per = |v: u64| match t.transformations {
+        // Per transformation cycle (one step: election, command, move), moved or not.
+        let per = |v: u64| match self.steps {
             0 => Value::Null,
             n => json!(v as f64 / n as f64),
         };
@@ -123,10 +132,13 @@ impl Model for Chobie {
         m.insert("leaders".into(), (self.last.leaders.len() as u64).into());
         m.insert("max_peak_stress".into(), json!(self.worst / 1e6));
         m.insert("messages".into(), t.messages.into());
-        m.insert("messages_per_robot".into(), match t.transformations {
-            0 => Value::Null,
-            n => json!(t.messages as f64 / n as f64 / self.body.len() as f64),
-        });
+        m.insert(
+            "messages_per_robot".into(),
+            match self.steps {
+                0 => Value::Null,
+                n => json!(t.messages as f64 / n as f64 / self.body.len() as f64),
+            },
+        );
         m.insert("messages_per_transformation".into(), per(t.messages));
         m.insert("mode".into(), (self.mode as u8).into());
         m.insert("overloads".into(), (overloads as u64).into());
@@ -137,7 +149,10 @@ impl Model for Chobie {
         m.insert("slots".into(), t.slots.into());
         m.insert("slots_per_transformation".into(), per(t.slots));
         m.insert("span".into(), self.span().into());
-        m.insert("stalled".into(), (!self.last.moved && self.steps > 0).into());
+        m.insert(
+            "stalled".into(),
+            (!self.last.moved && self.steps > 0).into(),
+        );
         m.insert("threshold".into(), json!(self.p.mech.threshold / 1e6));
         m.insert("transformations".into(), t.transformations.into());
         m
@@ -267,7 +282,12 @@ impl Model for Chobie {
         m.insert("on_terrain".into(), self.body.grounded(r).into());
         m.insert(
             "state".into(),
-            if self.last.driven.contains(&r) { "D (drove)" } else { "R (rested)" }.into(),
+            if self.last.driven.contains(&r) {
+                "D (drove)"
+            } else {
+                "R (rested)"
+            }
+            .into(),
         );
         if let Some(e) = self.last.leaders.iter().find(|e| e.robot == r) {
             m.insert("leader".into(), e.kind.name().into());
