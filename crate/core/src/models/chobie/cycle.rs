@@ -27,7 +27,9 @@ impl Chobie {
                 Mode::Construction
             };
         }
+        let idle = self.mode == Mode::Construction && !self.p.construction;
         let leaders = match self.p.leader {
+            _ if idle => Vec::new(),
             Leader::Temporary => self.elect(&mut comm),
             Leader::Permanent => self.direct(&mut comm),
         };

@@ -60,6 +60,7 @@ impl Chobie {
                 method: s.method,
                 priority: s.priority,
                 adaptation: s.adaptation,
+                construction: s.construction,
                 goal: s.goal,
                 tip_load,
                 hop_us,

@@ -47,6 +47,7 @@ pub struct Params {
     pub method: Method,
     pub priority: bool,
     pub adaptation: bool,
+    pub construction: bool,
     pub goal: Option<u32>,
     pub tip_load: f64,
     pub hop_us: f64,

@@ -65,6 +65,10 @@ pub struct Spec {
     /// Figure 12: switch to load-adaptation mode on overload (bridge task).
     #[serde(default = "yes")]
     pub adaptation: bool,
+    /// Bridge task: extend the bridge in construction mode. Off, the robots only watch their
+    /// loads and adapt (the demonstration of figure 14).
+    #[serde(default = "yes")]
+    pub construction: bool,
     /// Completed when the crawl has moved this many cells, or the bridge spans this many cells.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub goal: Option<u32>,
@@ -121,7 +125,7 @@ pub mod defaults {
         40e6
     }
     pub fn safety_factor() -> f64 {
-        4.0
+        10.0
     }
     pub fn hop_us() -> f64 {
         10.0
