@@ -331,4 +331,14 @@ impl Chobie {
     pub(super) fn slot_us(&self) -> f64 {
         2.0 * signals::diameter(&self.body) as f64 * self.p.hop_us
     }
+
+    /// The root stress beam theory gives a straight single-tier cantilever of the present span
+    /// under the robots' weight (nodal, one per cell) and the tip load: M·c/I with
+    /// M = w·a·n(n + 1)/2 + P·n·a. The mechanics experiment draws it over the frame's result.
+    pub(super) fn beam_theory_stress(&self) -> f64 {
+        let m = &self.p.mech;
+        let n = self.span() as f64;
+        let moment = m.weight * m.length * n * (n + 1.0) / 2.0 + self.p.tip_load * n * m.length;
+        moment * m.fibre / m.inertia
+    }
 }

@@ -126,6 +126,10 @@ impl Model for Chobie {
         let overloads = self.stress.iter().filter(|&&s| self.overloaded(s)).count();
         let mut m = Map::new();
         m.insert("adaptations".into(), t.adaptations.into());
+        m.insert(
+            "beam_theory_stress".into(),
+            json!(self.beam_theory_stress() / 1e6),
+        );
         m.insert("distance".into(), json!(self.distance()));
         m.insert("election_failures".into(), t.election_failures.into());
         m.insert("energy".into(), t.energy.into());
