@@ -146,10 +146,10 @@ pub fn solve(
         }
     }
     let mut f = vec![0.0; dofs];
-    for node in 0..n as u32 {
-        for d in 0..3 {
-            if let Some(p) = dof(node, d) {
-                f[p] = loads[node as usize][d];
+    for (node, load) in loads.iter().enumerate() {
+        for (d, &v) in load.iter().enumerate() {
+            if let Some(p) = dof(node as u32, d) {
+                f[p] = v;
             }
         }
     }
@@ -223,24 +223,30 @@ impl Banded {
         self.a[p] += v;
     }
 
-    /// In-place Cholesky factorisation, L Lᵀ; None if not positive definite.
+    /// In-place Cholesky factorisation, L Lᵀ; None if not positive definite. Row i of the band
+    /// holds L(i, i - q) at `i·(b + 1) + q`, so the dot product of two rows' overlapping parts
+    /// runs over two contiguous slices.
     fn factor(&mut self) -> Option<()> {
         let b = self.b;
         for i in 0..self.n {
             let lo = i.saturating_sub(b);
+            let ri = self.at(i, i);
             for j in lo..=i {
-                let mut sum = self.a[self.at(i, j)];
-                for k in lo.max(j.saturating_sub(b))..j {
-                    sum -= self.a[self.at(i, k)] * self.a[self.at(j, k)];
-                }
+                let rj = self.at(j, j);
+                let len = j - lo;
+                let dot = dot(
+                    &self.a[ri + i - j + 1..ri + i - j + 1 + len],
+                    &self.a[rj + 1..rj + 1 + len],
+                );
                 let p = self.at(i, j);
+                let sum = self.a[p] - dot;
                 if i == j {
                     if sum <= 0.0 || !sum.is_finite() {
                         return None;
                     }
                     self.a[p] = sum.sqrt();
                 } else {
-                    self.a[p] = sum / self.a[self.at(j, j)];
+                    self.a[p] = sum / self.a[rj];
                 }
             }
         }
@@ -251,18 +257,36 @@ impl Banded {
     fn solve(&self, f: &mut [f64]) {
         let b = self.b;
         for i in 0..self.n {
-            let mut sum = f[i];
-            for k in i.saturating_sub(b)..i {
-                sum -= self.a[self.at(i, k)] * f[k];
-            }
-            f[i] = sum / self.a[self.at(i, i)];
+            let lo = i.saturating_sub(b);
+            let ri = self.at(i, i);
+            let dot: f64 = self.a[ri + 1..ri + 1 + (i - lo)]
+                .iter()
+                .rev()
+                .zip(&f[lo..i])
+                .map(|(x, y)| x * y)
+                .sum();
+            f[i] = (f[i] - dot) / self.a[ri];
         }
         for i in (0..self.n).rev() {
-            let mut sum = f[i];
-            for k in i + 1..(i + b + 1).min(self.n) {
-                sum -= self.a[self.at(k, i)] * f[k];
-            }
-            f[i] = sum / self.a[self.at(i, i)];
+            let hi = (i + b).min(self.n - 1);
+            let dot: f64 = (i + 1..=hi).map(|k| self.a[self.at(k, i)] * f[k]).sum();
+            f[i] = (f[i] - dot) / self.a[self.at(i, i)];
         }
     }
+}
+
+/// A dot product in four independent partial sums, so the compiler can keep several
+/// multiply-adds in flight (a single running sum must be evaluated strictly in order). The
+/// order is fixed, so the result is the same on every target.
+fn dot(x: &[f64], y: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 4];
+    let (xc, xr) = x.split_at(x.len() / 4 * 4);
+    let (yc, yr) = y.split_at(xc.len());
+    for (a, b) in xc.chunks_exact(4).zip(yc.chunks_exact(4)) {
+        for k in 0..4 {
+            acc[k] += a[k] * b[k];
+        }
+    }
+    let tail: f64 = xr.iter().zip(yr).map(|(a, b)| a * b).sum();
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }

@@ -72,8 +72,13 @@ impl Body {
         body
     }
 
+    /// Number of robots.
     pub fn len(&self) -> usize {
         self.pos.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
     }
 
     pub fn index(&self, x: i32, y: i32) -> Option<usize> {

@@ -82,7 +82,7 @@ pub fn hops(body: &Body, from: u32) -> Vec<u32> {
 /// The structure's diameter in hops, by a double sweep (exact on trees and on the forms used
 /// here, a lower bound in general).
 pub fn diameter(body: &Body) -> u32 {
-    if body.len() == 0 {
+    if body.is_empty() {
         return 0;
     }
     let first = hops(body, 0);
