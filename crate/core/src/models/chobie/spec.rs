@@ -7,8 +7,10 @@ use crate::error::{Error, Result};
 
 /// The largest lattice side accepted, in cells (the world text plus `extend`).
 pub const MAX_SIDE: u32 = 2048;
-/// The most robots a world may hold.
-pub const MAX_ROBOTS: usize = 20_000;
+/// The most robots a world may hold. The stress solve of every step costs about
+/// robots × (3 × robots across the short side)² operations, so a square block of this many
+/// robots takes a fraction of a second per step; more would freeze the page.
+pub const MAX_ROBOTS: usize = 5_000;
 
 /// What the robots do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
