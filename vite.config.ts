@@ -1,4 +1,28 @@
-import { defineConfig } from 'vite';
+import { readFileSync } from 'node:fs';
+import { type Plugin, defineConfig } from 'vite';
+
+// One Content-Security-Policy: the page's meta tag. Wherever Kumiki serves the page it also sends
+// it as a header, with what a meta tag cannot carry: frame-ancestors. Kumiki is meant to be
+// embedded in course pages on any site (?embed), and holds no accounts or private data, so any
+// https page (and a teacher's own machine) may frame it; plain-http and file pages may not.
+const metaPolicy = /http-equiv="Content-Security-Policy" content="([^"]+)"/.exec(readFileSync('static/index.html', 'utf8'))?.[1];
+if (!metaPolicy) throw new Error('static/index.html has no Content-Security-Policy meta tag');
+export const HEADERS: Record<string, string> = {
+  'Content-Security-Policy': `${metaPolicy}; frame-ancestors 'self' https: http://localhost:* http://127.0.0.1:*`,
+  'X-Content-Type-Options': 'nosniff',
+  'Referrer-Policy': 'no-referrer',
+};
+
+/** Writes dist/_headers, the header file static hosts such as Netlify and Cloudflare Pages read. */
+function headersFile(): Plugin {
+  return {
+    name: 'kumiki-headers',
+    generateBundle() {
+      const lines = Object.entries(HEADERS).map(([k, v]) => `  ${k}: ${v}`);
+      this.emitFile({ type: 'asset', fileName: '_headers', source: `/*\n${lines.join('\n')}\n` });
+    },
+  };
+}
 
 // The page lives in static/ (index.html, CSS, icons) and imports its code from web/.
 // Relative base: the built site in dist/ works from any sub-path.
@@ -6,6 +30,7 @@ export default defineConfig({
   root: 'static',
   base: './',
   publicDir: false,
+  plugins: [headersFile()],
   build: {
     outDir: '../dist',
     emptyOutDir: true,
@@ -15,6 +40,6 @@ export default defineConfig({
     chunkSizeWarningLimit: 1024,
   },
   worker: { format: 'es' },
-  server: { port: 8080, strictPort: true, fs: { allow: ['..'] } },
-  preview: { port: 8080, strictPort: true, host: 'localhost' },
+  server: { port: 8080, strictPort: true, fs: { allow: ['..'] }, headers: HEADERS },
+  preview: { port: 8080, strictPort: true, host: 'localhost', headers: HEADERS },
 });

@@ -1,12 +1,28 @@
 #!/usr/bin/env bash
-# npm test: native tests, the wasm suites in headless Node, the type check, then the browser
-# end-to-end tests in headless Chromium against a fresh build.
+# npm test: the gates (formatting, lints), the TypeScript unit tests, native tests, the wasm suites
+# in headless Node, the type check, then the browser end-to-end tests in headless Chromium against
+# a fresh build. The gates come first: they take seconds and fail on what a review would.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
 
+step "gate: cargo fmt --check"
+cargo fmt --all -- --check
+
+step "gate: cargo clippy -D warnings (native)"
+cargo clippy --workspace --all-targets --quiet -- -D warnings
+
 step "setup"
 bash scripts/setup.sh --browser
+
+step "gate: cargo clippy -D warnings (wasm32)"
+cargo clippy -p kumiki-wasm --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
+
+step "gate: biome lint (web/, tests/, scripts/)"
+npx --no-install biome lint --error-on-warnings
+
+step "TypeScript unit tests (vitest, tests/unit/)"
+npx --no-install vitest run
 
 step "native tests (cargo test)"
 cargo test --workspace --quiet
@@ -15,6 +31,9 @@ step "wasm tests (wasm-bindgen-test in headless Node)"
 # Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test -p kumiki-wasm --target wasm32-unknown-unknown
+
+step "the reproduction report is current (kumiki reproduce --check)"
+cargo run --release --quiet -p kumiki-cli -- reproduce --check
 
 step "build and type check"
 bash scripts/build.sh

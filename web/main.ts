@@ -1,12 +1,13 @@
 // Kumiki's page: wires the simulation worker, the lattice view and the panels together.
 import { modelEditors, type MountedEditor } from './models/index';
+import { renderReproduction } from './ui/reproduction';
 import type { Hit } from './render/camera';
 import { View } from './render/view';
 import { SimClient } from './sim/client';
-import { History, loadPrefs, savePrefs, saveScenario, savedScenario } from './store';
+import { History, loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
 import type { Frame, Layout, Metrics } from './types';
 import { MetricChart } from './ui/chart';
-import { byId, clear, download, el, formatNumber, typingIn } from './ui/dom';
+import { byId, clear, displayText, download, el, formatNumber, typingIn } from './ui/dom';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { renderParams } from './ui/params';
@@ -35,13 +36,29 @@ let framesDrawn = 0;
 
 const banner = byId('banner');
 const bannerText = byId('banner-text');
-function report(text: string) {
+const linkNotice = byId('link-notice');
+const bannerAction = byId<HTMLButtonElement>('banner-action');
+/** Shows a message, with one button that offers a way out when `action` is given. */
+function report(text: string, action?: { label: string; run: () => void }) {
   bannerText.textContent = text;
+  bannerAction.hidden = !action;
+  if (action) bannerAction.textContent = action.label;
+  bannerAction.onclick = action
+    ? () => {
+        dismiss();
+        action.run();
+      }
+    : null;
   banner.hidden = false;
 }
 function dismiss() {
   banner.hidden = true;
 }
+/** Set while the banner explains the load that follows (a restart, a link that could not be
+ * opened), so that load does not clear it. */
+let keepBanner = false;
+/** The banner is showing the watchdog's message. */
+let stallShown = false;
 byId('banner-close').addEventListener('click', dismiss);
 
 // ---- simulation -------------------------------------------------------------------------------
@@ -57,6 +74,10 @@ const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('
 
 const sim = new SimClient({
   loaded(newLayout, json) {
+    // A scenario opened or the run was reset: an earlier message no longer applies.
+    if (!keepBanner) dismiss();
+    keepBanner = false;
+    loadedOpening = opening !== null;
     const shapeChanged = !layout || layout.lattice !== newLayout.lattice || layout.dims.join() !== newLayout.dims.join();
     layout = newLayout;
     scenario = json;
@@ -68,6 +89,12 @@ const sim = new SimClient({
     chart.reset(prefs.chartMetric);
   },
   frame(frame) {
+    if (opening !== null && loadedOpening) {
+      // It opened and drew: now it may be restored after a reload.
+      saveScenario(opening);
+      openedScenario();
+      opening = null;
+    }
     lastFrame = frame;
     document.body.dataset.ready = 'true';
     framesDrawn++;
@@ -83,7 +110,11 @@ const sim = new SimClient({
     button.setAttribute('aria-pressed', String(on));
   },
   scenario(json) {
+    // A click recorded a disturbance (and, in the past, forked the run): undo brings back the
+    // scenario before it.
+    if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
+    updateUndo();
     saveScenario(json);
     renderDisturbanceNote();
     syncJsonEditor();
@@ -93,10 +124,46 @@ const sim = new SimClient({
     else if (context === 'load') report(`This scenario cannot run: ${message}`);
     else report(message);
   },
+  stalled(ms) {
+    if (ms === 0) {
+      if (stallShown) {
+        dismiss();
+        keepBanner = false;
+      }
+      stallShown = false;
+      return;
+    }
+    stallShown = true;
+    keepBanner = true;
+    report(`The simulation has not answered for ${Math.round(ms / 1000)} s. It may be busy with a large scenario; your last good scenario is kept.`, {
+      label: 'Stop it and reload the last good scenario',
+      run: () => sim.recover(),
+    });
+  },
   panic(message) {
-    report(`The simulation stopped on an internal error and was restarted with the last good scenario.\n${message}`);
+    keepBanner = true;
+    const model = layout ? String((JSON.parse(scenario) as { model?: string }).model ?? 'the model') : 'the model';
+    const bug = [
+      `Kumiki ${core.version()} hit an internal error in ${model}.`,
+      message,
+      `Scenario: ${scenarioLink()}`,
+      `Browser: ${navigator.userAgent}`,
+    ].join('\n');
+    report(`Kumiki hit an internal error in ${model}; your scenario is kept and was restarted from its start.\n${message}`, {
+      label: 'Copy the report',
+      run: () => void navigator.clipboard?.writeText(bug).catch(() => download('kumiki-error-report.txt', bug, 'text/plain')),
+    });
   },
 });
+
+/** A link to the scenario in view, or its JSON when it cannot be encoded. */
+function scenarioLink(): string {
+  try {
+    return `${location.origin}${location.pathname}#${core.encodeLink(scenario)}`;
+  } catch {
+    return scenario;
+  }
+}
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false } = {}): boolean {
@@ -109,11 +176,32 @@ function load(json: string, { record = true, quiet = false } = {}): boolean {
   }
   if (record && scenario && normal !== scenario) history.push(scenario);
   scenario = normal;
-  saveScenario(normal);
-  sim.load(normal);
+  open(normal);
   if (location.hash) history_replace('');
+  linkNotice.hidden = true;
   updateUndo();
   return true;
+}
+
+/** The scenario being opened; saved for reloads only once it has drawn a frame. */
+let opening: string | null = null;
+/** The worker has loaded the scenario being opened; its next frame is the new run's. */
+let loadedOpening = false;
+function open(json: string) {
+  opening = json;
+  loadedOpening = false;
+  noteOpening(json);
+  sim.load(json);
+}
+
+/** Whoever opens a shared link sees its name and description first. */
+function introduce(json: string) {
+  const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
+  byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
+  byId('intro-model').textContent = String(doc.model ?? '');
+  byId('intro-description').textContent = displayText(doc.description ?? '', 4000, true) || 'It comes with no description.';
+  const dialog = byId<HTMLDialogElement>('intro');
+  if (!dialog.open) dialog.showModal();
 }
 
 function history_replace(hash: string) {
@@ -138,6 +226,15 @@ function applySpeed() {
 speed.value = String(prefs.speedIndex);
 speed.addEventListener('input', applySpeed);
 applySpeed();
+
+const timeline = byId<HTMLInputElement>('timeline');
+/** While the timeline is dragged, frames do not move its thumb under the pointer. */
+let timelineDragging = false;
+timeline.addEventListener('input', () => sim.seek(Number(timeline.value)));
+timeline.addEventListener('pointerdown', () => (timelineDragging = true));
+timeline.addEventListener('pointerup', () => (timelineDragging = false));
+timeline.addEventListener('pointercancel', () => (timelineDragging = false));
+const stepBack = () => lastFrame && lastFrame.steps > 0 && sim.seek(lastFrame.steps - 1);
 
 const togglePlay = () => (playing ? sim.pause() : sim.play());
 const stepOnce = () => sim.step(1);
@@ -184,6 +281,13 @@ function showFrame(frame: Frame) {
   const status = byId('run-status');
   status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? 'step limit reached' : '';
   status.classList.toggle('failed', frame.finished && !frame.completed);
+  if (!timelineDragging) {
+    timeline.max = String(frame.furthest);
+    timeline.value = String(frame.steps);
+  }
+  timeline.setAttribute('aria-valuetext', `step ${frame.steps} of ${frame.furthest}`);
+  byId('timeline-out').textContent = `${frame.steps.toLocaleString('en-US')} / ${frame.furthest.toLocaleString('en-US')}`;
+  chart.truncate(frame.furthest);
   const bar = byId('run-progress');
   const pct = frame.completed ? 100 : Math.min(100, (100 * frame.steps) / Math.max(1, frame.maxSteps));
   (bar.firstElementChild as HTMLElement).style.width = `${pct}%`;
@@ -450,9 +554,10 @@ function applyChange(key: string, valueJson: string, onError?: (problem: string)
 
 function renderScenarioPanel() {
   const doc = JSON.parse(scenario) as Record<string, unknown>;
-  byId('scenario-name').textContent = String(doc.name || 'untitled scenario');
+  const name = displayText(String(doc.name ?? ''), 100);
+  byId('scenario-name').textContent = name || 'untitled scenario';
   byId('scenario-model').textContent = String(doc.model ?? '');
-  document.title = `${String(doc.name || 'untitled')} · Kumiki`;
+  document.title = `${name || 'untitled'} · Kumiki`;
   seedInput.value = String(doc.seed ?? 0);
   const model = String(doc.model);
   const spec = modelEditors[model];
@@ -467,6 +572,7 @@ function renderScenarioPanel() {
     editor = null;
     clear(root);
     editorModel = model;
+    renderReproduction(byId('paper-report'), model);
     if (spec) {
       root.append(el('h3', { text: spec.title }));
       const mount = el('div');
@@ -569,11 +675,15 @@ function openHash(): boolean {
   if (!hash) return false;
   try {
     const json = core.decodeLink(hash);
+    // A link made with another behaviour of its model opens, but its run may not be its maker's.
+    const { made_with, current } = core.linkVersions(hash);
+    linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+    linkNotice.hidden = made_with === current;
     if (scenario && json !== scenario) history.push(scenario);
     scenario = json;
-    saveScenario(json);
-    sim.load(json);
+    open(json);
     updateUndo();
+    introduce(json);
     dismiss();
     return true;
   } catch (e) {
@@ -617,7 +727,6 @@ for (const t of tabs) {
 
 document.addEventListener('keydown', (e) => {
   if (e.defaultPrevented || typingIn(e.target) || (document.querySelector('dialog[open]') && e.key !== 'Escape')) return;
-  const onButton = e.target instanceof HTMLButtonElement || e.target instanceof HTMLAnchorElement || e.target instanceof HTMLElement && e.target.tagName === 'SUMMARY';
   if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z') {
     e.preventDefault();
     if (e.shiftKey) redo();
@@ -625,15 +734,23 @@ document.addEventListener('keydown', (e) => {
     return;
   }
   if (e.ctrlKey || e.metaKey || e.altKey) return;
+  // The page's keys act only when no control has the focus: Space on a checkbox ticks it, and
+  // the arrows move sliders and tool groups. Left steps back only from the view.
+  const onView = e.target === byId('view');
+  if (!onView && e.target instanceof HTMLElement && e.target !== document.body && e.target.closest('input, select, textarea, button, a, summary, [role="radiogroup"], [role="tablist"], [tabindex]')) return;
   switch (e.key) {
     case ' ':
-      if (onButton) return;
       e.preventDefault();
       togglePlay();
       return;
     case 'ArrowRight':
       e.preventDefault();
       stepOnce();
+      return;
+    case 'ArrowLeft':
+      if (!onView) return;
+      e.preventDefault();
+      stepBack();
       return;
     case 'r':
     case 'R':
@@ -685,7 +802,22 @@ async function start() {
   setupGallery(core.presets(), (name) => load(core.presetJson(name)));
   setupExperiments(prefs, persistPrefs, report);
   selectTab(tabs.includes(prefs.tab) ? prefs.tab : 'run');
+  const unfinished = openingScenario();
+  if (unfinished !== null) {
+    // The page was closed or stopped while a scenario was opening: it may be what stopped it.
+    openedScenario();
+    load(core.presetJson(DEFAULT_PRESET), { record: false });
+    if (location.hash) history_replace('');
+    keepBanner = true;
+    report('The last scenario did not finish opening before the page closed, so the default one is shown. It may be too large for this device.', {
+      label: 'Open it anyway',
+      run: () => load(unfinished),
+    });
+    return;
+  }
   if (openHash()) return;
+  // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
+  keepBanner = !banner.hidden;
   const saved = savedScenario();
   if (!(saved && load(saved, { record: false, quiet: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false });
 }

@@ -47,6 +47,20 @@ function write(key: string, value: string) {
 export const savedScenario = (): string | null => read(SCENARIO_KEY);
 export const saveScenario = (json: string) => write(SCENARIO_KEY, json);
 
+// A scenario being opened is noted here and the note removed once it has drawn. A note still
+// present at start-up means the page was closed or stopped while opening it: that scenario is
+// then offered, never reopened by itself.
+const OPENING_KEY = 'kumiki.opening.v1';
+export const openingScenario = (): string | null => read(OPENING_KEY);
+export const noteOpening = (json: string) => write(OPENING_KEY, json);
+export function openedScenario() {
+  try {
+    localStorage.removeItem(OPENING_KEY);
+  } catch {
+    // Storage disabled: there is no note either.
+  }
+}
+
 export function loadPrefs(): Prefs {
   try {
     return { ...DEFAULT_PREFS, ...(JSON.parse(read(PREFS_KEY) ?? '{}') as Partial<Prefs>) };

@@ -57,6 +57,8 @@ export interface SceneInfo {
 /** One frame of a running simulation, as the worker sends it. */
 export interface Frame {
   steps: number;
+  /** The furthest step reached since the last fork: where the timeline ends. */
+  furthest: number;
   maxSteps: number;
   finished: boolean;
   completed: boolean;

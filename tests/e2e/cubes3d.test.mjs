@@ -3,7 +3,7 @@
 // (errors that name the line, derive from shape), links, the Canvas 2D fallback and a tablet.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session } from './harness.mjs';
+import { loadWasm, openPage, session, settle } from './harness.mjs';
 
 const wasm = loadWasm();
 
@@ -42,9 +42,6 @@ function colourful(px, test = (r, g, b) => Math.max(r, g, b) - Math.min(r, g, b)
   let n = 0;
   for (let i = 0; i < px.length; i += 4) if (test(px[i], px[i + 1], px[i + 2])) n++;
   return n / (px.length / 4);
-}
-async function settle(page) {
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 async function stepTo(page, steps) {
   await page.locator('#view').focus();
@@ -111,7 +108,14 @@ describe('the 3-D view', () => {
     let found = false;
     for (let k = 0; k < 80 && !found; k++) {
       await page.mouse.move(box.x + box.width * (0.3 + (0.4 * ((k * 7) % 80)) / 80), box.y + box.height * (0.3 + (0.4 * ((k * 13) % 80)) / 80));
-      await page.waitForTimeout(90);
+      // A unit under the pointer shows in the inspector at once, and where it can move once the
+      // worker has answered: drawn as highlighted cells, or said to be nowhere.
+      if (await page.isHidden('#inspector')) continue;
+      await page.waitForFunction(() => {
+        const said = document.querySelector('#inspector').textContent;
+        const drawn = JSON.parse(document.querySelector('#view').dataset.scene).highlight > 0;
+        return /reachable/.test(said) && (drawn || /cannot move|reachable\s*0 positions/.test(said));
+      });
       found = (await stats(page)).highlight > 0;
     }
     assert.ok(found, 'some unit under the pointer shows reachable cells');
@@ -129,9 +133,14 @@ describe('the 3-D view', () => {
     const box = await page.locator('#view').boundingBox();
     let added = null;
     for (let k = 0; k < 60 && !added; k++) {
-      await page.mouse.click(box.x + box.width * (0.45 + (0.3 * ((k * 7) % 60)) / 60), box.y + box.height * (0.3 + (0.4 * ((k * 13) % 60)) / 60));
-      await page.waitForTimeout(60);
-      added = (await scenarioOf(page)).disturbances?.find((d) => d.kind === 'add') ?? null;
+      const x = box.x + box.width * (0.45 + (0.3 * ((k * 7) % 60)) / 60);
+      const y = box.y + box.height * (0.3 + (0.4 * ((k * 13) % 60)) / 60);
+      // Only a unit under the pointer (shown in the inspector as it is hovered) takes a click.
+      await page.mouse.move(x, y);
+      if (await page.isHidden('#inspector')) continue;
+      await page.mouse.click(x, y);
+      await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).disturbances?.some((d) => d.kind === 'add'));
+      added = (await scenarioOf(page)).disturbances.find((d) => d.kind === 'add');
     }
     assert.ok(added, 'a click on a unit adds one');
     await page.waitForFunction(() => JSON.parse(document.querySelector('#view').dataset.scene).units === 9);
@@ -233,10 +242,10 @@ describe('the voxel editor', () => {
     const cdp = await context.newCDPSession(page);
     const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
     await touch('touchStart', [[at.x, at.y]]);
-    await page.waitForTimeout(800);
-    await touch('touchEnd', []);
+    // Held down, the press removes the unit once it has lasted long enough; then the finger lifts.
     await page.waitForFunction(() => (JSON.parse(document.querySelector('#scenario-json').value).shape.match(/#/g) || []).length === 7);
-    await page.waitForTimeout(100);
+    await touch('touchEnd', []);
+    await settle(page);
     assert.equal(await page.getAttribute('.voxel-canvas', 'data-units'), '7', 'the long press removed one unit and the lift added none');
     await settle(page);
     const before = await pixels(page, '.voxel-canvas');

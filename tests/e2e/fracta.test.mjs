@@ -2,6 +2,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { loadWasm, openPage, session, waitForSteps } from './harness.mjs';
+import { readLabels } from './labels.mjs';
 
 const wasm = loadWasm();
 
@@ -10,27 +11,33 @@ const s = session('/');
 const open = (preset) => openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
 const scenario = async (page) => JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
 
-test('fracta draws hexagons with bonds and type labels, and runs', async () => {
+test('fracta draws hexagons with bonds and type labels that name each unit, and runs', async () => {
+  const json = wasm.preset_json('fracta-triangle10');
   const { page, context, problems } = await open('fracta-triangle10');
   assert.equal(await page.textContent('#scenario-model'), 'fracta');
-  const legend = await page.$$eval('#legend span', (s) => s.map((x) => x.textContent));
+  const legend = await page.$$eval('#legend span', (spans) => spans.map((x) => x.textContent));
   assert.ok(legend.includes('K') && legend.includes('o') && legend.includes('s'), legend.join(','));
   // Labels are drawn on the annotation layer only when the structure is large on screen.
-  const inked = () =>
-    page.$eval('#annotations', (c) => {
-      const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
-      return n;
-    });
   await page.waitForFunction(() => {
     const c = document.querySelector('#annotations');
     const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     for (let i = 3; i < data.length; i += 4) if (data[i] > 0) return true;
     return false;
   });
-  const n = await inked();
-  assert.ok(n > 500, `the annotation layer drew ${n} pixels of bonds and labels`);
+  // What the labels must say: the core's cells at step 0, named by the model's legend.
+  const sim = new wasm.Sim(json);
+  const entries = sim.layout().cells;
+  const expected = [...sim.cells()].filter((c) => c !== 0).map((c) => entries.find((e) => e.code === c).name);
+  sim.free();
+  const labels = await page.evaluate(readLabels, entries.map((e) => e.name));
+  assert.deepEqual(labels.map((l) => l.read).sort(), expected.sort(), 'one label per unit, naming its type');
+  const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  for (const l of labels) {
+    assert.ok(l.score > 0.8 && l.score - l.runnerUp > 0.15, `label ${l.read} read clearly (${l.score} against ${l.runnerUp})`);
+    // The renderer filled the cell under the label with the colour of the type the label names.
+    const want = rgb(entries.find((e) => e.name === l.read).color);
+    assert.ok(l.colour.every((v, i) => Math.abs(v - want[i]) <= 12), `label ${l.read} sits on ${l.colour}, not on its type's colour ${want}`);
+  }
   await page.click('#play');
   await waitForSteps(page, 10);
   await page.click('#play');
@@ -87,7 +94,8 @@ test('editing the start shape changes the scenario; undo in the editor restores 
   assert.equal(units((await scenario(page)).start), units(start) - 1);
   await page.keyboard.press('Control+z');
   await page.waitForFunction(() => !document.querySelector('#model-editor button[aria-label="Redo the drawing change"]').disabled);
-  await page.waitForTimeout(300);
+  // The undone shape reaches the scenario once the page has applied it.
+  await page.waitForFunction((n) => (JSON.parse(document.querySelector('#scenario-json').value).start.match(/#/g) ?? []).length === n, units(start));
   const restored = wasm.shape_parse('hex', (await scenario(page)).start);
   const original = wasm.shape_parse('hex', start);
   assert.equal(units((await scenario(page)).start), units(start));

@@ -20,8 +20,22 @@ const TYPES = {
   '.png': 'image/png',
 };
 
-/** Serves dist/ at `prefix` (e.g. '/' or '/classes/kumiki/'). Resolves to { url, close }. */
+/** The headers a static host sends with every file, from the build's dist/_headers. */
+function hostHeaders() {
+  const out = {};
+  for (const line of readFileSync(join(DIST, '_headers'), 'utf8').split('\n')) {
+    const m = /^\s+([\w-]+): (.+)$/.exec(line);
+    if (m) out[m[1].toLowerCase()] = m[2];
+  }
+  return out;
+}
+
+/**
+ * Serves dist/ at `prefix` (e.g. '/' or '/classes/kumiki/') with the headers of dist/_headers,
+ * as a static host would. Resolves to { url, close }.
+ */
 export function serve(prefix = '/') {
+  const headers = hostHeaders();
   const server = createServer(async (req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
     if (!path.startsWith(prefix)) {
@@ -33,7 +47,7 @@ export function serve(prefix = '/') {
     const file = join(DIST, rel);
     try {
       if (!(await stat(file)).isFile()) throw new Error('not a file');
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' });
+      res.writeHead(200, { ...headers, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' });
       res.end(await readFile(file));
     } catch {
       res.writeHead(404).end('not found');
@@ -66,8 +80,11 @@ export function launch() {
   });
 }
 
-/** A page that records console errors, page errors and CSP violations. */
-export async function openPage(browser, url, { width = 1280, height = 800 } = {}) {
+/**
+ * A page that records console errors, page errors and CSP violations. A shared link opens with
+ * its introduction; it is closed unless `keepIntro` is set.
+ */
+export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false } = {}) {
   const context = await browser.newContext({ viewport: { width, height } });
   const page = await context.newPage();
   const problems = [];
@@ -80,11 +97,20 @@ export async function openPage(browser, url, { width = 1280, height = 800 } = {}
   });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  if (!keepIntro && (await page.isVisible('#intro'))) {
+    await page.click('#intro button.primary');
+    await page.waitForSelector('#intro', { state: 'hidden' });
+  }
   return { page, context, problems };
 }
 
 export async function stepCount(page) {
   return Number((await page.textContent('#step-count')).replace(/,/g, ''));
+}
+
+/** Resolves once the page has drawn two more animation frames: whatever was requested is drawn. */
+export async function settle(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
 export async function waitForSteps(page, atLeast, timeout = 20000) {

@@ -2,7 +2,7 @@
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session, stepCount, waitForSteps } from './harness.mjs';
+import { loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
 
 const wasm = loadWasm();
 
@@ -26,15 +26,30 @@ describe('the page', () => {
   });
 
   test('play advances the step counter and pause stops it', async () => {
-    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    // A long run at 300 steps a second: one that kept playing would add steps within a frame.
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json('amas-square28'))}`);
+    await page.$eval('#speed', (input) => {
+      input.value = '5';
+      input.dispatchEvent(new Event('input'));
+    });
     await page.click('#play');
     const reached = await waitForSteps(page, 5);
     assert.ok(reached >= 5);
     await page.click('#play');
     await page.waitForSelector('#play[aria-pressed="false"]');
+    // The worker has confirmed the pause. The counter may still show a frame from before it, so a
+    // first Step brings the page up to the worker; after that, each Step adds exactly one step,
+    // where a run still playing would have added several meanwhile.
+    const shown = await stepCount(page);
+    await page.click('#step');
+    await page.waitForFunction((n) => document.querySelector('#step-count').textContent !== String(n), shown);
     const paused = await stepCount(page);
-    await page.waitForTimeout(400);
-    assert.equal(await stepCount(page), paused);
+    for (const k of [1, 2]) {
+      await page.click('#step');
+      await waitForSteps(page, paused + k);
+      await settle(page);
+      assert.equal(await stepCount(page), paused + k);
+    }
     assert.deepEqual(problems, []);
     await context.close();
   });
@@ -121,8 +136,9 @@ describe('the page', () => {
     await page.click('#tab-about');
     await page.click('#simulate-crash');
     await page.waitForSelector('#banner:not([hidden])');
-    assert.match(await page.textContent('#banner-text'), /internal error/);
+    assert.match(await page.textContent('#banner-text'), /Kumiki hit an internal error in amas; your scenario is kept/);
     assert.match(await page.textContent('#banner-text'), /simulated panic/);
+    assert.equal(await page.textContent('#banner-action'), 'Copy the report');
     await waitForHashAt(page, 0);
     assert.equal(await hashOf(page), initial);
     await page.click('#step');
@@ -176,9 +192,18 @@ describe('the page', () => {
     const box = await page.locator('#view').boundingBox();
     let recorded = false;
     for (let k = 0; k < 40 && !recorded; k++) {
-      await page.mouse.click(box.x + box.width * (0.2 + 0.6 * ((k * 7) % 40) / 40), box.y + box.height * (0.5 + 0.45 * ((k * 13) % 40) / 40));
-      await page.waitForTimeout(60);
-      recorded = (await scenarioJson(page)).includes('"disturbances"');
+      const x = box.x + box.width * (0.2 + (0.6 * ((k * 7) % 40)) / 40);
+      const y = box.y + box.height * (0.5 + (0.45 * ((k * 13) % 40)) / 40);
+      // The inspector names the cell under the pointer as it moves; only a module takes the tool.
+      await page.mouse.move(x, y);
+      const state = await page.evaluate(() => {
+        const inspector = document.querySelector('#inspector');
+        return inspector.hidden ? '' : (inspector.querySelectorAll('dd')[1]?.textContent ?? '');
+      });
+      if (state !== 'module') continue;
+      await page.mouse.click(x, y);
+      await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"disturbances"'));
+      recorded = true;
     }
     assert.ok(recorded, 'a click on a module records a disturbance');
     await context.close();
@@ -243,7 +268,7 @@ describe('the page', () => {
       await page.waitForFunction((k) => document.body.dataset.renderer === k, kind);
       await page.click('#step');
       await waitForSteps(page, 1);
-      await page.waitForTimeout(200);
+      await settle(page);
       const colours = await page.$eval('#view', (canvas) => {
         const probe = document.createElement('canvas');
         probe.width = 200;

@@ -1,6 +1,123 @@
-//! Share links: round trips for every preset and clear errors for damaged links.
+//! Share links: round trips for every preset, clear errors for damaged links, and the links of
+//! earlier releases in `tests/fixtures/links.json`, which must keep opening.
 
-use kumiki_core::{link, presets, Error};
+use kumiki_core::experiment::PROGRAM_VERSION;
+use kumiki_core::{hash, link, models, presets, Error, Run};
+use serde_json::{json, Value};
+
+const FIXTURE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../tests/fixtures/links.json"
+);
+/// Steps run from each fixture link before its state hash is taken.
+const STEPS: u64 = 150;
+
+fn hash_after(scenario: kumiki_core::Scenario, steps: u64) -> String {
+    let mut run = Run::new(scenario).unwrap();
+    run.advance(steps);
+    hash::hex(run.state_hash())
+}
+
+/// Links never rot: every link in the fixture opens, and while its model's behaviour version is
+/// the one it was made with, it runs to the state hash it gave when it was made. A model whose
+/// behaviour changed on purpose raises its `model_version` (in its `ModelEntry`); its old links
+/// must then still open and run.
+///
+/// `KUMIKI_BLESS=1 cargo test -p kumiki-core --test links` adds a link, made by this program, for
+/// each preset the fixture lacks. It never rewrites an entry: the fixture is a record of links
+/// that are out in the world.
+#[test]
+fn links_of_earlier_releases_open_and_run_as_they_did() {
+    let mut stored: Vec<Value> = match std::fs::read_to_string(FIXTURE) {
+        Ok(text) => serde_json::from_str(&text).unwrap(),
+        Err(_) => Vec::new(),
+    };
+    let has = |stored: &[Value], name: &str| stored.iter().any(|e| e["preset"] == name);
+    if std::env::var_os("KUMIKI_BLESS").is_some() {
+        for name in presets::names() {
+            if has(&stored, name) {
+                continue;
+            }
+            let scenario = presets::scenario(name).unwrap();
+            let model = models::entry(&scenario.model).unwrap();
+            stored.push(json!({
+                "preset": name,
+                "made_by": PROGRAM_VERSION,
+                "model": model.name,
+                "model_version": model.model_version,
+                "link": link::encode(&scenario),
+                "steps": STEPS,
+                "hash": hash_after(scenario, STEPS),
+            }));
+        }
+        let text = serde_json::to_string_pretty(&stored).unwrap() + "\n";
+        std::fs::write(FIXTURE, text).unwrap();
+        return;
+    }
+    for name in presets::names() {
+        assert!(
+            has(&stored, name),
+            "preset {name} has no link in tests/fixtures/links.json; add one with KUMIKI_BLESS=1 cargo test -p kumiki-core --test links"
+        );
+    }
+    for entry in &stored {
+        let preset = entry["preset"].as_str().unwrap();
+        let made_by = entry["made_by"].as_str().unwrap();
+        let text = entry["link"].as_str().unwrap();
+        let opened = link::open(text)
+            .unwrap_or_else(|e| panic!("the {preset} link made by {made_by} no longer opens: {e}"));
+        assert_eq!(
+            u64::from(opened.made_with),
+            entry["model_version"].as_u64().unwrap(),
+            "the {preset} link carries another model version than the fixture recorded"
+        );
+        let steps = entry["steps"].as_u64().unwrap();
+        let hash = hash_after(opened.scenario.clone(), steps);
+        if !opened.version_differs() {
+            assert_eq!(
+                hash,
+                entry["hash"].as_str().unwrap(),
+                "the {preset} link made by {made_by} runs differently, yet {} is still at model version {}: if its behaviour changed on purpose, raise model_version in its ModelEntry",
+                opened.scenario.model,
+                opened.current
+            );
+        }
+    }
+}
+
+#[test]
+fn a_link_says_which_model_version_made_it() {
+    let scenario = presets::scenario("fracta-hexagon7").unwrap();
+    let current = models::entry("fracta").unwrap().model_version;
+    let opened = link::open(&link::encode(&scenario)).unwrap();
+    assert_eq!((opened.made_with, opened.current), (current, current));
+    assert!(!opened.version_differs());
+    assert_eq!(opened.scenario, scenario);
+
+    // A link of another version (and one from before versions were recorded, which counts as
+    // version 1) opens with the same scenario and says so.
+    let pack = |doc: &Value| {
+        use base64::Engine as _;
+        let packed = miniz_oxide::deflate::compress_to_vec(doc.to_string().as_bytes(), 9);
+        format!(
+            "{}{}",
+            link::PREFIX,
+            base64::engine::general_purpose::URL_SAFE_NO_PAD.encode(packed)
+        )
+    };
+    let mut doc = scenario.to_value();
+    doc[link::MODEL_VERSION_KEY] = json!(current + 1);
+    let newer = link::open(&pack(&doc)).unwrap();
+    assert_eq!(newer.made_with, current + 1);
+    assert!(newer.version_differs());
+    assert_eq!(newer.scenario, scenario);
+    let unversioned = link::open(&pack(&scenario.to_value())).unwrap();
+    assert_eq!(unversioned.made_with, 1);
+    assert_eq!(unversioned.scenario, scenario);
+    doc[link::MODEL_VERSION_KEY] = json!("one");
+    let err = link::open(&pack(&doc)).unwrap_err().to_string();
+    assert!(err.starts_with("model_version: "), "{err}");
+}
 
 #[test]
 fn every_preset_survives_a_link_round_trip() {
@@ -28,13 +145,21 @@ fn damaged_links_are_errors_that_say_so() {
         ("", "starts with"),
         ("#hello", "starts with"),
         ("#k9.abcdef", "another Kumiki version"),
-        ("#k1.***", "damaged"),
+        (
+            "#k1.***",
+            "damaged: it holds '*', which no Kumiki link has (character 1",
+        ),
+        ("#k1.ab%20", "'%'"),
         (&good[..good.len() / 2], "damaged"),
     ];
     for (input, expect) in cases {
         let err = link::decode(input).unwrap_err();
         assert!(matches!(err, Error::Link(_)), "{input}: {err}");
         assert!(err.to_string().contains(expect), "{input}: {err}");
+        assert!(
+            !err.to_string().contains("Invalid symbol"),
+            "{input}: {err}"
+        );
     }
 }
 

@@ -66,3 +66,138 @@ proptest! {
         }
     }
 }
+
+/// One edit of a preset's canonical JSON: at a position (a fraction of the length), replace a
+/// character, insert text, delete a span, or repeat a span several times.
+#[derive(Clone, Debug)]
+enum Edit {
+    Replace(f64, char),
+    Insert(f64, String),
+    Delete(f64, usize),
+    Repeat(f64, usize, usize),
+}
+
+fn edit() -> impl Strategy<Value = Edit> {
+    let at = 0.0..1.0f64;
+    prop_oneof![
+        (
+            at.clone(),
+            prop::sample::select(vec![
+                '9', '"', '{', '}', '[', ']', '-', 'e', '#', '.', '\n', ',', ':', '0', ' ',
+                '\u{202e}'
+            ])
+        )
+            .prop_map(|(a, c)| Edit::Replace(a, c)),
+        (
+            at.clone(),
+            prop::sample::select(vec![
+                "99999999999",
+                "-1",
+                "1e308",
+                "0.5",
+                "null",
+                "\"\"",
+                "[]",
+                "{}",
+                "\\n####",
+                "#\\n",
+                "\\u0000"
+            ])
+        )
+            .prop_map(|(a, t)| Edit::Insert(a, t.to_string())),
+        (at.clone(), 1usize..40).prop_map(|(a, n)| Edit::Delete(a, n)),
+        (at, 1usize..12, 2usize..200).prop_map(|(a, n, k)| Edit::Repeat(a, n, k)),
+    ]
+}
+
+fn apply(text: &str, edits: &[Edit]) -> String {
+    let mut chars: Vec<char> = text.chars().collect();
+    for e in edits {
+        let pos = |a: f64, len: usize| ((a * len as f64) as usize).min(len);
+        match e {
+            Edit::Replace(a, c) => {
+                if !chars.is_empty() {
+                    let i = pos(*a, chars.len() - 1);
+                    chars[i] = *c;
+                }
+            }
+            Edit::Insert(a, t) => {
+                let i = pos(*a, chars.len());
+                chars.splice(i..i, t.chars());
+            }
+            Edit::Delete(a, n) => {
+                let i = pos(*a, chars.len());
+                let j = (i + n).min(chars.len());
+                chars.drain(i..j);
+            }
+            Edit::Repeat(a, n, k) => {
+                let i = pos(*a, chars.len());
+                let j = (i + n).min(chars.len());
+                let span: Vec<char> = chars[i..j].to_vec();
+                for _ in 1..*k {
+                    chars.splice(j..j, span.iter().copied());
+                }
+            }
+        }
+    }
+    chars.into_iter().collect()
+}
+
+/// The fuzz run: every preset's link, edited, must open and run a few steps or be refused with
+/// an error; nothing panics. `KUMIKI_FUZZ_CASES` sets the number of cases (`npm run fuzz` runs
+/// many); the count and the slowest case are printed.
+#[test]
+fn edited_preset_links_open_and_run_or_are_refused() {
+    use proptest::test_runner::{Config, TestRunner};
+    use std::time::{Duration, Instant};
+    let cases: u32 = std::env::var("KUMIKI_FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(300);
+    let names: Vec<&str> = presets::names().collect();
+    let corpus: Vec<String> = names
+        .iter()
+        .map(|n| presets::scenario(n).unwrap().to_json())
+        .collect();
+    let mut runner = TestRunner::new(Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let slowest = std::cell::RefCell::new((Duration::ZERO, String::new()));
+    let (opened, refused) = (std::cell::Cell::new(0u32), std::cell::Cell::new(0u32));
+    let strategy = (0..corpus.len(), prop::collection::vec(edit(), 1..4));
+    runner
+        .run(&strategy, |(preset, edits)| {
+            let text = apply(&corpus[preset], &edits);
+            let packed = miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 6);
+            let link = format!(
+                "#k1.{}",
+                base64::Engine::encode(&base64::engine::general_purpose::URL_SAFE_NO_PAD, packed)
+            );
+            let start = Instant::now();
+            match link::decode(&link) {
+                Ok(scenario) => {
+                    let mut run = Run::new(scenario).expect("a decoded scenario builds");
+                    run.advance(20);
+                    let _ = run.outcome();
+                    opened.set(opened.get() + 1);
+                }
+                Err(_) => refused.set(refused.get() + 1),
+            }
+            let took = start.elapsed();
+            if took > slowest.borrow().0 {
+                *slowest.borrow_mut() = (took, format!("{} with {edits:?}", names[preset]));
+            }
+            Ok(())
+        })
+        .unwrap();
+    let (took, case) = slowest.into_inner();
+    println!(
+        "fuzz: {} cases without a panic ({} opened and ran 20 steps, {} refused); slowest {:.1} ms: {case}",
+        opened.get() + refused.get(),
+        opened.get(),
+        refused.get(),
+        took.as_secs_f64() * 1e3
+    );
+}

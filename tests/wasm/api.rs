@@ -1,7 +1,9 @@
 //! The exported handle as JavaScript sees it, run in headless Node.
 #![cfg(target_arch = "wasm32")]
 
-use kumiki_wasm::{decode_link, encode_link, model_query, preset_json, ExperimentRunner, Sim};
+use kumiki_wasm::{
+    decode_link, encode_link, link_model_versions, model_query, preset_json, ExperimentRunner, Sim,
+};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test]
@@ -28,6 +30,15 @@ fn link_round_trip_in_wasm() {
         decode_link(&format!("https://x.example/kumiki/#{link}")).unwrap(),
         json
     );
+    let versions = link_model_versions(&link).unwrap();
+    let get = |key: &str| {
+        js_sys::Reflect::get(&versions, &key.into())
+            .unwrap()
+            .as_f64()
+    };
+    // A link made now carries the running model's version.
+    assert!(get("current").is_some_and(|v| v >= 1.0));
+    assert_eq!(get("made_with"), get("current"));
 }
 
 #[wasm_bindgen_test]
@@ -89,4 +100,36 @@ fn fracta_bonds_and_queries_in_wasm() {
     );
     assert!(model_query("fracta", "check", r#"{"goal": "o{K, K}\nK{o}"}"#).is_err());
     assert!(model_query("fracta", "no-such-query", "{}").is_err());
+}
+
+#[wasm_bindgen_test]
+fn rewinding_gives_identical_hashes_and_a_click_in_the_past_forks() {
+    let json = preset_json("amas-L").unwrap();
+    let mut sim = Sim::new(&json).unwrap();
+    let mut hashes = vec![sim.hash()];
+    for _ in 0..120 {
+        sim.advance(1);
+        hashes.push(sim.hash());
+    }
+    assert_eq!(sim.furthest(), 120.0);
+    for back in [0usize, 7, 64, 119] {
+        sim.seek(back as f64);
+        assert_eq!(sim.steps(), back as f64);
+        assert_eq!(sim.hash(), hashes[back], "back at {back}");
+    }
+    sim.seek(30.0);
+    sim.advance(90);
+    assert_eq!(sim.hash(), hashes[120], "forward again");
+    assert_eq!(sim.furthest(), 120.0);
+
+    sim.seek(100.0);
+    sim.apply(r#"{"kind": "remove", "count": 2}"#).unwrap();
+    assert_eq!(
+        sim.furthest(),
+        100.0,
+        "the fork ends the timeline at the click"
+    );
+    assert!(sim.scenario_json().contains("\"at\": 100"));
+    sim.advance(20);
+    assert_ne!(sim.hash(), hashes[120], "the fork runs differently");
 }

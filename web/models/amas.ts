@@ -30,7 +30,7 @@ export const amasEditor: ModelEditor = {
       if (doc.initial !== undefined) list.push({ key: 'initial', label: 'built at the start' });
       return list;
     };
-    const valueOf = (p: Part): unknown => (p.key === 'stages' ? (doc.stages as unknown[])[p.index] : doc[p.key]);
+    const partValue = (p: Part): unknown => (p.key === 'stages' ? (doc.stages as unknown[])[p.index] : doc[p.key]);
     const change = (p: Part, value: unknown): string | null => {
       if (p.key !== 'stages') return ctx.change({ [p.key]: value });
       const stages = [...(doc.stages as unknown[])];
@@ -42,11 +42,11 @@ export const amasEditor: ModelEditor = {
       const list = parts();
       chosen = Math.min(chosen, list.length - 1);
       clear(select);
-      list.forEach((p, i) => select.append(el('option', { value: String(i), text: p.label })));
+      for (const [i, p] of list.entries()) select.append(el('option', { value: String(i), text: p.label }));
       select.value = String(chosen);
       const part = list[chosen];
       removeStage.disabled = part.key !== 'stages';
-      const value = valueOf(part);
+      const value = partValue(part);
       editor?.destroy();
       editor = null;
       clear(box);
@@ -93,7 +93,7 @@ export const amasEditor: ModelEditor = {
       update(scenario) {
         const before = parts().map((p) => p.label).join();
         doc = scenario;
-        const value = valueOf(parts()[Math.min(chosen, parts().length - 1)]);
+        const value = partValue(parts()[Math.min(chosen, parts().length - 1)]);
         if (parts().map((p) => p.label).join() !== before || !editor || typeof value !== 'string') show();
         else editor.setText(value);
       },

@@ -61,7 +61,7 @@ export const fractaEditor: ModelEditor = {
     });
     const renderPriorities = () => {
       clear(priority);
-      shapes.forEach((_, i) => priority.append(el('option', { value: String(i), text: i === 0 ? 'priority 1 (the goal)' : `priority ${i + 1} (with spares)` })));
+      for (let i = 0; i < shapes.length; i++) priority.append(el('option', { value: String(i), text: i === 0 ? 'priority 1 (the goal)' : `priority ${i + 1} (with spares)` }));
       priority.value = String(current);
     };
     priority.addEventListener('change', () => {

@@ -19,6 +19,16 @@ export interface GridEditorOptions {
 
 type Tool = 'paint' | 'erase';
 
+/** Shapes with more cells than this are drawn as a bitmap rather than a path per cell. */
+const PATH_CELLS = 20_000;
+/** The editor's canvas is at most this many CSS pixels on a side. */
+const MAX_CANVAS_PX = 2048;
+/** Canvas colours as little-endian RGBA words for ImageData. */
+const rgba = (r: number, g: number, b: number) => ((255 << 24) | (b << 16) | (g << 8) | r) >>> 0;
+const BACKGROUND = rgba(0x1b, 0x23, 0x2c);
+const FILLED = rgba(0x2b, 0x95, 0xd6);
+const EMPTY = rgba(0x2a, 0x36, 0x42);
+
 /** Editors made so far, for unique element ids. */
 let editors = 0;
 
@@ -222,13 +232,19 @@ export class GridEditor {
     const worldW = hex ? w + 0.5 : w;
     const worldH = (hex ? (h - 1) * HEX_ROW + 2 * HEX_RADIUS : h) + (this.opts.below ? 1.2 : 0);
     const avail = Math.max(160, this.root.clientWidth || 320);
-    this.scale = Math.max(3, Math.min(36, avail / worldW, 420 / worldH));
+    // At least 3 px a cell for painting, unless that would make the canvas larger than
+    // MAX_CANVAS_PX on a side: a huge shape from a link is shown whole, cells smaller than a pixel.
+    const floor = Math.min(3, MAX_CANVAS_PX / Math.max(worldW, worldH));
+    this.scale = Math.max(floor, Math.min(36, avail / worldW, 420 / worldH));
     return { cssW: Math.ceil(worldW * this.scale), cssH: Math.ceil(worldH * this.scale) };
   }
 
   private draw() {
+    // Nothing to see while the editor's tab is hidden; the resize observer calls again when it
+    // is shown.
+    if (!this.root.isConnected || this.root.getClientRects().length === 0) return;
     const { cssW, cssH } = this.layout();
-    const dpr = Math.min(2, window.devicePixelRatio || 1);
+    const dpr = cssW * cssH > 1 << 20 ? 1 : Math.min(2, window.devicePixelRatio || 1);
     this.canvas.width = cssW * dpr;
     this.canvas.height = cssH * dpr;
     this.canvas.style.width = `${cssW}px`;
@@ -239,16 +255,20 @@ export class GridEditor {
     ctx.fillRect(0, 0, cssW, cssH);
     const { w, h, cells } = this.shape;
     const s = this.scale;
-    for (let y = 0; y < h; y++) {
-      for (let x = 0; x < w; x++) {
-        const i = y * w + x;
-        ctx.fillStyle = cells[i] ? '#2b95d6' : '#2a3642';
-        this.cellPath(ctx, x, y);
-        ctx.fill();
-        if (s >= 6) {
-          ctx.strokeStyle = '#1b232c';
-          ctx.lineWidth = 1;
-          ctx.stroke();
+    if (w * h > PATH_CELLS || s < 4) {
+      this.drawBitmap(ctx);
+    } else {
+      for (let y = 0; y < h; y++) {
+        for (let x = 0; x < w; x++) {
+          const i = y * w + x;
+          ctx.fillStyle = cells[i] ? '#2b95d6' : '#2a3642';
+          this.cellPath(ctx, x, y);
+          ctx.fill();
+          if (s >= 6) {
+            ctx.strokeStyle = '#1b232c';
+            ctx.lineWidth = 1;
+            ctx.stroke();
+          }
         }
       }
     }
@@ -269,6 +289,36 @@ export class GridEditor {
       this.cellPath(ctx, cx, cy);
       ctx.stroke();
     }
+  }
+
+  /**
+   * Every cell at once, one pixel each (two on the hex lattice, whose rows are offset by half a
+   * cell), scaled up without smoothing: large shapes draw in milliseconds instead of one path
+   * per cell.
+   */
+  private drawBitmap(ctx: CanvasRenderingContext2D) {
+    const { w, h, cells } = this.shape;
+    const hex = this.opts.lattice === 'hex';
+    const bw = hex ? 2 * w + 1 : w;
+    const image = new ImageData(bw, h);
+    const px = new Uint32Array(image.data.buffer);
+    px.fill(BACKGROUND);
+    for (let y = 0; y < h; y++) {
+      const row = y * bw + (hex ? y & 1 : 0);
+      for (let x = 0; x < w; x++) {
+        const colour = cells[y * w + x] ? FILLED : EMPTY;
+        if (hex) px[row + 2 * x] = px[row + 2 * x + 1] = colour;
+        else px[row + x] = colour;
+      }
+    }
+    const bitmap = document.createElement('canvas');
+    bitmap.width = bw;
+    bitmap.height = h;
+    bitmap.getContext('2d')!.putImageData(image, 0, 0);
+    const s = this.scale;
+    ctx.imageSmoothingEnabled = false;
+    if (hex) ctx.drawImage(bitmap, 0, (HEX_RADIUS - HEX_ROW / 2) * s, (w + 0.5) * s, h * HEX_ROW * s);
+    else ctx.drawImage(bitmap, 0, 0, w * s, h * s);
   }
 
   private cellPath(ctx: CanvasRenderingContext2D, x: number, y: number) {

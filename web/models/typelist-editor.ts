@@ -226,7 +226,7 @@ export class TargetsEditor {
       this.cards = targets.map((_, i) => new Card(this, i, this.idBase));
       for (const c of this.cards) this.list.append(c.node);
     }
-    targets.forEach((t, i) => this.cards[i].show(t, targets.length));
+    for (const [i, t] of targets.entries()) this.cards[i].show(t, targets.length);
   }
 
   /** Changes target i's fields (undefined deletes one); the problem goes to `errorNode`. */

@@ -718,6 +718,7 @@ function editorLayout(dims: [number, number, number]): Layout {
 function emptyFrame(n: number): Frame {
   return {
     steps: 0,
+    furthest: 0,
     maxSteps: 0,
     finished: false,
     completed: false,

@@ -83,12 +83,12 @@ export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scen
       for (let x = x0; x <= x1; x++) {
         const i = y * w + x;
         const v = field.data[i];
-        if (!(v === v)) continue;
+        if (Number.isNaN(v)) continue;
         let best = -1;
         let bestV = v;
         for (const j of neighbours(layout, i)) {
           const u = field.data[j];
-          if (u === u && u < bestV) {
+          if (!Number.isNaN(u) && u < bestV) {
             bestV = u;
             best = j;
           }
@@ -188,7 +188,7 @@ function arrow(ctx: CanvasRenderingContext2D, [ax, ay]: [number, number], [bx, b
 /** In 3-D: the difference a unit would have at each highlighted (reachable) cell. */
 function labelReach(ctx: CanvasRenderingContext2D, scene: Scene, cam: Camera3D, marks: Marks) {
   const values = marks.highlightValues;
-  if (!marks.labels || !values || !values.length || marks.highlight.length > 64) return;
+  if (!marks.labels || !values?.length || marks.highlight.length > 64) return;
   const [w, h] = scene.layout.dims;
   ctx.font = '600 12px system-ui, sans-serif';
   ctx.textAlign = 'center';

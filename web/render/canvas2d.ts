@@ -66,7 +66,7 @@ export class Canvas2DRenderer implements Renderer {
     const o = scene.overlay;
     if (!o) return null;
     const v = o.data[i];
-    if (!(v === v) || v === Infinity || v === -Infinity) return null;
+    if (!Number.isFinite(v)) return null;
     return heat(o.max > o.min ? (v - o.min) / (o.max - o.min) : 0.5);
   }
 
@@ -81,7 +81,7 @@ export class Canvas2DRenderer implements Renderer {
       const span = o.max > o.min ? o.max - o.min : 1;
       for (let i = 0; i < cells.length; i++) {
         const v = o.data[i];
-        if (v === v && cells[i] !== 0) {
+        if (!Number.isNaN(v) && cells[i] !== 0) {
           const [r, g, b] = heat((v - o.min) / span);
           px[i] = ((255 << 24) | (b << 16) | (g << 8) | r) >>> 0;
         } else {

@@ -123,7 +123,7 @@ function buildModel(scene: Scene, palette: Uint8Array, heat: Uint8Array): CubicM
     const v = o ? o.data[i] : NaN;
     let src = palette;
     let at = code * 4;
-    if (o && v === v && v !== Infinity && v !== -Infinity) {
+    if (o && Number.isFinite(v)) {
       src = heat;
       at = Math.round(Math.min(1, Math.max(0, (v - o.min) / span)) * 255) * 4;
     }

@@ -51,7 +51,7 @@ export function range(data: Float32Array): [number, number] {
   let hi = -Infinity;
   for (let i = 0; i < data.length; i++) {
     const v = data[i];
-    if (v === v && v !== Infinity && v !== -Infinity) {
+    if (Number.isFinite(v)) {
       if (v < lo) lo = v;
       if (v > hi) hi = v;
     }

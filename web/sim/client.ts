@@ -10,7 +10,12 @@ export interface SimEvents {
   scenario(scenario: string): void;
   error(message: string, context: 'load' | 'apply' | 'step'): void;
   panic(message: string): void;
+  /** The worker has not answered for `ms` milliseconds (`ms` is 0 once it answers again). */
+  stalled(ms: number): void;
 }
+
+/** How long the worker may leave a ping unanswered before the page says so. */
+const STALL_MS = 4000;
 
 export class SimClient {
   private worker!: Worker;
@@ -20,9 +25,31 @@ export class SimClient {
   private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
   private speed = 30;
   private overlay: string | null = null;
+  private pingId = 0;
+  /** When the oldest unanswered ping was sent; null when every ping has been answered. */
+  private unanswered: number | null = null;
+  private stalledFor = 0;
 
   constructor(private readonly on: SimEvents) {
     this.start();
+    setInterval(() => this.watch(), 1000);
+  }
+
+  /** The watchdog: one ping at a time; a ping left unanswered too long is reported. */
+  private watch() {
+    const now = performance.now();
+    if (this.unanswered === null) {
+      this.unanswered = now;
+      this.send({ type: 'ping', id: ++this.pingId });
+    } else if (now - this.unanswered > STALL_MS) {
+      this.stalledFor = now - this.unanswered;
+      this.on.stalled(this.stalledFor);
+    }
+  }
+
+  /** Ends a worker that does not answer and starts again with the last scenario that loaded. */
+  recover() {
+    this.restart();
   }
 
   private start() {
@@ -40,6 +67,13 @@ export class SimClient {
   private receive(msg: FromWorker) {
     switch (msg.type) {
       case 'ready':
+        return;
+      case 'pong':
+        this.unanswered = null;
+        if (this.stalledFor) {
+          this.stalledFor = 0;
+          this.on.stalled(0);
+        }
         return;
       case 'loaded':
         this.lastGood = this.pendingLoad ?? msg.scenario;
@@ -76,6 +110,11 @@ export class SimClient {
   private restart() {
     this.worker.terminate();
     this.inspectWaiters.clear();
+    this.unanswered = null;
+    if (this.stalledFor) {
+      this.stalledFor = 0;
+      this.on.stalled(0);
+    }
     this.start();
     if (this.lastGood) this.load(this.lastGood);
   }
@@ -92,6 +131,10 @@ export class SimClient {
   }
   step(count = 1) {
     this.send({ type: 'step', count });
+  }
+  /** Goes to an earlier (or, up to the furthest reached, later) step of the run. */
+  seek(step: number) {
+    this.send({ type: 'seek', step });
   }
   setSpeed(stepsPerSecond: number) {
     this.speed = stepsPerSecond;

@@ -6,12 +6,14 @@ export type ToWorker =
   | { type: 'play' }
   | { type: 'pause' }
   | { type: 'step'; count: number }
+  | { type: 'seek'; step: number }
   | { type: 'speed'; stepsPerSecond: number }
   | { type: 'overlay'; field: string | null }
   | { type: 'apply'; action: string }
   | { type: 'inspect'; cell: number; id: number }
   | { type: 'ack' }
-  | { type: 'crash' };
+  | { type: 'crash' }
+  | { type: 'ping'; id: number };
 
 export type FromWorker =
   | { type: 'ready' }
@@ -21,4 +23,5 @@ export type FromWorker =
   | { type: 'scenario'; scenario: string }
   | { type: 'inspected'; id: number; cell: number; facts: Record<string, unknown> }
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
-  | { type: 'panic'; message: string };
+  | { type: 'panic'; message: string }
+  | { type: 'pong'; id: number };

@@ -31,6 +31,8 @@ let rateWindow: { t: number; steps: number }[] = [];
 let tickScheduled = false;
 /** The scene last sent, as JSON, so frames carry it only when it changed. */
 let lastScene = '';
+/** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
+let seekTo: number | null = null;
 
 const channel = new MessageChannel();
 channel.port1.onmessage = () => {
@@ -81,6 +83,7 @@ function sendFrame(force = false) {
     lastScene = sceneJson;
     return {
       steps: s.steps(),
+      furthest: s.furthest(),
       maxSteps,
       finished: s.finished(),
       completed: s.completed(),
@@ -117,6 +120,13 @@ function setPlaying(on: boolean) {
 
 function tick() {
   if (!sim) return;
+  if (seekTo !== null) {
+    const s = sim;
+    const step = seekTo;
+    seekTo = null;
+    if (guard('step', () => s.seek(step)) === undefined && !sim) return;
+    dirty = true;
+  }
   if (playing) {
     const s = sim;
     const start = performance.now();
@@ -191,6 +201,12 @@ function handle(msg: ToWorker) {
       schedule();
       return;
     }
+    case 'seek':
+      if (!sim) return;
+      setPlaying(false);
+      seekTo = msg.step;
+      schedule();
+      return;
     case 'speed':
       stepsPerSecond = msg.stepsPerSecond;
       budget = 0;
@@ -229,13 +245,18 @@ function handle(msg: ToWorker) {
     case 'crash':
       guard('step', () => simulate_panic());
       return;
+    case 'ping':
+      return;
   }
 }
 
 const queue: ToWorker[] = [];
 let ready = false;
 scope.onmessage = (e: MessageEvent<ToWorker>) => {
-  if (ready) handle(e.data);
+  // Answered at once, even before the wasm is ready: the page's watchdog asks whether this
+  // thread still takes messages at all.
+  if (e.data.type === 'ping') post({ type: 'pong', id: e.data.id });
+  else if (ready) handle(e.data);
   else queue.push(e.data);
 };
 

@@ -40,6 +40,15 @@ export class MetricChart {
     this.dirty = true;
   }
 
+  /** Forgets the points after `step`: the run forked there. */
+  truncate(step: number) {
+    const keep = this.xs.findIndex((x) => x > step);
+    if (keep < 0) return;
+    this.xs = this.xs.slice(0, keep);
+    this.ys = this.ys.slice(0, keep);
+    this.dirty = true;
+  }
+
   render() {
     if (!this.dirty || !this.root.isConnected || this.root.offsetParent === null) return;
     this.dirty = false;

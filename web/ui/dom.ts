@@ -55,3 +55,20 @@ export function typingIn(target: EventTarget | null): boolean {
   }
   return false;
 }
+
+// Bidirectional controls (LRM, RLM, ALM, the embeddings, overrides and isolates) can make a name
+// read as something else; NUL and other control characters have no business in a title.
+// biome-ignore lint/suspicious/noControlCharactersInRegex: finding control characters is its purpose.
+const HIDDEN = /[\u0000-\u0008\u000b-\u001f\u007f-\u009f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]/g;
+
+/**
+ * Text from a scenario (a name, a description) as it may be shown: without bidirectional controls
+ * or control characters, line breaks kept only when `lines` is true, and cut to `max` characters.
+ */
+export function displayText(text: string, max: number, lines = false): string {
+  let clean = text.replace(HIDDEN, '');
+  if (!lines) clean = clean.replace(/[\t\n]+/g, ' ');
+  clean = clean.trim();
+  const chars = Array.from(clean);
+  return chars.length > max ? `${chars.slice(0, max - 1).join('')}…` : clean;
+}

@@ -30,17 +30,25 @@ function groupBy<T>(items: T[], f: (t: T) => string): Map<string, T[]> {
   return m;
 }
 
-function stats(values: number[]) {
+/** Count, mean, sample sd, extremes and quartiles of the finite values. */
+export function stats(values: number[]) {
   const v = values.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
   const n = v.length;
-  if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, q3: NaN };
+  if (!n) return { n, mean: NaN, min: NaN, max: NaN, sd: NaN, q1: NaN, median: NaN, q3: NaN };
   const mean = v.reduce((a, b) => a + b, 0) / n;
   const sd = Math.sqrt(v.reduce((a, b) => a + (b - mean) ** 2, 0) / Math.max(1, n - 1));
-  const q = (p: number) => v[Math.min(n - 1, Math.floor(p * (n - 1)))];
-  return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), q3: q(0.75) };
+  // Linear interpolation between order statistics, as the reproduction report computes them.
+  const q = (p: number) => {
+    const pos = p * (n - 1);
+    const lo = Math.floor(pos);
+    const hi = Math.ceil(pos);
+    return v[lo] + (v[hi] - v[lo]) * (pos - lo);
+  };
+  return { n, mean, min: v[0], max: v[n - 1], sd, q1: q(0.25), median: q(0.5), q3: q(0.75) };
 }
 
-function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
+/** The band a plot draws around a mean: `minmax`, `sd`, `quartiles`, or none. */
+export function spreadOf(s: ReturnType<typeof stats>, spread: string): [number, number] | null {
   if (spread === 'minmax') return [s.min, s.max];
   if (spread === 'sd') return [s.mean - s.sd, s.mean + s.sd];
   if (spread === 'quartiles') return [s.q1, s.q3];
@@ -102,11 +110,11 @@ function chart(panel: HTMLElement, xs: number[], lines: Line[], spec: Spec, xLab
     series.push({ label: line.label, stroke: color, width: 2, points: { show: xs.length < 40 } });
     data.push(line.ys.map((y) => (Number.isFinite(y) ? y : null)));
     if (line.band) {
-      series.push({ label: `${line.label} (low)`, stroke: color + '55', width: 1, points: { show: false } });
-      series.push({ label: `${line.label} (high)`, stroke: color + '55', width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (low)`, stroke: `${color}55`, width: 1, points: { show: false } });
+      series.push({ label: `${line.label} (high)`, stroke: `${color}55`, width: 1, points: { show: false } });
       data.push(line.band[0].map((y) => (Number.isFinite(y) ? y : null)));
       data.push(line.band[1].map((y) => (Number.isFinite(y) ? y : null)));
-      bands.push({ series: [idx + 2, idx + 1], fill: color + '22' });
+      bands.push({ series: [idx + 2, idx + 1], fill: `${color}22` });
     }
   });
   const width = Math.max(260, panel.clientWidth || panel.parentElement?.clientWidth || 340);
@@ -181,7 +189,7 @@ function trace(panel: HTMLElement, spec: Spec, rows: Row[]) {
   const seriesPath = str(spec, 'series');
   const spread = str(spec, 'spread', 'sd');
   const carry = str(spec, 'carry', 'last') === 'last';
-  const traced = rows.filter((r) => r.trace && r.trace.values[y]);
+  const traced = rows.filter((r) => r.trace?.values[y]);
   if (!traced.length) {
     panel.append(el('p', { class: 'hint', text: `No runs traced '${y}'.` }));
     return;
@@ -240,9 +248,9 @@ function histogram(box: HTMLElement, spec: Spec, rows: Row[]) {
     for (const v of values) counts[Math.min(bins - 1, Math.floor((v - lo) / width))]++;
     const xs = counts.map((_, i) => lo + (i + 0.5) * width);
     const st = stats(values);
-    panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.q1 + (st.q3 - st.q1) / 2)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
+    panel.append(el('p', { class: 'hint', text: `n = ${st.n}, mean ${formatNumber(st.mean)}, median ${formatNumber(st.median)}, min ${formatNumber(st.min)}, max ${formatNumber(st.max)}` }));
     chart(panel, xs, [{ label: 'runs', ys: counts, band: null }], spec, short(path), 'runs', {
-      series: [{ label: short(path) }, { label: 'runs', fill: COLORS[0] + '99', stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
+      series: [{ label: short(path) }, { label: 'runs', fill: `${COLORS[0]}99`, stroke: COLORS[0], paths: uPlot.paths.bars!({ size: [0.95, 100] }), points: { show: false } }],
     });
   }
 }

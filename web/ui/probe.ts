@@ -46,7 +46,7 @@ export class Probe {
 
 /** Reachable cells and the difference at each, from a cubic model's inspector facts. */
 export function reachOf(facts: Facts | null): { cells: number[]; values: number[] } | null {
-  if (!facts || facts.unit !== true || !Array.isArray(facts.reachable)) return null;
+  if (facts?.unit !== true || !Array.isArray(facts.reachable)) return null;
   const cells = facts.reachable.filter((x): x is number => typeof x === 'number');
   const raw = Array.isArray(facts.reachable_differences) ? facts.reachable_differences : [];
   const values = cells.map((_, k) => (typeof raw[k] === 'number' ? (raw[k] as number) : NaN));

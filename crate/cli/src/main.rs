@@ -2,43 +2,179 @@
 
 mod bench;
 mod pool;
+mod reproduce;
+mod shard;
 
+// Counts only while `kumiki bench` measures; see `bench::Counting` for why it is installed.
 #[global_allocator]
 static ALLOC: bench::Counting = bench::Counting;
 
 use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
 use kumiki_core::experiment::{self, Experiment, Row, PROGRAM_VERSION};
-use kumiki_core::scenario::{parse_override, MAX_SEED};
+use kumiki_core::scenario::{parse_override, MAX_SEED, MAX_STEPS};
 use kumiki_core::{hash, link, presets, Run, Scenario};
+use serde_json::Value;
 
-const HELP: &str = "\
-kumiki: self-assembling and self-reconfiguring modular robots, from the command line
+use shard::{Shard, Tag};
 
-USAGE
-  kumiki presets                       one built-in scenario name per line
-  kumiki experiments                   one built-in experiment name per line
-  kumiki show SCENARIO                 print the scenario as JSON
-  kumiki link SCENARIO [--base URL]    print a share link that opens the scenario in the page
-  kumiki run SCENARIO [--seed S | --seeds N] [--max-steps M] [--set PATH=VALUE]...
-                      [--format json|csv] [--jobs J]
-  kumiki sweep EXPERIMENT [--format json|csv] [--jobs J]
-  kumiki bench WORKLOAD.json... [--jobs J]
-                                       time workloads (see tests/bench); one JSON line each
-  kumiki queries                       the models' helper calls: MODEL NAME and what each does
-  kumiki query MODEL NAME [ARGS]       a model's helper call; ARGS is JSON text or a JSON file,
-                                       e.g. kumiki query cubes3d derive '{\"shape\": \"##\\n##\\n\"}'
-  kumiki help | --version
-
+const AFTER_HELP: &str = "\
 SCENARIO is a JSON file, a share link (or its #k1... part), or a preset name.
 EXPERIMENT is an experiment JSON file or a built-in experiment name.
---seeds N runs seeds 1..N; --set overrides any scenario field by its dotted path, the value read
-as JSON when it parses (5, true, [1,2]) and as text otherwise. Runs of many seeds use every core
-(--jobs to choose). Output: one JSON object per run and line, or CSV with a header.";
+Runs of many seeds and sweeps use every core (--jobs to choose). Output: one JSON object per run
+and line, or CSV with a header. --shard I/N runs part of them (see docs/cluster.md); kumiki merge
+puts the parts back together.";
 
-/// A usage error (exit code 2) or a failure of the run itself (exit code 1).
-enum Failure {
+#[derive(Parser)]
+#[command(
+    name = "kumiki",
+    version,
+    about = "kumiki: self-assembling and self-reconfiguring modular robots, from the command line",
+    after_help = AFTER_HELP
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// One built-in scenario name per line
+    Presets,
+    /// One built-in experiment name per line
+    Experiments,
+    /// Print the scenario as JSON
+    Show {
+        /// A JSON file, a share link or a preset name
+        scenario: String,
+    },
+    /// Print a share link that opens the scenario in the page
+    Link {
+        /// A JSON file, a share link or a preset name
+        scenario: String,
+        /// The page's address
+        #[arg(long, value_name = "URL", default_value = "http://localhost:8080/")]
+        base: String,
+    },
+    /// Run a scenario for one seed or many
+    Run(RunArgs),
+    /// Run an experiment: scenarios x grid x seeds, one row per run
+    Sweep(SweepArgs),
+    /// Put the outputs of --shard runs back into one, in the unsharded order
+    Merge {
+        /// The shards' outputs, in any order
+        #[arg(required = true, value_name = "FILES")]
+        files: Vec<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
+    },
+    /// Time workloads (see tests/bench); one JSON line each
+    Bench {
+        #[arg(required = true, value_name = "WORKLOAD.json")]
+        files: Vec<PathBuf>,
+        #[command(flatten)]
+        jobs: Jobs,
+    },
+    /// Run every model's paper experiments and write docs/reproduction.md and .json under DIR
+    Reproduce {
+        /// Print this model's part as Markdown instead of writing the report
+        #[arg(long, value_name = "M", conflicts_with = "check")]
+        model: Option<String>,
+        /// Compare the report under DIR with what the experiments give now; fail if it differs
+        #[arg(long)]
+        check: bool,
+        /// The repository root the report lives under
+        #[arg(long, value_name = "DIR", default_value = ".")]
+        root: PathBuf,
+        #[command(flatten)]
+        jobs: Jobs,
+    },
+    /// The models' helper calls: MODEL NAME and what each does
+    Queries,
+    /// A model's helper call, e.g. kumiki query cubes3d derive '{"shape": "##\n##\n"}'
+    Query {
+        model: String,
+        name: String,
+        /// JSON text or a JSON file
+        args: Option<String>,
+    },
+    /// Print the program version
+    #[command(hide = true)]
+    Version,
+}
+
+#[derive(Args)]
+struct Jobs {
+    /// Threads to use (default: every core)
+    #[arg(long = "jobs", value_name = "J", value_parser = clap::value_parser!(u64).range(1..=256))]
+    jobs: Option<u64>,
+}
+
+impl Jobs {
+    fn threads(&self) -> usize {
+        match self.jobs {
+            Some(j) => j as usize,
+            None => std::thread::available_parallelism().map_or(1, usize::from),
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Json,
+    Csv,
+}
+
+#[derive(Args)]
+struct RunArgs {
+    /// A JSON file, a share link or a preset name
+    scenario: String,
+    /// Run this seed instead of the scenario's
+    #[arg(long, value_name = "S", value_parser = clap::value_parser!(u64).range(0..=MAX_SEED))]
+    seed: Option<u64>,
+    /// Run seeds 1..N
+    #[arg(long, value_name = "N", conflicts_with = "seed",
+          value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    seeds: Option<u64>,
+    /// Stop every run after at most M steps
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u64).range(1..=MAX_STEPS))]
+    max_steps: Option<u64>,
+    /// Override a scenario field by its dotted path; VALUE is read as JSON when it parses
+    /// (5, true, [1,2]) and as text otherwise
+    #[arg(long = "set", value_name = "PATH=VALUE", value_parser = parse_set)]
+    sets: Vec<(String, Value)>,
+    #[arg(long, value_enum, default_value_t = Format::Json)]
+    format: Format,
+    #[command(flatten)]
+    jobs: Jobs,
+    /// Run only shard I of N (I from 0) of the seeds, as JSON lines for kumiki merge
+    #[arg(long, value_name = "I/N", requires = "seeds")]
+    shard: Option<Shard>,
+}
+
+#[derive(Args)]
+struct SweepArgs {
+    /// An experiment JSON file or a built-in experiment name
+    experiment: String,
+    #[arg(long, value_enum, default_value_t = Format::Json)]
+    format: Format,
+    #[command(flatten)]
+    jobs: Jobs,
+    /// Run only shard I of N (I from 0) of the jobs, as JSON lines for kumiki merge
+    #[arg(long, value_name = "I/N")]
+    shard: Option<Shard>,
+}
+
+fn parse_set(text: &str) -> Result<(String, Value), String> {
+    parse_override(text).map_err(|e| e.to_string())
+}
+
+/// A usage error clap cannot see (exit code 2) or a failure of the run itself (exit code 1).
+pub enum Failure {
     Usage(String),
     Run(String),
 }
@@ -49,14 +185,36 @@ impl<E: std::fmt::Display> From<E> for Failure {
     }
 }
 
+/// Usage errors, clap's and ours, print the same way: one line naming the problem and a pointer
+/// to the help.
+fn usage_error(message: &str) -> ExitCode {
+    eprintln!("kumiki: {message}\n(see 'kumiki help')");
+    ExitCode::from(2)
+}
+
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match dispatch(&args) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(Failure::Usage(msg)) => {
-            eprintln!("kumiki: {msg}\n(see 'kumiki help')");
-            ExitCode::from(2)
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // One line that names the problem, like every other error of this program: clap's
+            // message up to its first blank line (the usage and tips follow it), on one line.
+            let text = e.to_string();
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            return usage_error(message.join(" ").trim_start_matches("error: "));
         }
+    };
+    match dispatch(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Usage(msg)) => usage_error(&msg),
         Err(Failure::Run(msg)) => {
             eprintln!("kumiki: {msg}");
             ExitCode::from(1)
@@ -64,148 +222,111 @@ fn main() -> ExitCode {
     }
 }
 
-fn dispatch(args: &[String]) -> Result<(), Failure> {
-    let Some(command) = args.first() else {
-        println!("{HELP}");
-        return Ok(());
-    };
-    let rest = &args[1..];
-    match command.as_str() {
-        "help" | "--help" | "-h" => {
-            println!("{HELP}");
-            Ok(())
+fn dispatch(command: Option<Command>) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    match command {
+        None => {
+            write!(out, "{}", Cli::command().render_help())?;
         }
-        "--version" | "version" => {
-            println!("{PROGRAM_VERSION}");
-            Ok(())
-        }
-        "presets" => {
-            no_more(rest)?;
-            let mut out = std::io::stdout().lock();
+        Some(Command::Version) => writeln!(out, "{PROGRAM_VERSION}")?,
+        Some(Command::Presets) => {
             for name in presets::names() {
                 writeln!(out, "{name}")?;
             }
-            Ok(())
         }
-        "experiments" => {
-            no_more(rest)?;
-            let mut out = std::io::stdout().lock();
+        Some(Command::Experiments) => {
             for name in presets::experiment_names() {
                 writeln!(out, "{name}")?;
             }
-            Ok(())
         }
-        "show" => {
-            let (target, _) = one_positional(rest, "show", &[])?;
-            println!("{}", load_scenario(&target)?.to_json_pretty());
-            Ok(())
+        Some(Command::Show { scenario }) => {
+            writeln!(out, "{}", load_scenario(&scenario)?.to_json_pretty())?;
         }
-        "link" => {
-            let (target, opts) = one_positional(rest, "link", &["--base"])?;
-            let scenario = load_scenario(&target)?;
-            let base = opts
-                .get("--base")
-                .cloned()
-                .unwrap_or_else(|| "http://localhost:8080/".into());
-            println!("{base}#{}", link::encode(&scenario));
-            Ok(())
+        Some(Command::Link { scenario, base }) => {
+            let scenario = load_scenario(&scenario)?;
+            writeln!(out, "{base}#{}", link::encode(&scenario))?;
         }
-        "run" => run(rest),
-        "sweep" => sweep(rest),
-        "bench" => bench(rest),
-        "queries" => {
-            no_more(rest)?;
-            let mut out = std::io::stdout().lock();
+        Some(Command::Run(args)) => run(args, &mut out)?,
+        Some(Command::Sweep(args)) => sweep(args, &mut out)?,
+        Some(Command::Merge { files, format }) => {
+            let texts = files
+                .iter()
+                .map(|f| {
+                    std::fs::read_to_string(f)
+                        .map(|t| (f.display().to_string(), t))
+                        .map_err(|e| format!("{}: {e}", f.display()))
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            let (command, rows) = shard::merge(&texts)?;
+            write!(
+                out,
+                "{}",
+                shard::write(command, &rows, format == Format::Csv)
+            )?;
+        }
+        Some(Command::Bench { files, jobs }) => {
+            bench::start_counting();
+            let workloads = files
+                .iter()
+                .map(|f| bench::load(f))
+                .collect::<Result<Vec<_>, _>>()?;
+            for w in &workloads {
+                writeln!(out, "{}", bench::measure(w, jobs.threads()))?;
+            }
+        }
+        Some(Command::Reproduce {
+            model,
+            check,
+            root,
+            jobs,
+        }) => {
+            let mode = match (&model, check) {
+                (Some(_), _) => reproduce::Mode::Print,
+                (None, true) => reproduce::Mode::Check,
+                (None, false) => reproduce::Mode::Write,
+            };
+            reproduce::run(model.as_deref(), mode, &root, jobs.threads())?;
+        }
+        Some(Command::Queries) => {
             for q in kumiki_core::models::QUERIES {
                 writeln!(out, "{} {}\t{}", q.model, q.name, q.description)?;
             }
-            Ok(())
         }
-        "query" => query(rest),
-        other => Err(Failure::Usage(format!("unknown command '{other}'"))),
-    }
-}
-
-fn no_more(rest: &[String]) -> Result<(), Failure> {
-    match rest.first() {
-        None => Ok(()),
-        Some(extra) => Err(Failure::Usage(format!("unexpected argument '{extra}'"))),
-    }
-}
-
-/// Parsed flags: single-valued options plus repeated `--set`.
-struct Options {
-    single: std::collections::BTreeMap<String, String>,
-    sets: Vec<String>,
-}
-
-impl Options {
-    fn get(&self, key: &str) -> Option<&String> {
-        self.single.get(key)
-    }
-}
-
-fn parse_options(rest: &[String], allowed: &[&str]) -> Result<(Vec<String>, Options), Failure> {
-    let mut positional = Vec::new();
-    let mut opts = Options {
-        single: Default::default(),
-        sets: Vec::new(),
-    };
-    let mut i = 0;
-    while i < rest.len() {
-        let arg = &rest[i];
-        if let Some(flag) = arg.strip_prefix("--").map(|_| arg.as_str()) {
-            let (name, inline) = match flag.split_once('=') {
-                Some((n, v)) if n != "--set" => (n.to_string(), Some(v.to_string())),
-                _ => (flag.to_string(), None),
-            };
-            if !allowed.contains(&name.as_str()) {
-                return Err(Failure::Usage(format!("unknown option '{name}'")));
-            }
-            let value = match inline {
-                Some(v) => v,
-                None => {
-                    i += 1;
-                    rest.get(i)
-                        .cloned()
-                        .ok_or_else(|| Failure::Usage(format!("{name} needs a value")))?
+        Some(Command::Query { model, name, args }) => {
+            let text = match args {
+                None => "{}".to_string(),
+                Some(a) if Path::new(&a).is_file() => {
+                    std::fs::read_to_string(&a).map_err(|e| format!("{a}: {e}"))?
                 }
+                Some(a) => a,
             };
-            if name == "--set" {
-                opts.sets.push(value);
-            } else if opts.single.insert(name.clone(), value).is_some() {
-                return Err(Failure::Usage(format!("{name} given twice")));
-            }
-        } else {
-            positional.push(arg.clone());
+            let args: Value = serde_json::from_str(&text).map_err(|e| format!("ARGS: {e}"))?;
+            writeln!(out, "{}", kumiki_core::models::query(&model, &name, &args)?)?;
         }
-        i += 1;
     }
-    Ok((positional, opts))
-}
-
-fn one_positional(
-    rest: &[String],
-    command: &str,
-    allowed: &[&str],
-) -> Result<(String, Options), Failure> {
-    let (positional, opts) = parse_options(rest, allowed)?;
-    match positional.as_slice() {
-        [one] => Ok((one.clone(), opts)),
-        [] => Err(Failure::Usage(format!("{command} needs a scenario"))),
-        [_, extra, ..] => Err(Failure::Usage(format!("unexpected argument '{extra}'"))),
-    }
+    Ok(())
 }
 
 /// A scenario from a file, a link or a preset name, in that order.
 fn load_scenario(target: &str) -> Result<Scenario, Failure> {
-    let path = std::path::Path::new(target);
+    let path = Path::new(target);
     if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
         return Scenario::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")));
     }
     if target.contains('#') || target.starts_with(link::PREFIX) {
-        return Ok(link::decode(target)?);
+        let opened = link::open(target)?;
+        if opened.version_differs() {
+            let when = match opened.made_with < opened.current {
+                true => "an earlier",
+                false => "a newer",
+            };
+            eprintln!(
+                "kumiki: this link was made with {when} Kumiki ({} behaviour version {}, this one runs {}); results may differ",
+                opened.scenario.model, opened.made_with, opened.current
+            );
+        }
+        return Ok(opened.scenario);
     }
     if presets::names().any(|n| n == target) {
         return Ok(presets::scenario(target)?);
@@ -215,213 +336,153 @@ fn load_scenario(target: &str) -> Result<Scenario, Failure> {
     )))
 }
 
-fn parse_number(flag: &str, text: &str, max: u64) -> Result<u64, Failure> {
-    match text.parse::<u64>() {
-        Ok(n) if n <= max => Ok(n),
-        _ => Err(Failure::Usage(format!(
-            "{flag} expects a whole number from 0 to {max}, not '{text}'"
-        ))),
-    }
-}
-
-fn threads(opts: &Options) -> Result<usize, Failure> {
-    match opts.get("--jobs") {
-        Some(j) => Ok(parse_number("--jobs", j, 256)?.max(1) as usize),
-        None => Ok(std::thread::available_parallelism().map_or(1, usize::from)),
-    }
-}
-
-fn format(opts: &Options) -> Result<bool, Failure> {
-    match opts.get("--format").map(String::as_str) {
-        None | Some("json") => Ok(false),
-        Some("csv") => Ok(true),
-        Some(other) => Err(Failure::Usage(format!(
-            "--format is json or csv, not '{other}'"
-        ))),
-    }
-}
-
-fn run(rest: &[String]) -> Result<(), Failure> {
-    let (target, opts) = one_positional(
-        rest,
-        "run",
-        &[
-            "--seed",
-            "--seeds",
-            "--max-steps",
-            "--set",
-            "--format",
-            "--jobs",
-        ],
-    )?;
-    let csv = format(&opts)?;
-    let mut scenario = load_scenario(&target)?;
+fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
+    let mut scenario = load_scenario(&args.scenario)?;
     let mut params = serde_json::Map::new();
-    let overrides = opts
-        .sets
-        .iter()
-        .map(|s| parse_override(s))
-        .collect::<Result<Vec<_>, _>>()?;
-    if !overrides.is_empty() {
-        scenario = scenario.with_overrides(&overrides)?;
-        for (path, value) in overrides {
-            params.insert(path, value);
-        }
+    if !args.sets.is_empty() {
+        scenario = scenario.with_overrides(&args.sets)?;
+        params.extend(args.sets.iter().cloned());
     }
-    if let Some(m) = opts.get("--max-steps") {
-        let m = parse_number("--max-steps", m, kumiki_core::scenario::MAX_STEPS)?;
+    if let Some(m) = args.max_steps {
         scenario = scenario.with_override("max_steps", m.into())?;
     }
-    let seeds: Vec<u64> = match (opts.get("--seed"), opts.get("--seeds")) {
-        (Some(_), Some(_)) => {
-            return Err(Failure::Usage("give --seed or --seeds, not both".into()))
-        }
-        (Some(s), None) => vec![parse_number("--seed", s, MAX_SEED)?],
-        (None, Some(n)) => (1..=parse_number("--seeds", n, 1_000_000)?.max(1)).collect(),
+    let seeds: Vec<u64> = match (args.seed, args.seeds) {
+        (Some(s), _) => vec![s],
+        (None, Some(n)) => (1..=n).collect(),
         (None, None) => vec![scenario.seed],
     };
     let scenario_hash = hash::hex(scenario.hash_without_seed());
-    let jobs = threads(&opts)?;
-    let mut rows: Vec<Row> = Vec::new();
-    let mut out = std::io::stdout().lock();
-    pool::run_ordered(
-        seeds.len(),
-        jobs,
-        |i| {
-            let mut s = scenario.clone();
-            s.seed = seeds[i];
-            let mut run = Run::new(s).expect("the scenario was validated");
-            run.run_to_end();
-            run.outcome()
-        },
-        |_, outcome| {
-            if csv {
-                rows.push(Row {
-                    scenario: outcome.scenario,
-                    seed: outcome.seed,
-                    completed: outcome.completed,
-                    steps: outcome.steps,
-                    hash: outcome.hash,
-                    metrics: outcome.metrics,
-                    params: params.clone(),
-                    scenario_hash: scenario_hash.clone(),
-                    version: PROGRAM_VERSION.into(),
-                    trace: None,
-                });
-                Ok(())
-            } else {
-                writeln!(
-                    out,
-                    "{}",
-                    serde_json::to_string(&outcome).expect("rows serialise")
-                )
-            }
-        },
-    )?;
-    if csv {
-        write!(out, "{}", experiment::to_csv(&rows))?;
-    }
-    Ok(())
+    let output = Output {
+        command: shard::Command::Run,
+        source: scenario.name.clone(),
+        format: args.format,
+        shard: args.shard,
+        threads: args.jobs.threads(),
+        progress: args.seeds.is_some(),
+    };
+    output.emit(seeds.len(), out, |i| {
+        let mut s = scenario.clone();
+        s.seed = seeds[i];
+        let mut run = Run::new(s).expect("the scenario was validated");
+        run.run_to_end();
+        let outcome = run.outcome();
+        Ok(Row {
+            scenario: outcome.scenario,
+            seed: outcome.seed,
+            completed: outcome.completed,
+            steps: outcome.steps,
+            hash: outcome.hash,
+            metrics: outcome.metrics,
+            params: params.clone(),
+            scenario_hash: scenario_hash.clone(),
+            version: PROGRAM_VERSION.into(),
+            trace: None,
+        })
+    })
 }
 
-fn sweep(rest: &[String]) -> Result<(), Failure> {
-    let (target, opts) = one_positional(rest, "sweep", &["--format", "--jobs"])?;
-    let csv = format(&opts)?;
-    let path = std::path::Path::new(&target);
+fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
+    let target = &args.experiment;
+    let path = Path::new(target);
     let experiment = if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
         Experiment::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")))?
     } else {
-        Experiment::named_or_json(&target)?
+        Experiment::named_or_json(target)?
     };
     let jobs = experiment.jobs();
-    let total = jobs.len();
-    let progress = std::io::stderr().is_terminal();
-    let mut rows: Vec<Row> = Vec::with_capacity(if csv { total } else { 0 });
-    let mut out = std::io::stdout().lock();
-    let mut done = 0usize;
-    pool::run_ordered(
-        total,
-        threads(&opts)?,
-        |i| experiment.run_job(&jobs[i]),
-        |_, row| {
-            let row = row.map_err(|e| std::io::Error::other(e.to_string()))?;
-            done += 1;
-            if progress {
-                let width = 30;
-                let filled = done * width / total.max(1);
-                eprint!(
-                    "\r{} [{}{}] {done}/{total}",
-                    experiment.name,
-                    "#".repeat(filled),
-                    ".".repeat(width - filled)
-                );
-                if done == total {
-                    eprintln!();
-                }
-            }
-            if csv {
-                rows.push(row);
-                Ok(())
-            } else {
-                writeln!(
-                    out,
-                    "{}",
-                    serde_json::to_string(&row).expect("rows serialise")
-                )
-            }
-        },
-    )?;
-    if csv {
-        write!(out, "{}", experiment::to_csv(&rows))?;
-    }
-    Ok(())
-}
-
-fn query(rest: &[String]) -> Result<(), Failure> {
-    let (positional, _) = parse_options(rest, &[])?;
-    let (model, name, args) = match positional.as_slice() {
-        [m, n] => (m, n, "{}".to_string()),
-        [m, n, a] => {
-            let path = std::path::Path::new(a);
-            let text = if path.is_file() {
-                std::fs::read_to_string(path).map_err(|e| format!("{a}: {e}"))?
-            } else {
-                a.clone()
-            };
-            (m, n, text)
-        }
-        [_, _, _, extra, ..] => {
-            return Err(Failure::Usage(format!("unexpected argument '{extra}'")))
-        }
-        _ => {
-            return Err(Failure::Usage(
-                "query needs a model and a query name".into(),
-            ))
-        }
+    let output = Output {
+        command: shard::Command::Sweep,
+        source: experiment.name.clone(),
+        format: args.format,
+        shard: args.shard,
+        threads: args.jobs.threads(),
+        progress: true,
     };
-    let args: serde_json::Value =
-        serde_json::from_str(&args).map_err(|e| Failure::Usage(format!("ARGS: {e}")))?;
-    let answer = kumiki_core::models::query(model, name, &args)?;
-    println!("{answer}");
-    Ok(())
+    output.emit(jobs.len(), out, |i| {
+        experiment.run_job(&jobs[i]).map_err(|e| e.to_string())
+    })
 }
 
-fn bench(rest: &[String]) -> Result<(), Failure> {
-    let (files, opts) = parse_options(rest, &["--jobs"])?;
-    if files.is_empty() {
-        return Err(Failure::Usage(
-            "bench needs workload files (tests/bench/*.json)".into(),
-        ));
+/// How the rows of `run` and `sweep` are computed and written.
+struct Output {
+    command: shard::Command,
+    source: String,
+    format: Format,
+    shard: Option<Shard>,
+    threads: usize,
+    /// Whether a progress bar is worth showing (when stderr is a terminal).
+    progress: bool,
+}
+
+impl Output {
+    /// Runs jobs `0..total` (or this shard's share) on the thread pool and writes their rows in
+    /// job order: JSON lines as they come, CSV at the end (its columns depend on every row).
+    fn emit(
+        &self,
+        total: usize,
+        out: &mut impl Write,
+        work: impl Fn(usize) -> Result<Row, String> + Sync,
+    ) -> Result<(), Failure> {
+        if self.shard.is_some() && self.format == Format::Csv {
+            return Err(Failure::Run(
+                "a shard is written as JSON lines; give --format csv to kumiki merge instead"
+                    .into(),
+            ));
+        }
+        let indices: Vec<usize> = match self.shard {
+            Some(s) => s.jobs(total),
+            None => (0..total).collect(),
+        };
+        let bar = match self.progress {
+            true => progress_bar(&self.source, indices.len()),
+            false => ProgressBar::hidden(),
+        };
+        let mut rows: Vec<Row> = Vec::new();
+        pool::run_ordered(
+            indices.len(),
+            self.threads,
+            |k| work(indices[k]),
+            |k, row| -> Result<(), Failure> {
+                let row = row?;
+                bar.inc(1);
+                match (self.shard, self.format) {
+                    (Some(_), _) => {
+                        let tag = Tag {
+                            command: self.command,
+                            source: self.source.clone(),
+                            job: indices[k],
+                            jobs: total,
+                        };
+                        writeln!(out, "{}", shard::shard_line(tag, row))?;
+                    }
+                    (None, Format::Json) => {
+                        writeln!(out, "{}", shard::json_line(self.command, &row))?
+                    }
+                    (None, Format::Csv) => rows.push(row),
+                }
+                Ok(())
+            },
+        )?;
+        bar.finish_and_clear();
+        if self.format == Format::Csv {
+            write!(out, "{}", experiment::to_csv(&rows))?;
+        }
+        Ok(())
     }
-    let workloads = files
-        .iter()
-        .map(|f| bench::load(std::path::Path::new(f)))
-        .collect::<Result<Vec<_>, _>>()?;
-    let threads = threads(&opts)?;
-    let mut out = std::io::stdout().lock();
-    for w in &workloads {
-        writeln!(out, "{}", bench::measure(w, threads))?;
+}
+
+/// A progress bar over `total` runs on stderr, or a hidden one when stderr is not a terminal (a
+/// log file or a pipe gets no bar).
+pub fn progress_bar(prefix: &str, total: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
     }
-    Ok(())
+    ProgressBar::new(total as u64)
+        .with_prefix(prefix.to_string())
+        .with_style(
+            ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} runs, {eta} left")
+                .expect("the template is valid")
+                .progress_chars("#>."),
+        )
 }

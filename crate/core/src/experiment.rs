@@ -388,7 +388,7 @@ pub fn to_csv(rows: &[Row]) -> String {
     for r in rows {
         out.push_str(&format!(
             "{},{},{},{},{},{},{}",
-            csv_field(&r.scenario),
+            csv_text(&r.scenario),
             r.seed,
             r.completed,
             r.steps,
@@ -412,8 +412,18 @@ pub fn to_csv(rows: &[Row]) -> String {
 fn csv_value(v: Option<&Value>) -> String {
     match v {
         None | Some(Value::Null) => String::new(),
-        Some(Value::String(s)) => csv_field(s),
+        Some(Value::String(s)) => csv_text(s),
         Some(other) => csv_field(&other.to_string()),
+    }
+}
+
+/// Text from a scenario (a name, a parameter's text value) as a CSV cell. A cell that starts
+/// with `=`, `+`, `-`, `@`, a tab or a carriage return is read as a formula by spreadsheets, so
+/// such text gets a leading `'` (OWASP's advice); numbers never pass through here.
+fn csv_text(s: &str) -> String {
+    match s.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        true => csv_field(&format!("'{s}")),
+        false => csv_field(s),
     }
 }
 
@@ -422,5 +432,49 @@ fn csv_field(s: &str) -> String {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {
         s.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(scenario: &str, param: Value, metric: Value) -> Row {
+        Row {
+            scenario: scenario.into(),
+            seed: 1,
+            completed: true,
+            steps: 5,
+            hash: "00".into(),
+            metrics: [("m".to_string(), metric)].into_iter().collect(),
+            params: [("p".to_string(), param)].into_iter().collect(),
+            scenario_hash: "11".into(),
+            version: "kumiki 0".into(),
+            trace: None,
+        }
+    }
+
+    #[test]
+    fn csv_text_that_a_spreadsheet_would_run_is_neutralised_but_numbers_are_not() {
+        let csv = to_csv(&[
+            row(
+                "=HYPERLINK(\"x\")",
+                Value::from("@SUM(A1)"),
+                Value::from(-1.5),
+            ),
+            row("+1", Value::from("-2"), Value::from(3)),
+            row("plain, name", Value::from("ok"), Value::from(-7)),
+        ]);
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(
+            lines[0],
+            "scenario,seed,completed,steps,hash,scenario_hash,version,params.p,metrics.m"
+        );
+        assert_eq!(
+            lines[1],
+            "\"'=HYPERLINK(\"\"x\"\")\",1,true,5,00,11,kumiki 0,'@SUM(A1),-1.5"
+        );
+        assert_eq!(lines[2], "'+1,1,true,5,00,11,kumiki 0,'-2,3");
+        assert_eq!(lines[3], "\"plain, name\",1,true,5,00,11,kumiki 0,ok,-7");
     }
 }

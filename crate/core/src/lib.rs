@@ -5,10 +5,12 @@
 //! - [`scenario`]: the versioned JSON document that determines a run, and [`shape`] for the text
 //!   shapes inside it;
 //! - [`link`]: the share-link codec;
-//! - [`run`] and [`experiment`]: driving one run, and grids of runs;
+//! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`reproduce`]: the papers'
+//!   claims beside the figures of those runs;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
 
 pub mod error;
+pub mod exercise;
 pub mod experiment;
 pub mod hash;
 pub mod lattice;
@@ -16,10 +18,12 @@ pub mod link;
 pub mod math;
 pub mod models;
 pub mod presets;
+pub mod reproduce;
 pub mod rng;
 pub mod run;
 pub mod scenario;
 pub mod shape;
+pub mod timeline;
 
 pub use error::{Error, Result};
 pub use experiment::{Experiment, Row};

@@ -1,31 +1,100 @@
 //! Share links: the URL fragment carries the whole scenario as `k1.` followed by the raw-deflated
 //! canonical JSON in unpadded base64url. The CLI reads the same links, so a run copied from the
 //! page can be repeated in a terminal.
+//!
+//! Beside the scenario, the JSON carries `model_version`: the behaviour version of its model when
+//! the link was made (see [`crate::models::ModelEntry::model_version`]). A link keeps opening
+//! after the model changes; [`open`] says which version made it, so the page can warn that the
+//! run may differ. Links made before versions were recorded carry none and count as version 1.
 
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use base64::Engine as _;
+use serde_json::Value;
 
 use crate::error::{Error, Result};
-use crate::scenario::Scenario;
+use crate::models;
+use crate::scenario::{canonical, Scenario};
 
 /// Version prefix of the link payload.
 pub const PREFIX: &str = "k1.";
 /// The largest scenario a link may expand to, against decompression bombs.
 pub const MAX_SCENARIO_BYTES: usize = 4 << 20;
 
+/// The key that carries the model's behaviour version in a link's JSON.
+pub const MODEL_VERSION_KEY: &str = "model_version";
+
+/// A scenario read from a link, with the behaviour version of its model then and now.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Opened {
+    pub scenario: Scenario,
+    /// The model's behaviour version when the link was made.
+    pub made_with: u32,
+    /// The model's behaviour version in this program.
+    pub current: u32,
+}
+
+impl Opened {
+    /// True when the link was made with another behaviour of the model than this program's, so
+    /// its run may differ from the one its maker saw.
+    pub fn version_differs(&self) -> bool {
+        self.made_with != self.current
+    }
+}
+
 /// The fragment payload for a scenario (without the leading `#`).
 pub fn encode(scenario: &Scenario) -> String {
-    let json = scenario.to_json();
+    let mut doc = scenario.to_value();
+    let version = models::entry(&scenario.model).map_or(1, |e| e.model_version);
+    if let Value::Object(map) = &mut doc {
+        map.insert(MODEL_VERSION_KEY.into(), version.into());
+    }
+    let json = canonical(doc).to_string();
     let packed = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 9);
     format!("{PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
 }
 
 /// Reads a link: a whole URL, a `#fragment`, or the bare payload.
 pub fn decode(link: &str) -> Result<Scenario> {
-    Scenario::from_json(&decode_json(link)?)
+    open(link).map(|o| o.scenario)
 }
 
-/// The scenario JSON inside a link, not yet validated.
+/// Reads a link and says which behaviour version of its model made it.
+pub fn open(link: &str) -> Result<Opened> {
+    let mut doc: Value = serde_json::from_str(&decode_json(link)?).map_err(|e| Error::json(&e))?;
+    let made_with = match doc
+        .as_object_mut()
+        .and_then(|m| m.remove(MODEL_VERSION_KEY))
+    {
+        None => 1,
+        Some(v) => v
+            .as_u64()
+            .and_then(|n| u32::try_from(n).ok())
+            .filter(|&n| n >= 1)
+            .ok_or_else(|| {
+                Error::field(
+                    MODEL_VERSION_KEY,
+                    format!("expected a version from 1, found {v}"),
+                )
+            })?,
+    };
+    let scenario = Scenario::from_value(doc)?;
+    let current = models::entry(&scenario.model)?.model_version;
+    Ok(Opened {
+        scenario,
+        made_with,
+        current,
+    })
+}
+
+/// A byte as a person can read it: a visible character in quotes, anything else by its code.
+fn shown_byte(byte: u8) -> String {
+    match byte {
+        b'!'..=b'~' => format!("'{}'", byte as char),
+        _ => format!("the byte 0x{byte:02x}"),
+    }
+}
+
+/// The JSON inside a link (the scenario and its model version), not yet validated.
 pub fn decode_json(link: &str) -> Result<String> {
     let link = link.trim();
     let fragment = match link.rfind('#') {
@@ -46,7 +115,14 @@ pub fn decode_json(link: &str) -> Result<String> {
     })?;
     let packed = URL_SAFE_NO_PAD
         .decode(payload.trim_end_matches('='))
-        .map_err(|e| Error::Link(format!("the link is damaged or cut short ({e})")))?;
+        .map_err(|e| match e {
+            base64::DecodeError::InvalidByte(at, byte) => Error::Link(format!(
+                "the link is damaged: it holds {}, which no Kumiki link has (character {} after '{PREFIX}')",
+                shown_byte(byte),
+                at + 1
+            )),
+            _ => Error::Link("the link is damaged or cut short".into()),
+        })?;
     let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_SCENARIO_BYTES)
         .map_err(|e| match e.status {
             miniz_oxide::inflate::TINFLStatus::HasMoreOutput => Error::Link(format!(

@@ -104,6 +104,24 @@ impl Run {
         Ok(())
     }
 
+    /// A copy of the run as it stands, to continue independently (a keyframe).
+    pub fn snapshot(&self) -> Run {
+        Run {
+            scenario: self.scenario.clone(),
+            model: self.model.snapshot(),
+            next: self.next,
+        }
+    }
+
+    /// The same run state under `scenario`, whose disturbances may differ from this run's after
+    /// the present step: those before it are taken as applied, the rest are still to come. A
+    /// keyframe taken before a click is replayed this way with the click.
+    pub fn reschedule(&mut self, scenario: &Scenario) {
+        let now = self.model.steps();
+        self.next = scenario.disturbances.iter().filter(|d| d.at < now).count();
+        self.scenario = scenario.clone();
+    }
+
     pub fn state_hash(&self) -> u64 {
         let mut h = StateHasher::new();
         h.u64(self.model.steps());

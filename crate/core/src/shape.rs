@@ -17,6 +17,33 @@
 
 use crate::error::{Error, Result};
 
+/// The most cells a shape's text may describe (width × height, × layers on the cubic lattice).
+/// Rows are padded to the widest, so a short text can describe a huge rectangle: the size is
+/// computed from the text in 64 bits and checked against this before anything is allocated.
+/// Each model then applies its own, smaller limits to the shapes it accepts.
+pub const MAX_SHAPE_CELLS: u64 = 1 << 24;
+
+/// The cell count of a `dims` box, checked against [`MAX_SHAPE_CELLS`] without overflowing.
+fn checked_cells(dims: &[u64]) -> Result<usize> {
+    let total = dims
+        .iter()
+        .try_fold(1u64, |acc, &d| acc.checked_mul(d))
+        .filter(|&n| n <= MAX_SHAPE_CELLS);
+    match total {
+        Some(n) => Ok(n as usize),
+        None => Err(Error::field(
+            "",
+            format!(
+                "the shape spans {} cells, more than the {MAX_SHAPE_CELLS} a shape may have",
+                dims.iter()
+                    .map(u64::to_string)
+                    .collect::<Vec<_>>()
+                    .join(" × ")
+            ),
+        )),
+    }
+}
+
 /// A planar shape: `cells[y * w + x]` is true where the shape has a cell.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Grid2 {
@@ -89,7 +116,7 @@ fn build(rows: Vec<Vec<bool>>) -> Result<Grid2> {
     }
     let w = rows.iter().map(Vec::len).max().unwrap_or(0);
     let h = rows.len();
-    let mut cells = Vec::with_capacity(w * h);
+    let mut cells = Vec::with_capacity(checked_cells(&[w as u64, h as u64])?);
     for row in rows {
         let n = row.len();
         cells.extend(row);
@@ -153,8 +180,9 @@ pub fn parse_cubic(text: &str) -> Result<Grid3> {
     }
     let w = layers.iter().map(|l| l.w).max().unwrap_or(0);
     let h = layers.iter().map(|l| l.h).max().unwrap_or(0);
+    let size = checked_cells(&[w as u64, h as u64, layers.len() as u64])?;
     let d = layers.len() as u32;
-    let mut cells = vec![false; (w * h * d) as usize];
+    let mut cells = vec![false; size];
     for (z, layer) in layers.iter().enumerate() {
         for y in 0..layer.h {
             for x in 0..layer.w {
@@ -251,6 +279,25 @@ mod tests {
         assert_eq!((g.w, g.h, g.count()), (4, 3, 7));
         assert_eq!(hex_text(&g), text);
         assert!(parse_hex("## .").is_err());
+    }
+
+    #[test]
+    fn huge_shapes_are_refused_before_they_are_allocated() {
+        // One long row and many short ones: 4 MB of text that would pad to 10^12 cells.
+        let text = format!("{}\n{}", "#".repeat(1 << 20), "#\n".repeat(1 << 20));
+        let err = parse_square(&text).unwrap_err().to_string();
+        assert!(
+            err.contains("1048576 × 1048577") && err.contains("16777216"),
+            "{err}"
+        );
+        let hex = format!("{}\n{}", "# ".repeat(5000), "#\n".repeat(5000));
+        assert!(parse_hex(&hex).is_err());
+        // Layers that each fit but together do not.
+        let layer = format!("{}\n{}", "#".repeat(4096), "#\n".repeat(4095));
+        let cubic = [layer.as_str(), "#\n"].join("---\n");
+        let err = parse_cubic(&cubic).unwrap_err().to_string();
+        assert!(err.contains("4096 × 4096 × 2"), "{err}");
+        assert!(parse_square(&"#".repeat(4096)).is_ok());
     }
 
     #[test]

@@ -6,6 +6,8 @@ use std::sync::Mutex;
 
 use js_sys::{Float32Array, Uint32Array, Uint8Array};
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
+use kumiki_core::scenario::Disturbance;
+use kumiki_core::timeline::Timeline;
 use kumiki_core::{hash, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
@@ -111,6 +113,22 @@ pub fn decode_link(link_text: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+/// The behaviour version of its model that made a link, and this program's:
+/// `{made_with, current}`. The page warns when they differ.
+#[wasm_bindgen]
+pub fn link_model_versions(link_text: &str) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Versions {
+        made_with: u32,
+        current: u32,
+    }
+    let opened = link::open(link_text).map_err(js_err)?;
+    to_js(&Versions {
+        made_with: opened.made_with,
+        current: opened.current,
+    })
+}
+
 /// Applies one dotted-path override to scenario JSON and returns the validated result.
 #[wasm_bindgen]
 pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
@@ -201,10 +219,20 @@ pub fn shape_format(
     })
 }
 
-/// One running simulation.
+/// Memory the keyframes of one run may take, in bytes (estimated from the cell count).
+const KEYFRAME_BYTES: usize = 96 << 20;
+/// Steps between the first keyframes; the interval doubles as the run grows.
+const KEYFRAME_EVERY: u64 = 16;
+
+/// One running simulation, with the keyframes that let it go back.
 #[wasm_bindgen]
 pub struct Sim {
     run: Run,
+    timeline: Timeline,
+    /// The furthest step reached since the last fork: the end of the timeline.
+    furthest: u64,
+    /// The disturbances the scenario came with; a fork keeps them and drops later clicks.
+    authored: Vec<Disturbance>,
 }
 
 #[wasm_bindgen]
@@ -212,14 +240,47 @@ impl Sim {
     #[wasm_bindgen(constructor)]
     pub fn new(scenario_json: &str) -> Result<Sim, JsError> {
         let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
+        let authored = scenario.disturbances.clone();
+        let run = Run::new(scenario).map_err(js_err)?;
+        let [w, h, d] = run.model().layout().dims;
+        // About 16 bytes of state a cell, and at least a few keyframes however large the lattice.
+        let per_frame = 16 * (w as usize) * (h as usize) * (d.max(1) as usize) + 4096;
+        let capacity = (KEYFRAME_BYTES / per_frame).clamp(4, 256);
         Ok(Sim {
-            run: Run::new(scenario).map_err(js_err)?,
+            timeline: Timeline::new(&run, KEYFRAME_EVERY, capacity),
+            run,
+            furthest: 0,
+            authored,
         })
     }
 
-    /// Takes up to `n` steps; returns how many were taken.
+    /// Takes up to `n` steps, keeping keyframes; returns how many were taken.
     pub fn advance(&mut self, n: u32) -> u32 {
-        self.run.advance(u64::from(n)) as u32
+        let mut taken = 0;
+        while taken < n && self.run.step() {
+            self.timeline.record(&self.run);
+            taken += 1;
+        }
+        self.furthest = self.furthest.max(self.run.steps());
+        taken
+    }
+
+    /// Goes to `step` (at most the furthest step reached) by replaying from the keyframe before
+    /// it: the state is bit-identical to the one passed through.
+    pub fn seek(&mut self, step: f64) {
+        let step = (step.max(0.0) as u64).min(self.furthest);
+        self.run = self.timeline.seek(step, self.run.scenario());
+    }
+
+    /// The furthest step reached, where the timeline ends.
+    pub fn furthest(&self) -> f64 {
+        self.furthest as f64
+    }
+
+    /// Keyframes kept and the steps between them, for the page's memory note.
+    pub fn keyframes(&self) -> Vec<f64> {
+        let (n, every) = self.timeline.keyframes();
+        vec![n as f64, every as f64]
     }
 
     pub fn steps(&self) -> f64 {
@@ -291,7 +352,26 @@ impl Sim {
         let Value::Object(action) = action else {
             return Err(JsError::new("an action is a JSON object"));
         };
-        self.run.apply_now(action).map_err(js_err)
+        let now = self.run.steps();
+        if now >= self.furthest {
+            self.run.apply_now(action).map_err(js_err)?;
+        } else {
+            // A click in the past forks the run: what was clicked later is discarded, the
+            // scenario's own disturbances stay. Tried on a copy, so a refused click changes
+            // nothing.
+            let mut scenario = self.run.scenario().clone();
+            let authored = &self.authored;
+            scenario
+                .disturbances
+                .retain(|d| d.at <= now || authored.contains(d));
+            let mut fork = self.run.snapshot();
+            fork.reschedule(&scenario);
+            fork.apply_now(action).map_err(js_err)?;
+            self.run = fork;
+        }
+        self.timeline.truncate(now);
+        self.furthest = now;
+        Ok(())
     }
 
     /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);

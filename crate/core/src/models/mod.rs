@@ -113,8 +113,20 @@ pub struct Event {
     pub kind: u8,
 }
 
+/// A copy of a model in the middle of its run, for keyframes ([`crate::timeline`]). Every
+/// model gets it by deriving `Clone`.
+pub trait Snapshot {
+    fn snapshot(&self) -> Box<dyn Model>;
+}
+
+impl<T: Model + Clone + 'static> Snapshot for T {
+    fn snapshot(&self) -> Box<dyn Model> {
+        Box::new(self.clone())
+    }
+}
+
 /// A simulation model. Implementations are deterministic functions of their scenario and seed.
-pub trait Model {
+pub trait Model: Snapshot {
     fn layout(&self) -> Layout;
     /// Advances one step.
     fn step(&mut self);
@@ -161,6 +173,11 @@ pub struct ModelEntry {
     pub name: &'static str,
     pub title: &'static str,
     pub default_max_steps: u64,
+    /// The version of the model's behaviour, written into every share link. Raise it by one when
+    /// a change makes the same scenario and seed run differently (when the golden hashes of its
+    /// presets change): links made before then still open, and the page says they were made with
+    /// an earlier Kumiki. Links that carry no version were made with version 1.
+    pub model_version: u32,
     /// Builds the model from a scenario whose envelope is already checked.
     pub build: fn(&Scenario) -> Result<Box<dyn Model>>,
     /// The model's keys with every default written out (see [`normalized`]).

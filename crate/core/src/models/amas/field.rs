@@ -10,6 +10,7 @@ use super::state::{BROKEN, FRONT, MODULE, SOURCE};
 /// Distance not (yet) known, or no module here.
 pub const FAR: u16 = u16::MAX;
 
+#[derive(Clone)]
 pub enum Field {
     /// Equation 2: distances to the supply area and to the growth front.
     Discrete {

@@ -32,6 +32,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
+    model_version: 1,
     build: |s| Ok(Box::new(Amas::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
@@ -86,6 +87,7 @@ const VISITING: u8 = 1;
 const MOVES: u8 = 2;
 const STAYS: u8 = 3;
 
+#[derive(Clone)]
 pub struct Amas {
     w: usize,
     h: usize,

@@ -33,6 +33,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
+    model_version: 1,
     build: |s| Ok(Box::new(Cubes::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
@@ -168,6 +169,7 @@ fn default_stable_steps() -> u32 {
 
 /// A target: its type-lists (unit type and six padded neighbour slots each) and a shape to draw
 /// as a ghost when the scenario gave one.
+#[derive(Clone)]
 struct Target {
     name: String,
     lists: Vec<[u8; 7]>,
@@ -176,6 +178,7 @@ struct Target {
     hold_lit: bool,
 }
 
+#[derive(Clone)]
 pub struct Cubes {
     st: Structure,
     /// Flags per cell (`HELD_*`), moving with their unit.

@@ -44,7 +44,7 @@ pub struct Move {
 }
 
 /// Reusable buffers for the connectivity searches, and counters of how they went.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct Scratch {
     seen: Vec<u32>,
     gen: u32,

@@ -36,6 +36,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
+    model_version: 1,
     build: |s| Ok(Box::new(Fracta::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
@@ -174,6 +175,7 @@ struct Plan {
     turn: Turn,
 }
 
+#[derive(Clone)]
 pub struct Fracta {
     lattice: Hex,
     /// Neighbour cell of each cell in each direction, or `NO_UNIT` outside the lattice.
