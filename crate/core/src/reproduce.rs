@@ -24,7 +24,7 @@ pub struct Paper {
 }
 
 /// Every model's paper, in report order.
-pub const PAPERS: &[Paper] = &[];
+pub const PAPERS: &[Paper] = &[crate::models::chobie::paper::PAPER];
 
 /// The paper of one model.
 pub fn paper(model: &str) -> Option<&'static Paper> {

@@ -9,7 +9,8 @@
 //! - [`election`]: temporary leaders and their commands;
 //! - [`frame`]: the plane-frame stress model;
 //! - [`cycle`]: one transformation, phase by phase;
-//! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls.
+//! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
+//! - [`paper`]: the paper's claims beside the experiments' figures.
 
 use crate::models::{self, Event, ModelEntry};
 
@@ -19,6 +20,7 @@ pub mod election;
 pub mod frame;
 pub mod init;
 pub mod motion;
+pub mod paper;
 pub mod queries;
 pub mod signals;
 pub mod spec;
@@ -35,6 +37,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "chobie",
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
+    model_version: 1,
     build: |s| Ok(Box::new(Chobie::new(s)?)),
     normalize: models::normalized::<spec::Spec>,
 };
@@ -83,6 +86,7 @@ pub struct Last {
     pub moved: bool,
 }
 
+#[derive(Clone)]
 pub struct Chobie {
     body: Body,
     p: Params,
