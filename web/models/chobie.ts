@@ -36,7 +36,7 @@ function merge(robots: string, terrain: string): { world: string } | { problem: 
     }
     rows.push(row);
   }
-  return { world: rows.join('\n').replace(/\n+$/, '') + '\n' };
+  return { world: `${rows.join('\n').replace(/\n+$/, '')}\n` };
 }
 
 export const chobieEditor: ModelEditor = {
