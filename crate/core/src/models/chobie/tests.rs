@@ -385,3 +385,59 @@ fn thickening_the_root_lowers_the_peak_stress() {
     // The peak moves to the end of the thickened part, one cell nearer the load.
     assert!(thick < 0.9 * bare, "bare {bare}, thickened {thick}");
 }
+
+#[test]
+fn loads_are_checked_and_stay_with_their_robot() {
+    let mut m = model(
+        "....\n###.\n=...\n",
+        json!({"task": "bridge", "construction": false}),
+    );
+    let load = |cells: serde_json::Value, force: f64| {
+        json!({"kind": "load", "cells": cells, "force": force})
+            .as_object()
+            .unwrap()
+            .clone()
+    };
+    assert!(m
+        .check_action(&load(json!([6]), -1.0))
+        .unwrap_err()
+        .to_string()
+        .starts_with("force:"));
+    assert_eq!(
+        m.apply(&load(json!([0]), 10.0)).unwrap_err().to_string(),
+        "cells[0]: cell 0 holds no robot"
+    );
+    let before = m.peak();
+    m.apply(&load(json!([6]), 50.0)).unwrap();
+    assert!(m.peak() > before);
+    m.apply(&load(json!([6]), 0.0)).unwrap();
+    assert!((m.peak() - before).abs() < 1e-9 * before);
+}
+
+#[test]
+fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_root() {
+    let preset = crate::presets::scenario("chobie-bridge").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    let mut modes = Vec::new();
+    for _ in 0..30 {
+        step_checked(&mut m);
+        modes.push(m.mode);
+    }
+    let first = modes
+        .iter()
+        .position(|&x| x == Mode::Adaptation)
+        .expect("an overload");
+    let back = modes[first..]
+        .iter()
+        .position(|&x| x == Mode::Construction)
+        .expect("back to construction");
+    // Between the two, the reserves moved right (leader 2) and the overload went away.
+    assert!(back > 1);
+    assert!(m.totals.adaptations >= 1);
+    let mut without = Chobie::new(&preset).unwrap();
+    without.p.adaptation = false;
+    for _ in 0..30 {
+        step_checked(&mut without);
+    }
+    assert!(m.worst < without.worst);
+}
