@@ -10,6 +10,7 @@ import { MetricChart } from './ui/chart';
 import { byId, clear, displayText, download, el, formatNumber, typingIn } from './ui/dom';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
+import { renderMarkdown } from './ui/markdown';
 import { renderParams } from './ui/params';
 import { Probe, reachOf, type Facts } from './ui/probe';
 import * as core from './wasm';
@@ -123,6 +124,12 @@ const sim = new SimClient({
     if (context === 'apply') report(`That did not work: ${message}`);
     else if (context === 'load') report(`This scenario cannot run: ${message}`);
     else report(message);
+  },
+  goal(met, because, steps) {
+    const out = byId('exercise-result');
+    out.textContent = met ? `Goal met at step ${steps.toLocaleString('en-US')}: ${because}.` : `Not met yet (step ${steps.toLocaleString('en-US')}): ${because}.`;
+    out.classList.toggle('met', met);
+    out.classList.toggle('unmet', !met);
   },
   stalled(ms) {
     if (ms === 0) {
@@ -552,6 +559,62 @@ function applyChange(key: string, valueJson: string, onError?: (problem: string)
   }
 }
 
+interface Exercise {
+  title: string;
+  instructions: string;
+  locked: Record<string, unknown>;
+  goal: string;
+  hints: string[];
+}
+
+/** Hints revealed so far, and the exercise they belong to. */
+let hintsShown = 0;
+let exerciseShown = '';
+function renderExercise(exercise: Exercise | undefined) {
+  const panel = byId('exercise');
+  panel.hidden = !exercise;
+  if (!exercise) return;
+  const key = JSON.stringify(exercise);
+  if (key !== exerciseShown) {
+    exerciseShown = key;
+    hintsShown = 0;
+    byId('exercise-result').textContent = '';
+  }
+  byId('exercise-title').textContent = displayText(exercise.title, 100);
+  const instructions = byId('exercise-instructions');
+  clear(instructions);
+  instructions.append(...renderMarkdown(exercise.instructions));
+  byId('exercise-goal').textContent = exercise.goal;
+  const hints = byId('exercise-hints');
+  clear(hints);
+  for (const h of exercise.hints.slice(0, hintsShown)) hints.append(el('li', {}, ...renderMarkdown(h)));
+  const more = byId<HTMLButtonElement>('exercise-hint');
+  const left = exercise.hints.length - hintsShown;
+  more.hidden = exercise.hints.length === 0;
+  more.disabled = left === 0;
+  more.textContent = left ? `Show a hint (${left} left)` : 'No more hints';
+}
+byId('exercise-hint').addEventListener('click', () => {
+  hintsShown++;
+  renderExercise((JSON.parse(scenario) as { exercise?: Exercise }).exercise);
+});
+byId('exercise-check').addEventListener('click', () => sim.check());
+byId('exercise-handin').addEventListener('click', async () => {
+  const student = byId<HTMLInputElement>('exercise-student').value.trim();
+  const out = byId('exercise-handin-out');
+  try {
+    const handin = student ? core.override(scenario, 'name', JSON.stringify(student)) : scenario;
+    const url = `${location.origin}${location.pathname}#${core.encodeLink(handin)}`;
+    out.textContent = url;
+    await navigator.clipboard?.writeText(url).then(
+      () => (out.textContent = `Copied. Send this link to your teacher: ${url}`),
+      () => undefined,
+    );
+  } catch (e) {
+    out.textContent = core.message(e);
+  }
+});
+
 function renderScenarioPanel() {
   const doc = JSON.parse(scenario) as Record<string, unknown>;
   const name = displayText(String(doc.name ?? ''), 100);
@@ -561,7 +624,9 @@ function renderScenarioPanel() {
   seedInput.value = String(doc.seed ?? 0);
   const model = String(doc.model);
   const spec = modelEditors[model];
-  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value), spec?.owns);
+  const exercise = doc.exercise as Exercise | undefined;
+  renderExercise(exercise);
+  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value), spec?.owns, new Set(Object.keys(exercise?.locked ?? {})));
   jsonDirty = false;
   syncJsonEditor();
   jsonError.textContent = '';

@@ -1,8 +1,12 @@
-// Rewind and keys: the timeline goes back to any step reached with the identical state, the view's
-// Left arrow steps back, and the page's keys leave focused controls alone.
+// The classroom in the page: rewind (the timeline goes back to any step reached with the identical
+// state, the view's Left arrow steps back), keys that leave focused controls alone, and a student
+// doing an exercise: instructions, locked fields, the goal judged, a hand-in the CLI grades.
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { describe, test } from 'node:test';
-import { openPage, session, stepCount } from './harness.mjs';
+import { loadWasm, openPage, session, stepCount } from './harness.mjs';
+
+const wasm = loadWasm();
 
 const s = session();
 
@@ -86,6 +90,71 @@ describe('keys', () => {
     await page.locator('#view').focus();
     await page.keyboard.press('ArrowRight');
     await atStep(page, 1);
+    await context.close();
+  });
+});
+
+describe('an exercise', () => {
+  const exerciseLink = (goal) => {
+    const doc = JSON.parse(wasm.preset_json('amas-L'));
+    doc.exercise = {
+      title: 'Build the L',
+      instructions: 'Build the L with **5 robots**.\n\n- press Play\n- then Check',
+      locked: { robots: 5 },
+      goal,
+      hints: ['Section 5 of the paper.', 'Try the relay rule.'],
+    };
+    return wasm.encode_link(JSON.stringify(doc));
+  };
+
+  test('shows its instructions, locks its fields, judges the run, and hands in a link the CLI grades', async () => {
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${exerciseLink('completed and steps <= 100000')}`);
+    await page.waitForSelector('#exercise:not([hidden])');
+    assert.equal(await page.textContent('#exercise-title'), 'Build the L');
+    assert.equal(await page.$eval('#exercise-instructions', (d) => d.innerHTML), '<p>Build the L with <strong>5 robots</strong>.</p><ul><li>press Play</li><li>then Check</li></ul>');
+    assert.equal(await page.textContent('#exercise-goal'), 'completed and steps <= 100000');
+    await page.click('#exercise-hint');
+    assert.equal(await page.locator('#exercise-hints li').count(), 1);
+    assert.equal(await page.textContent('#exercise-hint'), 'Show a hint (1 left)');
+
+    await page.click('#exercise-check');
+    await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Not met yet (step 0)'));
+    assert.match(await page.textContent('#exercise-result'), /the run did not complete/);
+
+    await page.click('#tab-scenario');
+    assert.equal(await page.isDisabled('#param-robots'), true, 'a locked field is read-only');
+    await page.click('#tab-run');
+
+    await page.$eval('#speed', (el) => {
+      el.value = '8';
+      el.dispatchEvent(new Event('input'));
+    });
+    await page.click('#play');
+    await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Goal met'), null, { timeout: 60000 });
+
+    await page.fill('#exercise-student', 'Ada');
+    await page.click('#exercise-handin');
+    await page.waitForFunction(() => document.querySelector('#exercise-handin-out').textContent.includes('#k1.'));
+    const link = /(http\S+#k1\.\S+)/.exec(await page.textContent('#exercise-handin-out'))[1];
+    const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'check', link], { encoding: 'utf8' });
+    const row = JSON.parse(out.trim());
+    assert.equal(row.name, 'Ada');
+    assert.equal(row.met, true, row.because);
+    assert.equal(row.steps, await stepCount(page));
+    assert.equal(row.hash, await page.textContent('#state-hash'));
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('a run that misses the goal is told why', async () => {
+    const { page, context } = await openPage(s.browser, `${s.server.url}#${exerciseLink('completed and metrics.collisions < 0')}`);
+    await page.$eval('#speed', (el) => {
+      el.value = '8';
+      el.dispatchEvent(new Event('input'));
+    });
+    await page.click('#play');
+    await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Not met yet'), null, { timeout: 60000 });
+    assert.match(await page.textContent('#exercise-result'), /metrics\.collisions is \d+, but it must be < 0/);
     await context.close();
   });
 });

@@ -108,9 +108,22 @@ export async function stepCount(page) {
   return Number((await page.textContent('#step-count')).replace(/,/g, ''));
 }
 
+/** Resolves once the page has run `count` more animation frames. */
+export async function animationFrames(page, count) {
+  await page.evaluate(
+    (n) =>
+      new Promise((resolve) => {
+        let left = n;
+        const next = () => (--left <= 0 ? resolve() : requestAnimationFrame(next));
+        requestAnimationFrame(next);
+      }),
+    count,
+  );
+}
+
 /** Resolves once the page has drawn two more animation frames: whatever was requested is drawn. */
 export async function settle(page) {
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  await animationFrames(page, 2);
 }
 
 export async function waitForSteps(page, atLeast, timeout = 20000) {

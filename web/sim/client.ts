@@ -10,6 +10,8 @@ export interface SimEvents {
   scenario(scenario: string): void;
   error(message: string, context: 'load' | 'apply' | 'step'): void;
   panic(message: string): void;
+  /** The exercise's goal judged on the run: when it ends, or when asked with `check`. */
+  goal(met: boolean, because: string, steps: number): void;
   /** The worker has not answered for `ms` milliseconds (`ms` is 0 once it answers again). */
   stalled(ms: number): void;
 }
@@ -67,6 +69,9 @@ export class SimClient {
   private receive(msg: FromWorker) {
     switch (msg.type) {
       case 'ready':
+        return;
+      case 'goal':
+        this.on.goal(msg.met, msg.because, msg.steps);
         return;
       case 'pong':
         this.unanswered = null;
@@ -131,6 +136,10 @@ export class SimClient {
   }
   step(count = 1) {
     this.send({ type: 'step', count });
+  }
+  /** Asks for the exercise's verdict on the run as it stands. */
+  check() {
+    this.send({ type: 'check' });
   }
   /** Goes to an earlier (or, up to the furthest reached, later) step of the run. */
   seek(step: number) {

@@ -7,6 +7,7 @@ export type ToWorker =
   | { type: 'pause' }
   | { type: 'step'; count: number }
   | { type: 'seek'; step: number }
+  | { type: 'check' }
   | { type: 'speed'; stepsPerSecond: number }
   | { type: 'overlay'; field: string | null }
   | { type: 'apply'; action: string }
@@ -24,4 +25,5 @@ export type FromWorker =
   | { type: 'inspected'; id: number; cell: number; facts: Record<string, unknown> }
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
   | { type: 'panic'; message: string }
-  | { type: 'pong'; id: number };
+  | { type: 'pong'; id: number }
+  | { type: 'goal'; met: boolean; because: string; steps: number };

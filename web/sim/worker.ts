@@ -31,6 +31,8 @@ let rateWindow: { t: number; steps: number }[] = [];
 let tickScheduled = false;
 /** The scene last sent, as JSON, so frames carry it only when it changed. */
 let lastScene = '';
+/** The run's end was judged by its exercise's goal (once per end reached). */
+let goalJudged = false;
 /** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
 let seekTo: number | null = null;
 
@@ -105,6 +107,16 @@ function sendFrame(force = false) {
   awaitingAck = true;
   dirty = false;
   post({ type: 'frame', frame }, transfer);
+  if (frame.finished && !goalJudged) {
+    goalJudged = true;
+    judge(s);
+  } else if (!frame.finished) goalJudged = false;
+}
+
+/** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
+function judge(s: Sim) {
+  const result = guard('step', () => s.check_goal() as { met: boolean; because: string } | undefined);
+  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps() });
 }
 
 function setPlaying(on: boolean) {
@@ -201,6 +213,9 @@ function handle(msg: ToWorker) {
       schedule();
       return;
     }
+    case 'check':
+      if (sim) judge(sim);
+      return;
     case 'seek':
       if (!sim) return;
       setPlaying(false);

@@ -2,12 +2,13 @@
 // validated by the core; an invalid value stays in its field with the core's message under it.
 import { clear, el } from './dom';
 
-const HIDDEN = new Set(['version', 'model', 'disturbances']);
+const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise']);
 const ORDER = ['name', 'description', 'max_steps'];
 
 export type Apply = (key: string, valueJson: string) => string | null;
 
-export function renderParams(form: HTMLFormElement, scenario: Record<string, unknown>, apply: Apply, skip: string[] = []) {
+/** `locked` fields (an exercise's) are shown read-only, with a note. */
+export function renderParams(form: HTMLFormElement, scenario: Record<string, unknown>, apply: Apply, skip: string[] = [], locked: Set<string> = new Set()) {
   const focused = document.activeElement instanceof HTMLElement && form.contains(document.activeElement) ? document.activeElement.id : '';
   clear(form);
   const keys = Object.keys(scenario).filter((k) => !HIDDEN.has(k) && k !== 'seed' && !skip.includes(k));
@@ -56,6 +57,11 @@ export function renderParams(form: HTMLFormElement, scenario: Record<string, unk
       input.setAttribute('aria-invalid', problem ? 'true' : 'false');
     });
     wrap.append(label, input, error);
+    if (locked.has(key)) {
+      input.disabled = true;
+      wrap.classList.add('locked');
+      wrap.append(el('p', { class: 'locked-note', text: 'Locked by the exercise.' }));
+    }
     form.append(wrap);
   }
   if (focused) document.getElementById(focused)?.focus();

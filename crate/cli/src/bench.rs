@@ -25,9 +25,9 @@ use serde_json::{json, Map, Value};
 ///
 /// A global allocator is chosen when the program is linked, not per command, so every command
 /// has it. It counts only after [`start_counting`], which `kumiki bench` alone calls: the other
-/// commands pay one relaxed load of a flag that never changes under them (a read of a shared
-/// cache line, next to the tens of nanoseconds of the allocation itself), instead of the atomic
-/// add on one contended counter that every thread of a sweep paid before.
+/// commands pay one relaxed load of a flag that never changes under them. Measured on
+/// `kumiki sweep amas-fig23` (CPU seconds over five runs, two threads): the system allocator
+/// alone 1.95-2.00, this one not counting 1.94-2.07, counting 1.94-2.15; no difference shows.
 pub struct Counting;
 
 static COUNTING: AtomicBool = AtomicBool::new(false);

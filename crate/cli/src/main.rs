@@ -1,6 +1,7 @@
 //! `kumiki`: the command-line face of the core. See `kumiki help`.
 
 mod bench;
+mod check;
 mod pool;
 mod reproduce;
 mod shard;
@@ -90,6 +91,23 @@ enum Command {
         /// The repository root the report lives under
         #[arg(long, value_name = "DIR", default_value = ".")]
         root: PathBuf,
+        #[command(flatten)]
+        jobs: Jobs,
+    },
+    /// Grade classroom hand-ins: replay each link and judge it by its exercise's goal
+    Check {
+        /// Hand-in links (or scenario files)
+        #[arg(value_name = "LINK")]
+        links: Vec<String>,
+        /// A file of hand-in links, one a line
+        #[arg(long, value_name = "FILE")]
+        file: Option<PathBuf>,
+        /// The exercise as the teacher made it (a link, file or preset): hand-ins are judged by
+        /// its goal and locks, and every field they changed is listed
+        #[arg(long, value_name = "EXERCISE")]
+        exercise: Option<String>,
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
         #[command(flatten)]
         jobs: Jobs,
     },
@@ -286,6 +304,24 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 (None, false) => reproduce::Mode::Write,
             };
             reproduce::run(model.as_deref(), mode, &root, jobs.threads())?;
+        }
+        Some(Command::Check {
+            links,
+            file,
+            exercise,
+            format,
+            jobs,
+        }) => {
+            let handins = check::handins(links, file.as_deref())?;
+            let original = exercise.as_deref().map(load_scenario).transpose()?;
+            check::run(
+                &handins,
+                original.as_ref(),
+                format == Format::Csv,
+                jobs.threads(),
+                load_scenario,
+                &mut out,
+            )?;
         }
         Some(Command::Queries) => {
             for q in kumiki_core::models::QUERIES {

@@ -93,13 +93,7 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
             Ok(())
         }
         Mode::Check => {
-            let stale: Vec<&str> = [(MARKDOWN, &markdown), (JSON, &json)]
-                .into_iter()
-                .filter(|(file, text)| {
-                    std::fs::read_to_string(root.join(file)).ok().as_deref() != Some(text.as_str())
-                })
-                .map(|(file, _)| file)
-                .collect();
+            let stale = stale(root, &[(MARKDOWN, &markdown), (JSON, &json)]);
             match stale.is_empty() {
                 true => {
                     eprintln!("the reproduction report is current");
@@ -112,5 +106,44 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
                 ))),
             }
         }
+    }
+}
+
+/// The files under `root` whose text is not the one given (or that cannot be read).
+fn stale<'a>(root: &Path, files: &[(&'a str, &String)]) -> Vec<&'a str> {
+    files
+        .iter()
+        .filter(|(file, text)| {
+            std::fs::read_to_string(root.join(file)).ok().as_deref() != Some(text.as_str())
+        })
+        .map(|(file, _)| *file)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stale_names_the_files_that_differ_or_are_missing() {
+        let root = std::env::temp_dir().join(format!("kumiki-stale-{}", std::process::id()));
+        std::fs::create_dir_all(root.join("docs")).unwrap();
+        let (md, json) = ("# report\n".to_string(), "{}\n".to_string());
+        let files = [(MARKDOWN, &md), (JSON, &json)];
+        assert_eq!(stale(&root, &files), vec![MARKDOWN, JSON]);
+        std::fs::write(root.join(MARKDOWN), &md).unwrap();
+        std::fs::write(root.join(JSON), &json).unwrap();
+        assert!(stale(&root, &files).is_empty());
+        std::fs::write(root.join(MARKDOWN), "# report\nedited by hand\n").unwrap();
+        assert_eq!(stale(&root, &files), vec![MARKDOWN]);
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn the_report_texts_are_markdown_and_json_of_the_same_sections() {
+        let (md, json) = texts(&[]);
+        assert!(md.starts_with("# Reproduction report"));
+        let parsed: serde_json::Value = serde_json::from_str(&json).unwrap();
+        assert!(parsed["models"].is_object());
     }
 }

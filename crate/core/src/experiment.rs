@@ -420,7 +420,7 @@ fn csv_value(v: Option<&Value>) -> String {
 /// Text from a scenario (a name, a parameter's text value) as a CSV cell. A cell that starts
 /// with `=`, `+`, `-`, `@`, a tab or a carriage return is read as a formula by spreadsheets, so
 /// such text gets a leading `'` (OWASP's advice); numbers never pass through here.
-fn csv_text(s: &str) -> String {
+pub fn csv_text(s: &str) -> String {
     match s.starts_with(['=', '+', '-', '@', '\t', '\r']) {
         true => csv_field(&format!("'{s}")),
         false => csv_field(s),

@@ -20,6 +20,7 @@
 use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
+use crate::exercise::Exercise;
 use crate::models;
 
 /// The scenario format version this build reads and writes.
@@ -32,7 +33,7 @@ pub const MAX_STEPS: u64 = 100_000_000;
 pub const MAX_NAME_CHARS: usize = 100;
 pub const MAX_DESCRIPTION_CHARS: usize = 4000;
 
-const ENVELOPE: [&str; 7] = [
+const ENVELOPE: [&str; 8] = [
     "version",
     "model",
     "name",
@@ -40,6 +41,7 @@ const ENVELOPE: [&str; 7] = [
     "seed",
     "max_steps",
     "disturbances",
+    "exercise",
 ];
 
 /// A model action scheduled at a step.
@@ -57,6 +59,8 @@ pub struct Scenario {
     pub seed: u64,
     pub max_steps: u64,
     pub disturbances: Vec<Disturbance>,
+    /// A classroom exercise: instructions, locked fields and a goal (see [`crate::exercise`]).
+    pub exercise: Option<Exercise>,
     /// The model's own keys.
     pub body: Map<String, Value>,
 }
@@ -88,15 +92,23 @@ impl Scenario {
                 MAX_STEPS,
             )?,
             disturbances: take_disturbances(&mut map)?,
+            exercise: None,
             model,
-            body: map,
+            body: Map::new(),
         };
+        let exercise = map.remove("exercise");
+        scenario.body = map;
         if scenario.max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
         scenario.body = (entry.normalize)(&scenario)?;
         // Building the model checks the body and every scheduled action.
         models::build(&scenario)?;
+        if let Some(section) = exercise {
+            let doc = scenario.to_value();
+            scenario.exercise =
+                Some(Exercise::from_value(section, &doc).map_err(|e| e.within("exercise"))?);
+        }
         Ok(scenario)
     }
 
@@ -120,6 +132,12 @@ impl Scenario {
                 })
                 .collect();
             map.insert("disturbances".into(), Value::Array(list));
+        }
+        if let Some(exercise) = &self.exercise {
+            map.insert(
+                "exercise".into(),
+                serde_json::to_value(exercise).expect("an exercise serialises"),
+            );
         }
         canonical(Value::Object(map))
     }

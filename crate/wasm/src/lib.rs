@@ -395,6 +395,22 @@ impl Sim {
     pub fn scenario_json(&self) -> String {
         self.run.scenario().to_json_pretty()
     }
+
+    /// The exercise's goal judged on the run as it stands: `{met, because}`, or undefined when
+    /// the scenario is no exercise.
+    pub fn check_goal(&self) -> Result<JsValue, JsError> {
+        let Some(exercise) = &self.run.scenario().exercise else {
+            return Ok(JsValue::UNDEFINED);
+        };
+        let outcome = self.run.outcome();
+        let doc = self.run.scenario().to_value();
+        to_js(&exercise.goal().check(&kumiki_core::exercise::Outcome {
+            completed: outcome.completed,
+            steps: outcome.steps,
+            metrics: &outcome.metrics,
+            scenario: &doc,
+        }))
+    }
 }
 
 /// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance

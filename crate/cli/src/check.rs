@@ -1,0 +1,117 @@
+//! `kumiki check`: grades classroom hand-ins. Each hand-in link is replayed to its end and judged
+//! by its exercise's goal (the core's `exercise::grade`); one row per hand-in, in input order.
+
+use std::io::Write;
+use std::path::Path;
+
+use kumiki_core::exercise::{self, Grade};
+use kumiki_core::experiment::csv_text;
+use kumiki_core::Scenario;
+use serde::Serialize;
+
+use crate::{pool, Failure};
+
+/// One hand-in's row: its place in the input, and its grade or why it could not be graded.
+#[derive(Serialize)]
+struct Row {
+    handin: usize,
+    #[serde(flatten)]
+    grade: Option<Grade>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<String>,
+}
+
+/// The hand-ins named on the command line, then those in `file`, one a line (blank lines and
+/// lines starting with `#` skipped: a link's own `#` comes after its address).
+pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<String>, Failure> {
+    let mut all = links;
+    if let Some(file) = file {
+        let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+        all.extend(
+            text.lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty() && !l.starts_with('#'))
+                .map(str::to_string),
+        );
+    }
+    if all.is_empty() {
+        return Err(Failure::Usage(
+            "check needs hand-in links, as arguments or with --file".into(),
+        ));
+    }
+    Ok(all)
+}
+
+pub fn run(
+    handins: &[String],
+    original: Option<&Scenario>,
+    csv: bool,
+    threads: usize,
+    load: impl Fn(&str) -> Result<Scenario, Failure> + Sync,
+    out: &mut impl Write,
+) -> Result<(), Failure> {
+    if csv {
+        writeln!(
+            out,
+            "handin,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,error"
+        )?;
+    }
+    pool::run_ordered(
+        handins.len(),
+        threads,
+        |i| {
+            let graded = load(&handins[i])
+                .map_err(|e| match e {
+                    Failure::Usage(m) | Failure::Run(m) => m,
+                })
+                .and_then(|s| exercise::grade(&s, original).map_err(|e| e.to_string()));
+            match graded {
+                Ok(grade) => Row {
+                    handin: i + 1,
+                    grade: Some(grade),
+                    error: None,
+                },
+                Err(error) => Row {
+                    handin: i + 1,
+                    grade: None,
+                    error: Some(error),
+                },
+            }
+        },
+        |_, row| -> Result<(), Failure> {
+            match csv {
+                false => writeln!(
+                    out,
+                    "{}",
+                    serde_json::to_string(&row).expect("rows serialise")
+                )?,
+                true => writeln!(out, "{}", csv_row(&row))?,
+            }
+            Ok(())
+        },
+    )
+}
+
+fn csv_row(row: &Row) -> String {
+    let list = |items: &[String]| csv_text(&items.join("; "));
+    match (&row.grade, &row.error) {
+        (Some(g), _) => format!(
+            "{},{},{},{},{},{},{},{},{},{},",
+            row.handin,
+            csv_text(&g.name),
+            g.met,
+            csv_text(&g.because),
+            g.completed,
+            g.steps,
+            g.hash,
+            list(&g.locked_edited),
+            list(&g.changed),
+            g.exercise_edited
+        ),
+        (None, error) => format!(
+            "{},,false,,,,,,,,{}",
+            row.handin,
+            csv_text(error.as_deref().unwrap_or_default())
+        ),
+    }
+}

@@ -1,0 +1,118 @@
+//! `kumiki check` grades hand-ins from their links: a fair one, one that misses the goal, one that
+//! edits a locked field, one that edits the exercise, and one that is not a link at all.
+
+use std::process::Command;
+
+use kumiki_core::{link, presets, Scenario};
+use serde_json::{json, Value};
+
+fn kumiki(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_kumiki"))
+        .args(args)
+        .output()
+        .expect("the kumiki binary runs")
+}
+
+fn exercise() -> Scenario {
+    let mut doc = presets::scenario("amas-L").unwrap().to_value();
+    doc["exercise"] = json!({
+        "title": "Build the L",
+        "instructions": "Choose the collision rule.",
+        "locked": {"robots": 5},
+        "goal": "completed and steps <= 100000"
+    });
+    Scenario::from_value(doc).unwrap()
+}
+
+#[test]
+fn hand_ins_are_replayed_and_graded_one_row_each() {
+    let teacher = exercise();
+    let fair = teacher.with_override("collision", json!("relay")).unwrap();
+    let short = teacher.with_override("max_steps", json!(20)).unwrap();
+    let locked = teacher.with_override("robots", json!(8)).unwrap();
+    let mut cheat = fair.clone();
+    cheat.exercise.as_mut().unwrap().goal = "true".into();
+    let links: Vec<String> = [&fair, &short, &locked, &cheat]
+        .iter()
+        .map(|s| format!("https://example.org/kumiki/#{}", link::encode(s)))
+        .collect();
+    let dir = std::env::temp_dir().join(format!("kumiki-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let list = dir.join("handins.txt");
+    std::fs::write(
+        &list,
+        format!("# class 3\n{}\n\n{}\nnot-a-link\n", links[2], links[3]),
+    )
+    .unwrap();
+    let original = link::encode(&teacher);
+
+    let out = kumiki(&[
+        "check",
+        &links[0],
+        &links[1],
+        "--file",
+        list.to_str().unwrap(),
+        "--exercise",
+        &format!("#{original}"),
+        "--jobs",
+        "2",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows: Vec<Value> = String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), 5);
+    assert_eq!(
+        rows.iter()
+            .map(|r| r["handin"].as_u64().unwrap())
+            .collect::<Vec<_>>(),
+        [1, 2, 3, 4, 5]
+    );
+
+    assert_eq!(rows[0]["met"], true, "{}", rows[0]);
+    assert_eq!(rows[0]["changed"], json!(["collision"]));
+    assert_eq!(rows[1]["met"], false);
+    assert_eq!(rows[1]["completed"], false);
+    assert_eq!(rows[1]["because"], "the run did not complete");
+    assert_eq!(rows[2]["locked_edited"], json!(["robots: 5 → 8"]));
+    assert_eq!(rows[2]["met"], false);
+    assert_eq!(rows[3]["exercise_edited"], true);
+    assert_eq!(rows[3]["met"], false);
+    assert!(
+        rows[4]["error"].as_str().unwrap().contains("not-a-link"),
+        "{}",
+        rows[4]
+    );
+
+    // The replayed hash is the run's own: the same link through `kumiki run`.
+    let run = kumiki(&["run", &links[0]]);
+    let row: Value = serde_json::from_str(String::from_utf8(run.stdout).unwrap().trim()).unwrap();
+    assert_eq!(rows[0]["hash"], row["hash"]);
+
+    let csv = kumiki(&["check", &links[2], "--format", "csv"]);
+    let text = String::from_utf8(csv.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(
+        lines[0],
+        "handin,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,error"
+    );
+    assert!(
+        lines[1].starts_with("1,amas-L,false,") && lines[1].contains(",robots: 5 → 8,,false,"),
+        "{}",
+        lines[1]
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn check_with_nothing_to_grade_is_a_usage_error() {
+    let out = kumiki(&["check"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("hand-in links"));
+}
