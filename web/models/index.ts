@@ -1,5 +1,6 @@
 // Model-specific editors by model name, one file each.
 import { amasEditor } from './amas';
+import { chobieEditor } from './chobie';
 import { cubes3dEditor } from './cubes3d';
 import type { ModelEditor } from './editor';
 import { fractaEditor } from './fracta';
@@ -8,6 +9,7 @@ export type { EditorContext, ModelEditor, MountedEditor } from './editor';
 
 export const modelEditors: Record<string, ModelEditor> = {
   amas: amasEditor,
+  chobie: chobieEditor,
   cubes3d: cubes3dEditor,
   fracta: fractaEditor,
 };

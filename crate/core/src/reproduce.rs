@@ -26,6 +26,7 @@ pub struct Paper {
 /// Every model's paper, in report order.
 pub const PAPERS: &[Paper] = &[
     crate::models::amas::paper::PAPER,
+    crate::models::chobie::paper::PAPER,
     crate::models::cubes3d::paper::PAPER,
 ];
 

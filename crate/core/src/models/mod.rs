@@ -16,6 +16,7 @@ use crate::lattice::LatticeKind;
 use crate::scenario::Scenario;
 
 pub mod amas;
+pub mod chobie;
 pub mod cubes3d;
 pub mod fracta;
 
@@ -187,7 +188,7 @@ pub struct ModelEntry {
 }
 
 /// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY, cubes3d::ENTRY, fracta::ENTRY];
+pub const MODELS: &[ModelEntry] = &[amas::ENTRY, chobie::ENTRY, cubes3d::ENTRY, fracta::ENTRY];
 
 /// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
 /// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
@@ -201,6 +202,12 @@ pub struct Query {
 
 /// Every helper call, by model.
 pub const QUERIES: &[Query] = &[
+    Query {
+        model: "chobie",
+        name: "crawl",
+        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
+        run: chobie::queries::crawl,
+    },
     Query {
         model: "cubes3d",
         name: "derive",

@@ -1,0 +1,108 @@
+//! CHOBIE II: sliding cellular robots that crawl and build a load-adaptive bridge under
+//! temporary leaders, after Suzuki, Inou, Kimura and Koseki. See `docs/models/chobie.md` for
+//! the ODD description and every interpretation made.
+//!
+//! - [`spec`]: the scenario body and the world text;
+//! - [`init`]: the model built from a scenario;
+//! - [`motion`]: the lattice and line motion with its constraints;
+//! - [`signals`]: time slots and messages;
+//! - [`election`]: temporary leaders and their commands;
+//! - [`frame`]: the plane-frame stress model;
+//! - [`cycle`]: one transformation, phase by phase;
+//! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
+//! - [`paper`]: the paper's claims beside the experiments' figures.
+
+use crate::models::{self, Event, ModelEntry};
+
+pub mod actions;
+pub mod cycle;
+pub mod election;
+pub mod frame;
+pub mod init;
+pub mod motion;
+pub mod paper;
+pub mod queries;
+pub mod signals;
+pub mod spec;
+pub mod view;
+
+#[cfg(test)]
+mod tests;
+
+use election::{Elected, Mode};
+use motion::Body;
+use spec::{Leader, Mechanics, Method, Task};
+
+pub const ENTRY: ModelEntry = ModelEntry {
+    name: "chobie",
+    title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
+    default_max_steps: 200,
+    model_version: 1,
+    build: |s| Ok(Box::new(Chobie::new(s)?)),
+    normalize: models::normalized::<spec::Spec>,
+};
+
+/// The checked parameters a run uses.
+#[derive(Clone, Copy, Debug)]
+pub struct Params {
+    pub task: Task,
+    pub leader: Leader,
+    pub method: Method,
+    pub priority: bool,
+    pub adaptation: bool,
+    pub construction: bool,
+    pub goal: Option<u32>,
+    pub tip_load: f64,
+    pub hop_us: f64,
+    pub mech: Mechanics,
+    /// The priority sequence of figure 18.
+    pub order: [election::Kind; 4],
+}
+
+/// Counters over the whole run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Totals {
+    pub transformations: u64,
+    pub slots: u64,
+    pub messages: u64,
+    /// Robot-cells driven.
+    pub energy: u64,
+    /// Elections in which an algorithm tried found no leader.
+    pub election_failures: u64,
+    /// Transformations whose commands could not be carried out.
+    pub refused: u64,
+    /// Transformations made in load-adaptation mode.
+    pub adaptations: u64,
+}
+
+/// What the last step did, for metrics and the page.
+#[derive(Clone, Debug, Default)]
+pub struct Last {
+    pub leaders: Vec<Elected>,
+    pub driven: Vec<u32>,
+    pub signals: Vec<Event>,
+    pub slots: u64,
+    pub messages: u64,
+    pub moved: bool,
+}
+
+#[derive(Clone)]
+pub struct Chobie {
+    body: Body,
+    p: Params,
+    /// Applied loads per robot, newtons downward (the tip load comes on top).
+    loads: Vec<f64>,
+    mode: Mode,
+    steps: u64,
+    totals: Totals,
+    last: Last,
+    /// The fixed leader of the baseline.
+    permanent: u32,
+    start_x: f64,
+    /// The last column of terrain under the starting structure (the cliff edge).
+    edge: i32,
+    stress: Vec<f64>,
+    disp: Vec<[f64; 3]>,
+    /// Largest peak stress seen so far, Pa.
+    worst: f64,
+}

@@ -1,0 +1,349 @@
+//! What the paper claims and what Kumiki measures. The paper reports behaviours, not numbers;
+//! each finding below reads the built-in experiments' rows and decides its verdict from them.
+
+use serde_json::{json, Value};
+
+use crate::reproduce::{Finding, Paper, Results, Stats, Verdict};
+
+pub const PAPER: Paper = Paper {
+    model: "chobie",
+    citation: "Y. Suzuki, N. Inou, H. Kimura and M. Koseki, \"Reconfigurable group robots adaptively transforming a mechanical structure – Crawl motion and adaptive transformation with new algorithms\"",
+    experiments: &[
+        "chobie-crawl",
+        "chobie-forms",
+        "chobie-bridge",
+        "chobie-load",
+        "chobie-mechanics",
+    ],
+    findings,
+};
+
+const CRAWLS: [&str; 4] = [
+    "chobie-crawl3",
+    "chobie-crawl5",
+    "chobie-crawl7",
+    "chobie-crawl9",
+];
+
+fn finding(
+    section: &str,
+    claim: &str,
+    kumiki: String,
+    runs: usize,
+    verdict: Verdict,
+    note: &str,
+) -> Finding {
+    Finding {
+        section: section.into(),
+        claim: claim.into(),
+        kumiki,
+        runs,
+        verdict,
+        note: note.into(),
+    }
+}
+
+fn sum(v: &[f64]) -> f64 {
+    v.iter().sum()
+}
+
+fn findings(r: &Results) -> Vec<Finding> {
+    let mut out = Vec::new();
+    crawl(r, &mut out);
+    forms(r, &mut out);
+    bridge(r, &mut out);
+    out
+}
+
+fn crawl(r: &Results, out: &mut Vec<Finding>) {
+    let e = "chobie-crawl";
+    let temporary = |s: &str, m: &str| {
+        r.values(
+            e,
+            &[("scenario", json!(s)), ("leader", json!("temporary"))],
+            m,
+        )
+    };
+    let mut per_cycle = Vec::new();
+    let (mut failures, mut refused, mut leaders) = (0.0, 0.0, Vec::new());
+    for s in CRAWLS {
+        let d = temporary(s, "distance");
+        let t = temporary(s, "transformations");
+        per_cycle.extend(d.iter().zip(&t).map(|(d, t)| d / (t / 4.0)));
+        failures += sum(&temporary(s, "election_failures"));
+        refused += sum(&temporary(s, "refused"));
+        leaders.extend(temporary(s, "leaders"));
+    }
+    let one_cell = !per_cycle.is_empty() && per_cycle.iter().all(|c| (c - 1.0).abs() < 1e-9);
+    out.push(finding(
+        "§3.3, figs. 7, 9, 10",
+        "Crawl motion with 3, 5, 7 and 9 robots was successfully demonstrated in all cases; the four forms move the whole structure by the unit length of a robot.",
+        format!("cells moved per crawl cycle (4 transformations): {}", Stats::of(&per_cycle).describe(3)),
+        per_cycle.len(),
+        Verdict::from(one_cell && failures == 0.0 && refused == 0.0),
+        "40 transformations per run, n = 3, 5, 7, 9; distance is the move of the centre of mass along x",
+    ));
+    out.push(finding(
+        "§3.3, figs. 7, 8",
+        "In each form the three rules make one robot, at a position fixed by the form, the temporary leader; its kind tells the form and the line to drive.",
+        format!(
+            "leaders in the last election: {}; elections without a leader: {failures}; commands refused: {refused}",
+            Stats::of(&leaders).describe(0)
+        ),
+        leaders.len(),
+        Verdict::from(leaders.iter().all(|&l| l == 1.0) && failures == 0.0 && refused == 0.0),
+        "every one of the 160 elections elected a leader whose command was carried out",
+    ));
+
+    let rows = |leader: &str, m: &str| r.values(e, &[("leader", json!(leader))], m);
+    let robots = rows("temporary", "robots");
+    let t_slots = rows("temporary", "slots_per_transformation");
+    let p_slots = rows("permanent", "slots_per_transformation");
+    let flat = t_slots.iter().all(|&s| Some(&s) == t_slots.first());
+    let grows = p_slots.windows(2).all(|w| w[1] > w[0]);
+    let ends = |v: &[f64]| {
+        (
+            v.first().copied().unwrap_or(f64::NAN),
+            v.last().copied().unwrap_or(f64::NAN),
+        )
+    };
+    let (n0, n1) = ends(&robots);
+    let (p0, p1) = ends(&p_slots);
+    out.push(finding(
+        "§3.1, §3.3",
+        "The temporary leader scheme is independent of the scale of the structure: it follows a simple local rule whatever the number of robots.",
+        format!(
+            "slots per transformation with temporary leaders, n = {n0}–{n1}: {}; with a permanent leader: {p0:.1} at n = {n0} to {p1:.1} at n = {n1}",
+            Stats::of(&t_slots).describe(1)
+        ),
+        t_slots.len() + p_slots.len(),
+        Verdict::from(flat && grows),
+        "the baseline gathers every robot's cell at a fixed leader and floods the driving robots' ids (interpretation 10)",
+    ));
+    let t_msg = rows("temporary", "messages_per_robot");
+    let p_msg = rows("permanent", "messages_per_robot");
+    let fewer = !t_msg.is_empty() && t_msg.iter().zip(&p_msg).all(|(t, p)| t < p);
+    out.push(finding(
+        "§1, §3.1",
+        "The temporary leader decreases the amount of information communicated between the robots, compared with a leader that handles the whole structure's information.",
+        format!(
+            "messages per robot per transformation: temporary {}; permanent {}",
+            Stats::of(&t_msg).describe(1),
+            Stats::of(&p_msg).describe(1)
+        ),
+        t_msg.len() + p_msg.len(),
+        Verdict::from(fewer),
+        "n = 3, 5, 7, 9, 21, 41, 81; compared at each n",
+    ));
+    let slot = rows("temporary", "slot_us");
+    let (s0, s1) = ends(&slot);
+    out.push(finding(
+        "§3.2",
+        "Each time step must be longer than a signal's round trip between both ends of the structure (about 10 µs per robot).",
+        format!("slot length needed: {s0:.0} µs at n = {n0} to {s1:.0} µs at n = {n1}"),
+        slot.len(),
+        Verdict::NotStated,
+        "twice the structure's diameter in hops × 10 µs",
+    ));
+}
+
+fn forms(r: &Results, out: &mut Vec<Finding>) {
+    let e = "chobie-forms";
+    let pick = |form: &str, method: &str, priority: bool, m: &str| {
+        r.values(
+            e,
+            &[
+                ("scenario", json!(format!("chobie-form-{form}"))),
+                ("method", json!(method)),
+                ("priority", Value::Bool(priority)),
+            ],
+            m,
+        )
+    };
+    let none: Vec<f64> = ["b", "c"]
+        .iter()
+        .flat_map(|f| pick(f, "first", false, "distance"))
+        .collect();
+    let failed: Vec<f64> = ["b", "c"]
+        .iter()
+        .flat_map(|f| pick(f, "first", false, "election_failures"))
+        .collect();
+    out.push(finding(
+        "§IV, fig. 15",
+        "Forms (b) and (c) have the problem that no leader is elected.",
+        format!(
+            "first algorithm alone: cells moved {}; elections without a leader per run {}",
+            Stats::of(&none).describe(1),
+            Stats::of(&failed).describe(0)
+        ),
+        none.len(),
+        Verdict::from(!none.is_empty() && none.iter().all(|&d| d == 0.0) && failed.iter().all(|&f| f == 20.0)),
+        "20 cycles each; forms (b) and (c) reconstructed as a lone row and a 4 × 2 block (interpretation 7)",
+    ));
+    let leaders = pick("d", "first", false, "leaders");
+    let moved = pick("d", "first", false, "distance");
+    out.push(finding(
+        "§IV, fig. 15",
+        "In form (d) several leaders are elected at once; if their commands go different ways the transformation may be impossible.",
+        format!(
+            "leaders elected: {}; cells moved without the priority sequence: {}",
+            Stats::of(&leaders).describe(0),
+            Stats::of(&moved).describe(1)
+        ),
+        leaders.len(),
+        Verdict::from(leaders.iter().all(|&l| l >= 2.0) && moved.iter().all(|&d| d == 0.0)),
+        "a top + left and a top + right leader: a vertical and a horizontal command that cannot be made together",
+    ));
+    let te: Vec<f64> = ["b", "c"]
+        .iter()
+        .flat_map(|f| pick(f, "trial_and_error", false, "distance"))
+        .collect();
+    out.push(finding(
+        "§IV, fig. 16",
+        "The trial-and-error method, trying a second and a third algorithm when no leader is detected, makes forms (b) and (c) move.",
+        format!("cells moved in 20 cycles: {}", Stats::of(&te).describe(1)),
+        te.len(),
+        Verdict::from(!te.is_empty() && te.iter().all(|&d| d > 0.0)),
+        "",
+    ));
+    let mut cheaper = 0;
+    let mut worse = 0;
+    let mut text = Vec::new();
+    for f in ["a", "b", "c", "d"] {
+        let t = pick(f, "trial_and_error", false, "slots_per_transformation");
+        let c = pick(f, "cautious", false, "slots_per_transformation");
+        if let (Some(t), Some(c)) = (t.first(), c.first()) {
+            text.push(format!("({f}) {t:.2} vs {c:.2}"));
+            if c < t {
+                cheaper += 1;
+            }
+            if c > t {
+                worse += 1;
+            }
+        }
+    }
+    out.push(finding(
+        "§IV, fig. 17",
+        "The cautious method, which checks the structure's characteristics first, is thought to be more efficient than trial and error.",
+        format!("slots per cycle, trial-and-error vs cautious: {}", text.join("; ")),
+        2 * text.len(),
+        Verdict::from(cheaper > 0 && worse == 0),
+        "equal where the first algorithm already elects a leader",
+    ));
+    let fixed = pick("d", "first", true, "distance");
+    let refused = pick("d", "first", true, "refused");
+    out.push(finding(
+        "§IV, fig. 18",
+        "Checking leader kinds in a priority sequence avoids plural leaders of different kinds in form (d).",
+        format!(
+            "cells moved in 20 cycles with the sequence: {}; refused cycles {}",
+            Stats::of(&fixed).describe(2),
+            Stats::of(&refused).describe(0)
+        ),
+        fixed.len(),
+        Verdict::from(!fixed.is_empty() && fixed.iter().all(|&d| d > 0.0) && refused.iter().all(|&x| x == 0.0)),
+        "sequence top + left, bottom + right, top + right, bottom + left (interpretation 8)",
+    ));
+}
+
+fn bridge(r: &Results, out: &mut Vec<Finding>) {
+    let e = "chobie-bridge";
+    let rows = r.select(e, &[("adaptation", Value::Bool(true))]);
+    let mut entered = 0;
+    let mut returned = 0;
+    for row in &rows {
+        let modes: Vec<f64> = row
+            .trace
+            .as_ref()
+            .and_then(|t| t.values.get("mode"))
+            .and_then(Value::as_array)
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default();
+        if let Some(first) = modes.iter().position(|&m| m == 2.0) {
+            entered += 1;
+            if modes[first..].contains(&1.0) {
+                returned += 1;
+            }
+        }
+    }
+    let adapt = r.values(e, &[("adaptation", Value::Bool(true))], "adaptations");
+    let stuck = r
+        .values(e, &[("adaptation", Value::Bool(true))], "mode")
+        .iter()
+        .filter(|&&m| m == 2.0)
+        .count();
+    out.push(finding(
+        "§3.4, fig. 12",
+        "When a robot's stress exceeds the threshold all robots switch to load-adaptation mode, and when the overload is done away with they switch back to bridge construction.",
+        format!(
+            "{entered} of {} runs entered adaptation mode; {returned} of them returned to construction; {stuck} ended in adaptation mode; transformations in adaptation mode: {}",
+            rows.len(),
+            Stats::of(&adapt).describe(1)
+        ),
+        rows.len(),
+        Verdict::from(entered > 0 && returned > 0),
+        "a run ends in adaptation mode when construction has carried the reserves past the root and a new overload lies left of them, which the eight steps cannot reach (interpretation 13)",
+    ));
+    let with = r.values(e, &[("adaptation", Value::Bool(true))], "max_peak_stress");
+    let without = r.values(e, &[("adaptation", Value::Bool(false))], "max_peak_stress");
+    let lower = !with.is_empty() && with.iter().zip(&without).all(|(w, o)| w < o);
+    out.push(finding(
+        "§3.4, figs. 1, 11",
+        "Load adaptation equalises the robots' stressed states: overloaded parts are thickened by other robots instead of the stress concentrating.",
+        format!(
+            "largest peak stress over the run, MPa: with adaptation {}; without {}",
+            Stats::of(&with).describe(2),
+            Stats::of(&without).describe(2)
+        ),
+        with.len() + without.len(),
+        Verdict::from(lower),
+        "1, 3 and 5 reserves × tip loads 0, 10, 20 N, compared pair by pair; threshold 4 MPa",
+    ));
+    let span_with = r.values(e, &[("adaptation", Value::Bool(true))], "span");
+    let span_without = r.values(e, &[("adaptation", Value::Bool(false))], "span");
+    out.push(finding(
+        "§3.4, fig. 11",
+        "The lower tier slides right over the cliff and builds the bridge.",
+        format!(
+            "span reached (cells beyond the edge): with adaptation {}; without {}",
+            Stats::of(&span_with).describe(1),
+            Stats::of(&span_without).describe(1)
+        ),
+        span_with.len() + span_without.len(),
+        Verdict::NotStated,
+        "without adaptation the tier runs out over the void whatever the stress; with it construction stops at the first overload the reserves cannot reach",
+    ));
+    let l = "chobie-load";
+    let moved = r.values(l, &[("adaptation", Value::Bool(true))], "energy");
+    let idle = r.values(l, &[("adaptation", Value::Bool(false))], "energy");
+    let left = r.values(l, &[("adaptation", Value::Bool(true))], "overloads");
+    out.push(finding(
+        "§3.4, figs. 13, 14",
+        "With five robots, a load at the cantilever's end overloads robot B near the root, and robot A moves so that the stressed part becomes thick: load information is the trigger.",
+        format!(
+            "robot-cells driven after a 300 N tip load: with adaptation {}, without {}; robots still overloaded at the end {}",
+            Stats::of(&moved).describe(0),
+            Stats::of(&idle).describe(0),
+            Stats::of(&left).describe(0)
+        ),
+        moved.len() + idle.len(),
+        Verdict::from(moved.iter().all(|&m| m > 0.0) && idle.iter().all(|&m| m == 0.0)),
+        "A stops above the overloaded robot over the void; a single robot on top does not span the root contact, so the overload stays",
+    ));
+    let m = "chobie-mechanics";
+    let frame = r.values(m, &[], "peak_stress");
+    let theory = r.values(m, &[], "beam_theory_stress");
+    let worst = frame
+        .iter()
+        .zip(&theory)
+        .map(|(f, t)| ((f - t) / t).abs())
+        .fold(0.0, f64::max);
+    out.push(finding(
+        "§3.4 (strain gauges)",
+        "The robots sense their stress with strain gauges; Kumiki computes it with a plane-frame model.",
+        format!("largest relative difference between the frame's root stress and beam theory, cantilevers of 1–20 robots: {worst:.1e}"),
+        frame.len(),
+        Verdict::NotStated,
+        "a check of the stress model, not a claim of the paper",
+    ));
+}
