@@ -96,6 +96,8 @@ impl Model for Chobie {
                 super::spec::Task::Crawl => "distance".into(),
                 super::spec::Task::Bridge => "peak_stress".into(),
             },
+            // Without a goal distance or span, a crawl or a bridge simply runs its course.
+            goal: self.p.goal.is_some(),
         }
     }
 

@@ -34,7 +34,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
-    model_version: 1,
+    model_version: 2,
     build: |s| Ok(Box::new(Cubes::new(s)?)),
     normalize: models::normalized::<Spec>,
 };
