@@ -5,6 +5,7 @@
 //!
 //! - [`types`]: the 12 connection types, which can move, and the distances between them;
 //! - [`goal`]: goal statements, their text form, "derive from shape", and the difference;
+//! - [`paper`]: the paper's claims for the reproduction report;
 //! - this module: the units on the lattice, the step (diffusion, activation, irritation, rolls)
 //!   and faults.
 
@@ -27,6 +28,7 @@ use crate::scenario::Scenario;
 use crate::shape;
 
 pub mod goal;
+pub mod paper;
 pub mod types;
 
 use goal::{Goal, Priorities};
@@ -126,7 +128,7 @@ pub mod defaults {
         1.0
     }
     pub fn avoid_e() -> bool {
-        false
+        true
     }
     pub(super) fn priorities() -> Priorities {
         Priorities::Pooled
@@ -329,10 +331,7 @@ impl Fracta {
             ));
         }
         model.refresh();
-        // Equation 2, initial state: x(i, 0) = diff(i, 0).
-        for &u in &model.working {
-            model.units[u as usize].x = f64::from(model.diff[u as usize]);
-        }
+        model.restart();
         Ok(model)
     }
 
@@ -475,6 +474,19 @@ impl Fracta {
                 .retain(|&u| self.units[u as usize].status == Status::Working);
         }
         self.refresh();
+        // The structure the units form has changed: equation 2 starts again from its initial
+        // state (section 3.3 / 4: the self-repair process is launched anew).
+        self.restart();
+    }
+
+    /// Equation 2's initial state, x(i, 0) = diff(i, 0), and no irritation, for every working
+    /// unit: at the start and whenever a cut-off changes the structure the units form.
+    fn restart(&mut self) {
+        for &u in &self.working {
+            let unit = &mut self.units[u as usize];
+            unit.x = f64::from(self.diff[u as usize]);
+            unit.irr = 0.0;
+        }
     }
 
     /// Equations 2, 4 and 5 for every working unit at once, then the activation rule
@@ -526,14 +538,37 @@ impl Fracta {
         }
     }
 
-    /// Whether the unit on `cell` with neighbours `mask` may roll about slot `pivot`: the rule of
-    /// [`types::roll_ok`], every swept cell inside the lattice, the far swept cell free
-    /// (collision avoidance), and (with `avoid_e`) not landing as an `e`.
+    /// Where the unit on `cell` with neighbours `mask` ends when it rolls about slot `pivot`, if
+    /// it may. One 60° roll is legal by the rule of [`types::roll_ok`], with every swept cell
+    /// inside the lattice and the far swept cell free (collision avoidance). With `avoid_e` the
+    /// unit does not stop as an `e` (section 4): while the cell it reached touches no unit but
+    /// the pivot, it rolls on about the same pivot, each 60° legal in the same way, and the
+    /// motion is impossible if it would come round to where it started.
     fn legal(&self, cell: u32, mask: u8, pivot: usize, turn: Turn) -> Option<u32> {
+        let (mut at, mut mask, mut pivot) = (cell, mask, pivot);
+        for _ in 0..5 {
+            let target = self.roll_once(at, mask, pivot, turn)?;
+            if !self.p.avoid_e {
+                return Some(target);
+            }
+            // Bonds at the target once the unit has left its starting cell.
+            let there = self.ring_without(target, cell);
+            if there.count_ones() >= 2 {
+                return Some(target);
+            }
+            // Seen from the target, the pivot sits one slot back against the turn.
+            (at, mask, pivot) = (target, there, turn.back(pivot));
+        }
+        None
+    }
+
+    /// The cell one legal 60° roll about slot `pivot` takes the unit on `at` (neighbours `mask`)
+    /// to.
+    fn roll_once(&self, at: u32, mask: u8, pivot: usize, turn: Turn) -> Option<u32> {
         if !types::roll_ok(mask, pivot, turn) {
             return None;
         }
-        let nb = &self.nbr[cell as usize];
+        let nb = &self.nbr[at as usize];
         if swept_slots(pivot, turn).iter().any(|&s| nb[s] == NO_UNIT) {
             return None;
         }
@@ -543,17 +578,19 @@ impl Fracta {
         if far == NO_UNIT || self.occ[far as usize] != NO_UNIT {
             return None;
         }
-        if self.p.avoid_e {
-            // Bonds at the target once the unit has left its cell.
-            let bonds = self.nbr[target as usize]
-                .iter()
-                .filter(|&&j| j != NO_UNIT && j != cell && self.occ[j as usize] != NO_UNIT)
-                .count();
-            if bonds < 2 {
-                return None;
+        Some(target)
+    }
+
+    /// Neighbour mask of `cell` with the cell `gone` counted as empty.
+    fn ring_without(&self, cell: u32, gone: u32) -> u8 {
+        let nb = &self.nbr[cell as usize];
+        let mut m = 0u8;
+        for (d, &j) in nb.iter().enumerate() {
+            if j != NO_UNIT && j != gone && self.occ[j as usize] != NO_UNIT {
+                m |= 1 << d;
             }
         }
-        Some(target)
+        m
     }
 
     /// The difference the unit `u` would have after rolling from `from` to `to`, every other
