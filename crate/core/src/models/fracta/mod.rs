@@ -727,6 +727,33 @@ impl Fracta {
         sum as f64 / self.working.len() as f64
     }
 
+    /// Empty cells enclosed by units: not reachable from the lattice's edge through empty cells.
+    /// A ring of units round such a cell cannot open (its units are not movable) and no unit can
+    /// roll into it, so a goal without holes is then out of reach for good.
+    fn holes(&self) -> u64 {
+        let n = self.occ.len();
+        let mut outside = vec![false; n];
+        let mut queue: VecDeque<u32> = VecDeque::new();
+        for i in 0..n {
+            let edge = self.nbr[i].contains(&NO_UNIT);
+            if edge && self.occ[i] == NO_UNIT {
+                outside[i] = true;
+                queue.push_back(i as u32);
+            }
+        }
+        while let Some(i) = queue.pop_front() {
+            for &j in &self.nbr[i as usize] {
+                if j != NO_UNIT && !outside[j as usize] && self.occ[j as usize] == NO_UNIT {
+                    outside[j as usize] = true;
+                    queue.push_back(j);
+                }
+            }
+        }
+        (0..n)
+            .filter(|&i| self.occ[i] == NO_UNIT && !outside[i])
+            .count() as u64
+    }
+
     /// The working unit on a cell named by an action.
     fn working_unit_at(&self, cell: u64) -> Result<u32> {
         let u = self.occ[cell as usize];
@@ -914,6 +941,7 @@ impl Model for Fracta {
         m.insert("faults".into(), self.faults.into());
         m.insert("cut_off".into(), self.cut_off.into());
         m.insert("stranded".into(), self.stranded.into());
+        m.insert("holes".into(), self.holes().into());
         // Null until the goal is reached: from the start when there was no fault, from the
         // last fault when there was one.
         let done = self.completed();

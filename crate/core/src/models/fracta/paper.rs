@@ -4,7 +4,7 @@
 
 use serde_json::{json, Value};
 
-use crate::reproduce::{fmt, Finding, Paper, Results, Stats, Verdict};
+use crate::reproduce::{fmt, value, Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "fracta",
@@ -60,6 +60,28 @@ fn ratio(done: &[f64]) -> String {
     format!("{k} of {n} ({} %)", fmt(pct, 1))
 }
 
+/// What the runs that did not reach the goal ended in: how many with an enclosed hole (a ring
+/// of units round an empty cell, which no rule can open).
+fn failures(r: &Results, experiment: &str, filter: &[(&str, Value)]) -> String {
+    let failed: Vec<_> = r
+        .select(experiment, filter)
+        .into_iter()
+        .filter(|row| !row.completed)
+        .collect();
+    if failed.is_empty() {
+        return "Every run reached the goal.".into();
+    }
+    let holed = failed
+        .iter()
+        .filter(|row| value(row, "holes").is_some_and(|h| h > 0.0))
+        .count();
+    format!(
+        "Of the {} runs that did not reach the goal, {holed} ended with a ring of units round \
+         an empty cell, which no rule can open.",
+        failed.len()
+    )
+}
+
 /// The value below which a fraction `q` of the sorted sample lies (linear interpolation).
 fn percentile(values: &[f64], q: f64) -> f64 {
     if values.is_empty() {
@@ -87,12 +109,13 @@ fn assembly(r: &Results) -> Vec<Finding> {
             kumiki: format!("{} runs assembled", ratio(&done)),
             runs: done.len(),
             verdict: Verdict::NotStated,
-            note: "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 5000 \
-                   steps; a run counts when every unit matches a statement exactly, which for \
-                   11 units only the triangle with its spare beside a corner does (checked \
-                   over 300 seeds in the tests). The runs that fail end with a ring of units \
-                   round an empty cell, which no rule can open."
-                .into(),
+            note: format!(
+                "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 5000 \
+                 steps; a run counts when every unit matches a statement exactly, which for 11 \
+                 units only the triangle with its spare beside a corner does (checked over 300 \
+                 seeds in the tests). {}",
+                failures(r, EXP, &[])
+            ),
         },
         Finding {
             section: "§4".into(),
@@ -139,16 +162,12 @@ fn repair(r: &Results) -> Vec<Finding> {
             kumiki: format!("{} repaired; repair {} steps", ratio(&done), s.describe(1)),
             runs: done.len(),
             verdict: Verdict::from(all),
-            note: if all {
+            note: format!(
                 "fracta-repair: the fault at step 10, 100 seeds, capped at 5000 steps; repair \
                  time from the fault to the triangle (its detection and cut-off take the first \
-                 step)."
-                    .into()
-            } else {
-                "Not every run rebuilt the triangle within 5000 steps: the failed runs end \
-                 with a ring of units round an empty cell, which no rule can open."
-                    .into()
-            },
+                 step). {}",
+                failures(r, EXP, &filter)
+            ),
         });
     }
     let s = r.stats(EXP, &[], "repair_steps");
@@ -204,9 +223,11 @@ fn deadlock(r: &Results) -> Vec<Finding> {
             ),
             runs: moved.len(),
             verdict: Verdict::from(dissolved),
-            note: "fracta-deadlock with I_th = 10: the o units' irritation fires and they \
-                   roll; the verdict asks that every run leaves the deadlock."
-                .into(),
+            note: format!(
+                "fracta-deadlock with I_th = 10: the o units' irritation fires and they roll; \
+                 the verdict asks that every run leaves the deadlock. {}",
+                failures(r, EXP, &on)
+            ),
         },
     ]
 }
