@@ -110,7 +110,7 @@ fn assembly(r: &Results) -> Vec<Finding> {
             runs: done.len(),
             verdict: Verdict::NotStated,
             note: format!(
-                "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 5000 \
+                "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 2000 \
                  steps; a run counts when every unit matches a statement exactly, which for 11 \
                  units only the triangle with its spare beside a corner does (checked over 300 \
                  seeds in the tests). {}",
