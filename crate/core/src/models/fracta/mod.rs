@@ -734,10 +734,9 @@ impl Fracta {
         let n = self.occ.len();
         let mut outside = vec![false; n];
         let mut queue: VecDeque<u32> = VecDeque::new();
-        for i in 0..n {
-            let edge = self.nbr[i].contains(&NO_UNIT);
-            if edge && self.occ[i] == NO_UNIT {
-                outside[i] = true;
+        for (i, out) in outside.iter_mut().enumerate() {
+            if self.nbr[i].contains(&NO_UNIT) && self.occ[i] == NO_UNIT {
+                *out = true;
                 queue.push_back(i as u32);
             }
         }
