@@ -15,17 +15,41 @@ impl Fracta {
         for _ in 0..5 {
             let target = self.roll_once(at, mask, pivot, turn)?;
             if !self.p.avoid_e {
-                return Some(target);
+                return self.leaves_no_hole(cell, target);
             }
             // Bonds at the target once the unit has left its starting cell.
             let there = self.ring_without(target, cell);
             if there.count_ones() >= 2 {
-                return Some(target);
+                return self.leaves_no_hole(cell, target);
             }
             // Seen from the target, the pivot sits one slot back against the turn.
             (at, mask, pivot) = (target, there, turn.back(pivot));
         }
         None
+    }
+
+    /// `Some(to)` unless the unit moving from `from` to `to` would leave an empty cell with a
+    /// unit on each of its six sides (with `no_holes`): the cell it leaves or an empty cell
+    /// beside the one it reaches. No rule can open such a ring again (its units are never
+    /// movable), so the low-level control does not close one.
+    fn leaves_no_hole(&self, from: u32, to: u32) -> Option<u32> {
+        if !self.p.no_holes {
+            return Some(to);
+        }
+        let filled = |c: u32| c == to || (c != from && self.occ[c as usize] != NO_UNIT);
+        let enclosed = |c: u32| {
+            self.nbr[c as usize]
+                .iter()
+                .all(|&j| j != NO_UNIT && filled(j))
+        };
+        let beside = self.nbr[to as usize]
+            .iter()
+            .any(|&c| c != NO_UNIT && !filled(c) && enclosed(c));
+        if beside || enclosed(from) {
+            None
+        } else {
+            Some(to)
+        }
     }
 
     /// The cell one legal 60° roll about slot `pivot` takes the unit on `at` (neighbours `mask`)

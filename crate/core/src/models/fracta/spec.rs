@@ -27,6 +27,8 @@ pub(super) struct Spec {
     pub(super) temperature: f64,
     #[serde(default = "defaults::avoid_e")]
     pub(super) avoid_e: bool,
+    #[serde(default = "defaults::no_holes")]
+    pub(super) no_holes: bool,
     #[serde(default = "defaults::priorities")]
     pub(super) priorities: Priorities,
 }
@@ -61,6 +63,9 @@ pub mod defaults {
     pub fn avoid_e() -> bool {
         true
     }
+    pub fn no_holes() -> bool {
+        true
+    }
     pub(super) fn priorities() -> Priorities {
         Priorities::Pooled
     }
@@ -76,6 +81,7 @@ pub(super) struct Params {
     pub(super) gain: f64,
     pub(super) temperature: f64,
     pub(super) avoid_e: bool,
+    pub(super) no_holes: bool,
     pub(super) priorities: Priorities,
 }
 
@@ -104,6 +110,7 @@ pub(super) fn check_params(s: &Spec) -> Result<Params> {
         gain: range("irritation_gain", s.irritation_gain, 0.0, 1000.0, false)?,
         temperature: range("temperature", s.temperature, 0.001, 1e6, false)?,
         avoid_e: s.avoid_e,
+        no_holes: s.no_holes,
         priorities: s.priorities,
     })
 }
