@@ -28,6 +28,7 @@ pub const PAPERS: &[Paper] = &[
     crate::models::amas::paper::PAPER,
     crate::models::chobie::paper::PAPER,
     crate::models::cubes3d::paper::PAPER,
+    crate::models::fracta::paper::PAPER,
 ];
 
 /// The paper of one model.

@@ -747,3 +747,118 @@ proptest! {
         }
     }
 }
+
+/// The occupied cells of the working units in axial coordinates, in a normal form that is the
+/// same for every rotation, reflection and translation of the shape.
+fn shape_up_to_symmetry(m: &Fracta) -> Vec<(i32, i32)> {
+    let cells: Vec<(i32, i32)> = m
+        .working
+        .iter()
+        .map(|&u| Hex::to_axial(m.lattice.coord(m.units[u as usize].cell as usize)))
+        .collect();
+    let normal = |cs: &[(i32, i32)]| -> Vec<(i32, i32)> {
+        let q0 = cs.iter().map(|c| c.0).min().unwrap_or(0);
+        let r0 = cs.iter().map(|c| c.1).min().unwrap_or(0);
+        let mut out: Vec<(i32, i32)> = cs.iter().map(|&(q, r)| (q - q0, r - r0)).collect();
+        out.sort_unstable();
+        out
+    };
+    let mut best: Option<Vec<(i32, i32)>> = None;
+    let mut cur = cells;
+    for _ in 0..2 {
+        for _ in 0..6 {
+            let n = normal(&cur);
+            if best.as_ref().is_none_or(|b| n < *b) {
+                best = Some(n);
+            }
+            cur = cur.iter().map(|&(q, r)| (-r, q + r)).collect();
+        }
+        cur = cur.iter().map(|&(q, r)| (q + r, -r)).collect();
+    }
+    best.unwrap_or_default()
+}
+
+#[test]
+fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
+    // The goal shape: the start of fracta-repair, the triangle with its spare.
+    let goal = Fracta::new(&presets::scenario("fracta-repair").unwrap()).unwrap();
+    let want = shape_up_to_symmetry(&goal);
+    let mut checked = 0;
+    for seed in 1..=300 {
+        let mut s = presets::scenario("fracta-triangle10").unwrap();
+        s.seed = seed;
+        let mut m = Fracta::new(&s).unwrap();
+        while m.steps < 3000 && !m.completed() {
+            m.step();
+        }
+        if m.completed() {
+            checked += 1;
+            assert_eq!(shape_up_to_symmetry(&m), want, "seed {seed}");
+        } else {
+            assert!(m.holes() > 0, "seed {seed} failed without an enclosed hole");
+        }
+    }
+    assert!(checked >= 250, "only {checked} of 300 runs assembled");
+}
+
+#[test]
+fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
+    let mut s = presets::scenario("fracta-triangle10").unwrap();
+    s.seed = 2;
+    let mut m = Fracta::new(&s).unwrap();
+    assert!(m.p.avoid_e);
+    let mut legal = 0;
+    for _ in 0..200 {
+        for &u in &m.working {
+            let cell = m.units[u as usize].cell;
+            for pivot in 0..6 {
+                for turn in Turn::BOTH {
+                    if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
+                        legal += 1;
+                        assert_ne!(to, cell);
+                        assert!(m.ring_without(to, cell).count_ones() >= 2);
+                    }
+                }
+            }
+        }
+        m.step();
+        check_invariants(&m);
+    }
+    assert!(legal > 0 && m.moves > 0);
+    // Read as a single 60° roll, the rule leaves nothing to do from the two lines.
+    let mut s = presets::scenario("fracta-triangle10").unwrap();
+    s.body["avoid_e"] = json!(true);
+    let mut m = Fracta::new(&s).unwrap();
+    m.p.avoid_e = false;
+    let ends_as_e = m.working.iter().all(|&u| {
+        let cell = m.units[u as usize].cell;
+        (0..6).all(|pivot| {
+            Turn::BOTH.iter().all(|&turn| {
+                m.roll_once(cell, m.mask[u as usize], pivot, turn)
+                    .is_none_or(|to| m.ring_without(to, cell).count_ones() < 2)
+            })
+        })
+    });
+    assert!(ends_as_e);
+}
+
+#[test]
+fn a_cut_off_restarts_equation_2_from_the_differences() {
+    let s = presets::scenario("fracta-repair").unwrap();
+    let mut m = Fracta::new(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.cut_off_faulty();
+    assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
+    for &u in &m.working {
+        assert_eq!(m.units[u as usize].x, f64::from(m.diff[u as usize]));
+        assert_eq!(m.units[u as usize].irr, 0.0);
+    }
+}
+
+#[test]
+fn holes_count_the_cells_a_ring_encloses() {
+    let ring = scenario(". # # .\n # . # .\n. # # .\n", TRIANGLE_GOAL, 1, json!({}));
+    assert_eq!(Fracta::new(&ring).unwrap().holes(), 1);
+    let full = scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}));
+    assert_eq!(Fracta::new(&full).unwrap().holes(), 0);
+}

@@ -36,6 +36,15 @@ pub enum Turn {
 impl Turn {
     pub const BOTH: [Turn; 2] = [Turn::Ccw, Turn::Cw];
 
+    /// The pivot's slot as seen from the cell a roll about `pivot` lands in: one slot back
+    /// against the turn, so that rolling on in the same turn keeps going round the same pivot.
+    pub fn back(self, pivot: usize) -> usize {
+        match self {
+            Turn::Ccw => (pivot + 1) % 6,
+            Turn::Cw => (pivot + 5) % 6,
+        }
+    }
+
     /// The slot `k` steps from `pivot` in this turn's direction of travel.
     fn slot(self, pivot: usize, k: usize) -> usize {
         match self {

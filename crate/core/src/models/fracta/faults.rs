@@ -1,0 +1,56 @@
+//! Step phase 1, the "OK" signals of section 4: faulty units are cut off, and the others start
+//! equation 2 again.
+
+use super::*;
+
+impl Fracta {
+    /// Section 4: a unit that sends no "OK" at the start of a step is cut off by its neighbours.
+    /// If that splits the system, the largest part carries on (the part holding the smallest
+    /// unit id among equals) and the others are stranded.
+    pub(super) fn cut_off_faulty(&mut self) {
+        if self.pending == 0 {
+            return;
+        }
+        for u in 0..self.units.len() {
+            if self.units[u].status == Status::Faulty {
+                let cell = self.units[u].cell;
+                self.units[u].status = Status::CutOff;
+                self.occ[cell as usize] = NO_UNIT;
+                self.ghost[cell as usize] = code::CUT_OFF;
+                self.cut_off += 1;
+                self.events.push(Event {
+                    cell,
+                    kind: event::CUT_OFF,
+                });
+            }
+        }
+        self.pending = 0;
+        let groups = self.components();
+        if groups.len() > 1 {
+            let keep = groups
+                .iter()
+                .enumerate()
+                .max_by_key(|(i, g)| (g.len(), std::cmp::Reverse(*i)))
+                .map(|(i, _)| i)
+                .unwrap_or(0);
+            for (i, g) in groups.iter().enumerate() {
+                if i == keep {
+                    continue;
+                }
+                for &u in g {
+                    let cell = self.units[u as usize].cell;
+                    self.units[u as usize].status = Status::Stranded;
+                    self.occ[cell as usize] = NO_UNIT;
+                    self.ghost[cell as usize] = code::STRANDED;
+                    self.stranded += 1;
+                }
+            }
+            self.working
+                .retain(|&u| self.units[u as usize].status == Status::Working);
+        }
+        self.refresh();
+        // The structure the units form has changed: equation 2 starts again from its initial
+        // state (section 3.3 / 4: the self-repair process is launched anew).
+        self.restart();
+    }
+}

@@ -1,0 +1,233 @@
+//! The claims of Yoshida et al.'s section 4 (self-assembly and self-repair of the 10-unit
+//! triangle) and section 3.2.5 (figure 4's deadlock) beside Kumiki's figures, for the
+//! reproduction report. Every verdict is computed from the experiment rows.
+
+use serde_json::{json, Value};
+
+use crate::reproduce::{fmt, value, Finding, Paper, Results, Stats, Verdict};
+
+pub const PAPER: Paper = Paper {
+    model: "fracta",
+    citation: "E. Yoshida, S. Murata, K. Tomita, H. Kurokawa and S. Kokaji, \
+               Experiment of Self-repairing Modular Machine",
+    experiments: &["fracta-assembly", "fracta-repair", "fracta-deadlock"],
+    findings,
+};
+
+/// The units of `fracta-repair` a fault is given to (all but the centre `s`, unit 5), with the
+/// place each holds in the triangle with its spare.
+const FAULTS: [(u64, &str); 10] = [
+    (0, "the spare"),
+    (1, "the apex, beside the spare"),
+    (2, "the edge unit the spare leans on"),
+    (3, "the edge unit beside the apex, away from the spare"),
+    (4, "the edge unit at the left of the third row"),
+    (6, "the edge unit at the right of the third row"),
+    (7, "the bottom-left corner"),
+    (8, "a bottom edge unit"),
+    (9, "a bottom edge unit"),
+    (10, "the bottom-right corner"),
+];
+
+fn findings(r: &Results) -> Vec<Finding> {
+    let mut out = assembly(r);
+    out.extend(repair(r));
+    out.extend(deadlock(r));
+    out.push(Finding {
+        section: "§5.2, fig. 10".into(),
+        claim: "Twelve 3-D units build a box from a ladder by the difference-based algorithm \
+                with MRF stochastic relaxation; the paper gives the number of steps."
+            .into(),
+        kumiki: "see cubes3d".into(),
+        runs: 0,
+        verdict: Verdict::NotStated,
+        note: "The 3-D box is the cubes3d model's preset and experiment; its figures are in \
+               the cubes3d section of this report."
+            .into(),
+    });
+    out
+}
+
+/// "k of n (p %)".
+fn ratio(done: &[f64]) -> String {
+    let k = done.iter().filter(|&&v| v > 0.0).count();
+    let n = done.len();
+    let pct = if n == 0 {
+        f64::NAN
+    } else {
+        100.0 * k as f64 / n as f64
+    };
+    format!("{k} of {n} ({} %)", fmt(pct, 1))
+}
+
+/// What the runs that did not reach the goal ended in: how many with an enclosed hole (a ring
+/// of units round an empty cell, which no rule can open).
+fn failures(r: &Results, experiment: &str, filter: &[(&str, Value)]) -> String {
+    let failed: Vec<_> = r
+        .select(experiment, filter)
+        .into_iter()
+        .filter(|row| !row.completed)
+        .collect();
+    if failed.is_empty() {
+        return "Every run reached the goal.".into();
+    }
+    let holed = failed
+        .iter()
+        .filter(|row| value(row, "holes").is_some_and(|h| h > 0.0))
+        .count();
+    format!(
+        "Of the {} runs that did not reach the goal, {holed} ended with a ring of units round \
+         an empty cell, which no rule can open.",
+        failed.len()
+    )
+}
+
+/// The value below which a fraction `q` of the sorted sample lies (linear interpolation).
+fn percentile(values: &[f64], q: f64) -> f64 {
+    if values.is_empty() {
+        return f64::NAN;
+    }
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let pos = q * (sorted.len() - 1) as f64;
+    let (lo, hi) = (pos.floor() as usize, pos.ceil() as usize);
+    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
+}
+
+fn assembly(r: &Results) -> Vec<Finding> {
+    const EXP: &str = "fracta-assembly";
+    let done = r.values(EXP, &[], "completed");
+    let steps = r.values(EXP, &[], "convergence_steps");
+    let s = Stats::of(&steps);
+    vec![
+        Finding {
+            section: "§4, fig. 6".into(),
+            claim: "11 units starting from a two-line configuration form the 10-unit triangle \
+                    with one spare unit; the paper ran 1000 simulations of this self-assembly \
+                    and reports the success ratio."
+                .into(),
+            kumiki: format!("{} runs assembled", ratio(&done)),
+            runs: done.len(),
+            verdict: Verdict::NotStated,
+            note: format!(
+                "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 2000 \
+                 steps; a run counts when every unit matches a statement exactly, which for 11 \
+                 units only the triangle with its spare beside a corner does (checked over 300 \
+                 seeds in the tests). {}",
+                failures(r, EXP, &[])
+            ),
+        },
+        Finding {
+            section: "§4".into(),
+            claim: "The paper reports the average convergence time of its 1000 simulations.".into(),
+            kumiki: format!("{} steps", s.describe(1)),
+            runs: s.n,
+            verdict: Verdict::NotStated,
+            note: "Steps from the two-line start to the goal, completed runs of \
+                   fracta-assembly; the experiment's histogram shows the distribution."
+                .into(),
+        },
+        Finding {
+            section: "§4, fig. 6".into(),
+            claim: "The shortest self-assemblies (the hardware run of figure 6 is one \
+                    self-assembly from two lines)."
+                .into(),
+            kumiki: format!(
+                "shortest {} steps; 5th percentile {}, 10th percentile {}",
+                fmt(s.min, 0),
+                fmt(percentile(&steps, 0.05), 1),
+                fmt(percentile(&steps, 0.10), 1)
+            ),
+            runs: s.n,
+            verdict: Verdict::NotStated,
+            note: "Completed runs of fracta-assembly.".into(),
+        },
+    ]
+}
+
+fn repair(r: &Results) -> Vec<Finding> {
+    const EXP: &str = "fracta-repair";
+    let mut out = Vec::new();
+    for (unit, role) in FAULTS {
+        let filter: [(&str, Value); 1] = [("disturbances.0.unit", json!(unit))];
+        let done = r.values(EXP, &filter, "completed");
+        let s = r.stats(EXP, &filter, "repair_steps");
+        let all = !done.is_empty() && done.iter().all(|&v| v > 0.0);
+        out.push(Finding {
+            section: "§4, fig. 6".into(),
+            claim: format!(
+                "A fault cut into unit {unit} ({role}) of the triangle with its spare is \
+                 repaired: the other 10 units rebuild the triangle."
+            ),
+            kumiki: format!("{} repaired; repair {} steps", ratio(&done), s.describe(1)),
+            runs: done.len(),
+            verdict: Verdict::from(all),
+            note: format!(
+                "fracta-repair: the fault at step 10, 100 seeds, capped at 5000 steps; repair \
+                 time from the fault to the triangle (its detection and cut-off take the first \
+                 step). {}",
+                failures(r, EXP, &filter)
+            ),
+        });
+    }
+    let s = r.stats(EXP, &[], "repair_steps");
+    let done = r.values(EXP, &[], "completed");
+    out.push(Finding {
+        section: "§4".into(),
+        claim: "The paper reports the success and the average self-repair time over the 10 \
+                fault positions."
+            .into(),
+        kumiki: format!("{} repaired; repair {} steps", ratio(&done), s.describe(1)),
+        runs: done.len(),
+        verdict: Verdict::NotStated,
+        note: "All 10 positions of fracta-repair together.".into(),
+    });
+    out
+}
+
+fn deadlock(r: &Results) -> Vec<Finding> {
+    const EXP: &str = "fracta-deadlock";
+    let off: [(&str, Value); 1] = [("I_th", json!(1_000_000_000))];
+    let on: [(&str, Value); 1] = [("I_th", json!(10))];
+    let still = r.values(EXP, &off, "moves");
+    let stuck = !still.is_empty() && still.iter().all(|&m| m == 0.0);
+    let moved = r.values(EXP, &on, "moves");
+    let dissolved = !moved.is_empty() && moved.iter().all(|&m| m > 0.0);
+    let done = r.values(EXP, &on, "completed");
+    let s = r.stats(EXP, &on, "convergence_steps");
+    vec![
+        Finding {
+            section: "§3.2.5, fig. 4".into(),
+            claim: "A configuration whose movable units are all type o with neighbours {K, K} \
+                    (difference 0) is in deadlock."
+                .into(),
+            kumiki: format!(
+                "{} of {} runs made no move in 5000 steps without irritation",
+                still.iter().filter(|&&m| m == 0.0).count(),
+                still.len()
+            ),
+            runs: still.len(),
+            verdict: Verdict::from(stuck),
+            note: "fracta-deadlock (two triangles of six sharing a corner unit, goal the \
+                   triangle with its spare) with I_th = 10^9, so that condition 5 never fires."
+                .into(),
+        },
+        Finding {
+            section: "§3.2.5".into(),
+            claim: "Irritation (equations 4 and 5) dissolves the deadlock locally.".into(),
+            kumiki: format!(
+                "{} runs left the deadlock; {} reached the goal, in {} steps",
+                ratio(&moved),
+                ratio(&done),
+                s.describe(1)
+            ),
+            runs: moved.len(),
+            verdict: Verdict::from(dissolved),
+            note: format!(
+                "fracta-deadlock with I_th = 10: the o units' irritation fires and they roll; \
+                 the verdict asks that every run leaves the deadlock. {}",
+                failures(r, EXP, &on)
+            ),
+        },
+    ]
+}

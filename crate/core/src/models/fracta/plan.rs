@@ -1,0 +1,147 @@
+//! Step phase 3: which motions are legal (section 3.1 and section 4's no-e rule) and which
+//! one each active unit plans (section 3.2.4).
+
+use super::*;
+
+impl Fracta {
+    /// Where the unit on `cell` with neighbours `mask` ends when it rolls about slot `pivot`, if
+    /// it may. One 60° roll is legal by the rule of [`types::roll_ok`], with every swept cell
+    /// inside the lattice and the far swept cell free (collision avoidance). With `avoid_e` the
+    /// unit does not stop as an `e` (section 4): while the cell it reached touches no unit but
+    /// the pivot, it rolls on about the same pivot, each 60° legal in the same way, and the
+    /// motion is impossible if it would come round to where it started.
+    pub(super) fn legal(&self, cell: u32, mask: u8, pivot: usize, turn: Turn) -> Option<u32> {
+        let (mut at, mut mask, mut pivot) = (cell, mask, pivot);
+        for _ in 0..5 {
+            let target = self.roll_once(at, mask, pivot, turn)?;
+            if !self.p.avoid_e {
+                return self.leaves_no_hole(cell, target);
+            }
+            // Bonds at the target once the unit has left its starting cell.
+            let there = self.ring_without(target, cell);
+            if there.count_ones() >= 2 {
+                return self.leaves_no_hole(cell, target);
+            }
+            // Seen from the target, the pivot sits one slot back against the turn.
+            (at, mask, pivot) = (target, there, turn.back(pivot));
+        }
+        None
+    }
+
+    /// `Some(to)` unless the unit moving from `from` to `to` would leave an empty cell with a
+    /// unit on each of its six sides (with `no_holes`): the cell it leaves or an empty cell
+    /// beside the one it reaches. No rule can open such a ring again (its units are never
+    /// movable), so the low-level control does not close one.
+    fn leaves_no_hole(&self, from: u32, to: u32) -> Option<u32> {
+        if !self.p.no_holes {
+            return Some(to);
+        }
+        let filled = |c: u32| c == to || (c != from && self.occ[c as usize] != NO_UNIT);
+        let enclosed = |c: u32| {
+            self.nbr[c as usize]
+                .iter()
+                .all(|&j| j != NO_UNIT && filled(j))
+        };
+        let beside = self.nbr[to as usize]
+            .iter()
+            .any(|&c| c != NO_UNIT && !filled(c) && enclosed(c));
+        if beside || enclosed(from) {
+            None
+        } else {
+            Some(to)
+        }
+    }
+
+    /// The cell one legal 60° roll about slot `pivot` takes the unit on `at` (neighbours `mask`)
+    /// to.
+    pub(super) fn roll_once(&self, at: u32, mask: u8, pivot: usize, turn: Turn) -> Option<u32> {
+        if !types::roll_ok(mask, pivot, turn) {
+            return None;
+        }
+        let nb = &self.nbr[at as usize];
+        if swept_slots(pivot, turn).iter().any(|&s| nb[s] == NO_UNIT) {
+            return None;
+        }
+        let target = nb[target_slot(pivot, turn)];
+        let [_, beyond] = far_steps(pivot, turn);
+        let far = self.nbr[target as usize][beyond];
+        if far == NO_UNIT || self.occ[far as usize] != NO_UNIT {
+            return None;
+        }
+        Some(target)
+    }
+
+    /// The difference the unit `u` would have after rolling from `from` to `to`, every other
+    /// unit staying put.
+    pub(super) fn difference_after(&mut self, u: u32, from: u32, to: u32) -> u32 {
+        let t = types();
+        self.occ[from as usize] = NO_UNIT;
+        self.occ[to as usize] = u;
+        let own = t.of(self.ring(to));
+        let mut nb = [0u8; 6];
+        let n = self.neighbour_classes(to, &mut nb, true);
+        let d = self
+            .goal
+            .difference(&t.dist, own, &nb[..n], self.p.priorities)
+            .difference;
+        self.occ[to as usize] = NO_UNIT;
+        self.occ[from as usize] = u;
+        d
+    }
+
+    /// Section 3.2.4: each active unit picks clockwise or counter-clockwise, the direction that
+    /// leaves it the smaller difference being the likelier (Boltzmann weights at `temperature`).
+    pub(super) fn plan(&mut self) {
+        self.plans.clear();
+        for k in 0..self.active.len() {
+            let u = self.active[k];
+            let cell = self.units[u as usize].cell;
+            let mask = self.mask[u as usize];
+            let mut options: [(Plan, u32); 2] = [(
+                Plan {
+                    unit: u,
+                    pivot: 0,
+                    pivot_slot: 0,
+                    turn: Turn::Ccw,
+                },
+                0,
+            ); 2];
+            let mut n = 0;
+            for pivot in 0..6 {
+                for turn in Turn::BOTH {
+                    if let Some(target) = self.legal(cell, mask, pivot, turn) {
+                        let d = self.difference_after(u, cell, target);
+                        if n < 2 {
+                            let pivot_cell = self.nbr[cell as usize][pivot];
+                            options[n] = (
+                                Plan {
+                                    unit: u,
+                                    pivot: self.occ[pivot_cell as usize],
+                                    pivot_slot: pivot as u8,
+                                    turn,
+                                },
+                                d,
+                            );
+                            n += 1;
+                        }
+                    }
+                }
+            }
+            let chosen = match n {
+                0 => continue,
+                1 => options[0].0,
+                _ => {
+                    let (d0, d1) = (f64::from(options[0].1), f64::from(options[1].1));
+                    // P(first) = e^(-d0/T) / (e^(-d0/T) + e^(-d1/T)).
+                    let p0 = 1.0 / (1.0 + math::exp((d0 - d1) / self.p.temperature));
+                    if self.rng.unit() < p0 {
+                        options[0].0
+                    } else {
+                        options[1].0
+                    }
+                }
+            };
+            self.plans.push(chosen);
+        }
+    }
+}
