@@ -615,6 +615,61 @@ byId('exercise-handin').addEventListener('click', async () => {
   }
 });
 
+// ---- the teacher's exercise editor -------------------------------------------------------------
+
+const exerciseDialog = byId<HTMLDialogElement>('exercise-editor');
+const goalInput = byId<HTMLInputElement>('ex-goal');
+function showGoalProblem(): boolean {
+  const problem = goalInput.value.trim() ? core.goalProblem(goalInput.value) : 'write the goal the run must meet';
+  byId('ex-goal-problem').textContent = problem ?? '';
+  goalInput.setAttribute('aria-invalid', problem ? 'true' : 'false');
+  return !problem;
+}
+goalInput.addEventListener('input', showGoalProblem);
+byId('make-exercise').addEventListener('click', () => {
+  const doc = JSON.parse(scenario) as Record<string, unknown>;
+  const current = doc.exercise as Exercise | undefined;
+  byId<HTMLInputElement>('ex-title').value = current?.title ?? displayText(String(doc.name ?? ''), 100);
+  byId<HTMLTextAreaElement>('ex-instructions').value = current?.instructions ?? '';
+  goalInput.value = current?.goal ?? 'completed';
+  byId<HTMLTextAreaElement>('ex-hints').value = (current?.hints ?? []).join('\n\n');
+  const locked = byId('ex-locked');
+  clear(locked);
+  for (const key of Object.keys(doc).filter((k) => !['version', 'model', 'exercise', 'disturbances'].includes(k))) {
+    const box = el('input', { type: 'checkbox', value: key });
+    box.checked = key in (current?.locked ?? {});
+    locked.append(el('label', { class: 'check' }, box, ` ${key.replace(/_/g, ' ')}`));
+  }
+  byId('ex-remove').hidden = !current;
+  showGoalProblem();
+  exerciseDialog.showModal();
+});
+byId('ex-apply').addEventListener('click', (e) => {
+  if (!showGoalProblem()) e.preventDefault();
+});
+exerciseDialog.addEventListener('close', () => {
+  const doc = JSON.parse(scenario) as Record<string, unknown>;
+  if (exerciseDialog.returnValue === 'remove') {
+    delete doc.exercise;
+    load(JSON.stringify(doc));
+    return;
+  }
+  if (exerciseDialog.returnValue !== 'apply') return;
+  const locked: Record<string, unknown> = {};
+  for (const box of byId('ex-locked').querySelectorAll<HTMLInputElement>('input:checked')) locked[box.value] = doc[box.value];
+  doc.exercise = {
+    title: byId<HTMLInputElement>('ex-title').value.trim() || 'Exercise',
+    instructions: byId<HTMLTextAreaElement>('ex-instructions').value,
+    locked,
+    goal: goalInput.value.trim(),
+    hints: byId<HTMLTextAreaElement>('ex-hints')
+      .value.split(/\n\s*\n/)
+      .map((h) => h.trim())
+      .filter(Boolean),
+  };
+  if (load(JSON.stringify(doc))) selectTab('run');
+});
+
 function renderScenarioPanel() {
   const doc = JSON.parse(scenario) as Record<string, unknown>;
   const name = displayText(String(doc.name ?? ''), 100);

@@ -20,6 +20,7 @@ export const encodeLink = (json: string): string => core.encode_link(json);
 export const decodeLink = (link: string): string => core.decode_link(link);
 /** The behaviour version of its model that made a link, and this page's. */
 export const linkVersions = (link: string): { made_with: number; current: number } => core.link_model_versions(link) as { made_with: number; current: number };
+export const goalProblem = (text: string): string | undefined => core.goal_problem(text);
 export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
 export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
 export const experimentJson = (name: string): string => core.experiment_json(name);

@@ -146,6 +146,36 @@ describe('an exercise', () => {
     await context.close();
   });
 
+  test('a teacher makes one from the scenario in view, with the goal checked as it is typed', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    await page.click('#tab-scenario');
+    await page.click('#make-exercise');
+    await page.waitForSelector('#exercise-editor[open]');
+    await page.fill('#ex-title', 'Five robots');
+    await page.fill('#ex-instructions', 'Finish with **five** robots.');
+    await page.fill('#ex-goal', 'steps = 3');
+    assert.equal(await page.textContent('#ex-goal-problem'), "column 7: '=' alone is not a comparison; write '=='");
+    await page.click('#ex-apply');
+    assert.equal(await page.isVisible('#exercise-editor'), true, 'a goal with a problem is not applied');
+    await page.fill('#ex-goal', 'completed and steps < 5000');
+    assert.equal(await page.textContent('#ex-goal-problem'), '');
+    await page.check('#ex-locked input[value="robots"]');
+    await page.fill('#ex-hints', 'Read section 5.\n\nPress Play.');
+    await page.click('#ex-apply');
+    await page.waitForSelector('#exercise:not([hidden])');
+    assert.equal(await page.textContent('#exercise-title'), 'Five robots');
+    const doc = JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
+    assert.deepEqual(doc.exercise, {
+      title: 'Five robots',
+      instructions: 'Finish with **five** robots.',
+      locked: { robots: doc.robots },
+      goal: 'completed and steps < 5000',
+      hints: ['Read section 5.', 'Press Play.'],
+    });
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
   test('a run that misses the goal is told why', async () => {
     const { page, context } = await openPage(s.browser, `${s.server.url}#${exerciseLink('completed and metrics.collisions < 0')}`);
     await page.$eval('#speed', (el) => {

@@ -24,7 +24,10 @@ pub struct Paper {
 }
 
 /// Every model's paper, in report order.
-pub const PAPERS: &[Paper] = &[crate::models::chobie::paper::PAPER];
+pub const PAPERS: &[Paper] = &[
+    crate::models::amas::paper::PAPER,
+    crate::models::chobie::paper::PAPER,
+];
 
 /// The paper of one model.
 pub fn paper(model: &str) -> Option<&'static Paper> {

@@ -413,6 +413,15 @@ impl Sim {
     }
 }
 
+/// What is wrong with an exercise goal (see `kumiki_core::exercise`), or undefined when it
+/// reads well: the teacher's editor validates as they type.
+#[wasm_bindgen]
+pub fn goal_problem(text: &str) -> Option<String> {
+    kumiki_core::exercise::Goal::parse(text)
+        .err()
+        .map(|e| e.to_string())
+}
+
 /// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance
 /// `model_query("cubes3d", "derive", '{"shape": "##\n##\n"}')`. Arguments and answer are JSON
 /// text; a bad argument is an error that names it.

@@ -42,6 +42,18 @@ pub enum Collision {
     Blackboard,
 }
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Communication {
+    /// Robots settle a whole chain of moves at once: a robot may follow one that leaves its
+    /// module even when that robot itself follows another.
+    #[default]
+    Chain,
+    /// Appendix A.1 (2): a robot hears the robots within two modules. It follows a robot that
+    /// leaves its module only when that robot moves onto a free module.
+    Radius2,
+}
+
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Spec {
@@ -78,6 +90,11 @@ pub struct Spec {
     pub relay_duration: u32,
     #[serde(default = "one")]
     pub collision_penalty: u32,
+    /// Appendix B: steps a turn (left, right or 180°) takes before a move in a new direction.
+    #[serde(default)]
+    pub turn_duration: u32,
+    #[serde(default)]
+    pub communication: Communication,
 }
 
 fn one() -> u32 {
@@ -118,6 +135,8 @@ pub struct Params {
     pub place_d: u32,
     pub relay_d: u32,
     pub penalty: u32,
+    pub turn_d: u32,
+    pub communication: Communication,
 }
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
@@ -372,6 +391,15 @@ pub fn read(spec: Spec) -> Result<Plan> {
         place_d: duration(spec.place_duration, "place_duration")?,
         relay_d: duration(spec.relay_duration, "relay_duration")?,
         penalty: duration(spec.collision_penalty, "collision_penalty")?,
+        turn_d: if spec.turn_duration <= MAX_DURATION {
+            spec.turn_duration
+        } else {
+            return Err(Error::field(
+                "turn_duration",
+                format!("must be from 0 to {MAX_DURATION} steps"),
+            ));
+        },
+        communication: spec.communication,
     };
     Ok(Plan {
         w,

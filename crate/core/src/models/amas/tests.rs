@@ -1,5 +1,11 @@
+use std::collections::VecDeque;
+
+use super::field::FAR;
+use super::state::{code, CLAIMED, CONVEYOR, FRONT, MODULE, SOURCE, VACANT};
+use super::view::action;
 use super::*;
 use crate::run::Run;
+use crate::scenario::Scenario;
 use proptest::prelude::*;
 
 const L: &str = "##....\n##....\n##....\n######\n######\n";
@@ -267,6 +273,36 @@ fn durations_slow_the_robots_down() {
 }
 
 #[test]
+fn turns_take_time_and_radius_two_communication_builds() {
+    let run = |body: Value| {
+        let mut m = model(body);
+        run_to_end(&mut m, 100000);
+        assert!(m.completed(), "{:?}", m.metrics());
+        m.steps
+    };
+    let base = run(json!({"robots": 1}));
+    assert!(run(json!({"robots": 1, "turn_duration": 2})) > base);
+    for collision in ["token", "relay", "blackboard"] {
+        run(json!({"robots": 4, "collision": collision, "communication": "radius2"}));
+    }
+}
+
+#[test]
+fn loaded_robots_fill_sites_beside_broken_modules() {
+    // Every built module breaks at step 6: no module announces the growth front any more.
+    for seed in 1..6 {
+        let mut m = model(json!({"robots": 3, "seed": seed, "field": "discrete"}));
+        for _ in 0..6 {
+            m.step();
+        }
+        m.apply(&action(json!({"kind": "break", "count": 1000})))
+            .unwrap();
+        run_to_end(&mut m, 200000);
+        assert!(m.completed(), "seed {seed}: {:?}", m.metrics());
+    }
+}
+
+#[test]
 fn same_seed_same_run_other_seed_other_run() {
     let out = |seed: u64| {
         let mut s = scenario(json!({"robots": 3}));
@@ -384,6 +420,13 @@ fn staged_targets_switch_and_keep_the_structure_connected() {
             // 16 + 8 + 8 placed; 8 + 4 taken away.
             assert_eq!(m.dismantled, 8 + 4);
             assert_eq!(structure(&m), 20);
+            // Dismantled modules are reused: the conveyor gives only what the final
+            // structure needs, and what robots still hold.
+            assert!(
+                m.picked <= 20 + 3,
+                "{collision} seed {seed}: {:?}",
+                m.metrics()
+            );
         }
     }
 }
@@ -516,6 +559,8 @@ proptest! {
         kind in 0usize..4,
         at in 5u64..80,
         count in 0u32..4,
+        radius2 in any::<bool>(),
+        turn in 0u32..3,
     ) {
         // Random shapes, kept connected by a full bottom row.
         let mut text = String::new();
@@ -532,6 +577,8 @@ proptest! {
             "field": field_name,
             "collision": collision_name,
             "field_updates_per_step": 2,
+            "communication": if radius2 { "radius2" } else { "chain" },
+            "turn_duration": turn,
             "disturbances": [{"at": at, "kind": kind, "count": count}]
         }));
         let Ok(s) = s else { return Ok(()); };
@@ -592,4 +639,20 @@ fn layout_describes_what_the_model_draws() {
         assert!(facts.contains_key("robot") && facts.contains_key("cell"));
         assert!(m.inspect(usize::MAX).is_empty());
     }
+}
+
+#[test]
+fn the_corner_is_the_row_where_the_target_narrows() {
+    // L: rows 0-2 are the stem (2 wide), rows 3-4 the foot (6 wide): the corner row is 2.
+    let m = model(json!({}));
+    assert_eq!(m.corner_row, 2);
+    // A rectangle never narrows: its top row.
+    let m = model(json!({"target": {"rect": [4, 3]}}));
+    assert_eq!(m.corner_row, 0);
+    // Robots that stay on the supply never pass it; relays are counted where they happen.
+    let mut m = model(json!({"robots": 3, "collision": "relay", "seed": 2}));
+    assert_eq!(m.metrics()["never_past_corner"], json!(1.0));
+    run_to_end(&mut m, 20000);
+    assert!(m.corner_relays <= m.relays);
+    assert!(m.metrics()["never_past_corner"].as_f64().unwrap() < 1.0);
 }

@@ -1,0 +1,252 @@
+//! Step phase 1, planning (5.1): robots plan one after another in a fresh random order; each
+//! reads the field on the module under it (footnote 3) and claims the cell it wants.
+
+use super::field::Field;
+use super::state::{ACTIVE_MASK, CLAIMED, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
+use super::{Amas, Collision, Plan, NONE, UNKNOWN};
+
+impl Amas {
+    /// How far module `j` is from where a robot wants to go: lower is better.
+    #[inline]
+    pub(super) fn cost(&self, j: usize, loaded: bool) -> f32 {
+        match &self.field {
+            Field::Discrete {
+                to_supply,
+                to_front,
+                ..
+            } => f32::from(if loaded { to_front[j] } else { to_supply[j] }),
+            Field::Continuous { p, .. } => {
+                if loaded {
+                    -p[j]
+                } else {
+                    p[j]
+                }
+            }
+        }
+    }
+
+    /// Blackboard (4.6.2): a module is engaged when a robot has written a plan on it, or a
+    /// robot stands on it that has not written a plan to leave it (or plans to come to `me`).
+    pub(super) fn engaged(&self, c: usize, me: usize) -> bool {
+        if self.state[c] & CLAIMED != 0 {
+            return true;
+        }
+        let o = self.occupant[c];
+        if o == NONE {
+            return false;
+        }
+        match (self.planned[o as usize], self.plans[o as usize]) {
+            (true, Plan::Move(t)) => t as usize == me,
+            _ => true,
+        }
+    }
+
+    pub(super) fn pick_random(&mut self, options: &[u32]) -> Option<u32> {
+        match options.len() {
+            0 => None,
+            1 => Some(options[0]),
+            n => Some(options[self.rng.index(n)]),
+        }
+    }
+
+    /// The module of lowest cost among `options`, ties broken at random.
+    pub(super) fn pick_lowest(&mut self, options: &[(u32, f32)]) -> Option<u32> {
+        let best = options
+            .iter()
+            .map(|&(_, c)| c)
+            .fold(f32::INFINITY, f32::min);
+        let mut pick = [0u32; 4];
+        let mut m = 0;
+        for &(j, c) in options {
+            if c == best {
+                pick[m] = j;
+                m += 1;
+            }
+        }
+        self.pick_random(&pick[..m])
+    }
+
+    /// The move the module under the robot shows it (footnote 3): towards the best neighbour,
+    /// or, with no effective gradient, a random neighbouring module. On a blackboard the robot
+    /// avoids engaged modules and takes the best free one.
+    pub(super) fn follow(&mut self, r: usize, i: usize, loaded: bool, board: bool) -> Plan {
+        let (nb, k) = self.neighbours(i);
+        let mut walk = [0u32; 4];
+        let mut nw = 0;
+        let mut valued = [(0u32, 0f32); 4];
+        let mut nv = 0;
+        for &j in &nb[..k] {
+            let s = self.state[j];
+            if s & MODULE == 0 || (board && self.engaged(j, i)) {
+                continue;
+            }
+            walk[nw] = j as u32;
+            nw += 1;
+            if s & MODULE != 0 {
+                valued[nv] = (j as u32, self.cost(j, loaded));
+                nv += 1;
+            }
+        }
+        // The gradient is judged on every neighbouring module's value, engaged or not; the
+        // module under the robot holds the last value each neighbour sent, broken or not.
+        let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
+        for &j in &nb[..k] {
+            if self.state[j] & MODULE != 0 {
+                let c = self.cost(j, loaded);
+                lo = lo.min(c);
+                hi = hi.max(c);
+            }
+        }
+        if hi - lo >= self.p.threshold && hi >= lo {
+            return self
+                .pick_lowest(&valued[..nv])
+                .map_or(Plan::Wait, Plan::Move);
+        }
+        self.robots[r].lost = true;
+        self.pick_random(&walk[..nw]).map_or(Plan::Wait, Plan::Move)
+    }
+
+    /// A robot that lost a collision steps, at its next plan, to the best module for itself
+    /// that no robot stands on: it moves on if the way has cleared, or aside if it has not.
+    pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Option<u32> {
+        let (nb, k) = self.neighbours(i);
+        let mut opts = [(0u32, 0f32); 4];
+        let mut n = 0;
+        for &j in &nb[..k] {
+            if self.state[j] & MODULE != 0 && self.occupant[j] == NONE {
+                let c = self.cost(j, loaded);
+                opts[n] = (j as u32, c);
+                n += 1;
+            }
+        }
+        self.pick_lowest(&opts[..n])
+    }
+
+    /// A vacant target site among `nb`, chosen at random; on a blackboard, not one another
+    /// robot has already claimed.
+    pub(super) fn vacant_site(&mut self, nb: &[usize], board: bool) -> Option<u32> {
+        let mut opts = [0u32; 4];
+        let mut n = 0;
+        for &j in nb {
+            let t = self.state[j];
+            if t & VACANT != 0 && !(board && t & CLAIMED != 0) {
+                opts[n] = j as u32;
+                n += 1;
+            }
+        }
+        self.pick_random(&opts[..n])
+    }
+
+    /// What robot `r` wants to do this step.
+    pub(super) fn decide(&mut self, r: usize) -> Plan {
+        let rb = self.robots[r];
+        let i = rb.cell as usize;
+        let s = self.state[i];
+        let board = self.p.collision == Collision::Blackboard;
+        self.robots[r].lost = false;
+        if rb.give_way {
+            self.robots[r].give_way = false;
+            if let Some(c) = self.give_way(i, rb.loaded) {
+                return Plan::Move(c);
+            }
+        }
+        if s & ACTIVE_MASK != MODULE {
+            // A broken module tells the robot nothing. A loaded robot still knows the target
+            // shape and its coordinates (4.1) and sees the sites next to it, so it fills a
+            // vacant target site beside it; otherwise it walks at random.
+            let (nb, k) = self.neighbours(i);
+            if rb.loaded {
+                if let Some(t) = self.vacant_site(&nb[..k], board) {
+                    return Plan::Place(t);
+                }
+            }
+            let mut walk = [0u32; 4];
+            let mut n = 0;
+            for &j in &nb[..k] {
+                if self.state[j] & MODULE != 0 && !(board && self.engaged(j, i)) {
+                    walk[n] = j as u32;
+                    n += 1;
+                }
+            }
+            self.robots[r].lost = true;
+            return self.pick_random(&walk[..n]).map_or(Plan::Wait, Plan::Move);
+        }
+        let (nb, k) = self.neighbours(i);
+        if rb.loaded {
+            if s & FRONT != 0 {
+                if s & CONVEYOR != 0 && self.return_mode {
+                    return Plan::Return;
+                }
+                if let Some(t) = self.vacant_site(&nb[..k], board) {
+                    return Plan::Place(t);
+                }
+                if board {
+                    return Plan::Wait;
+                }
+            }
+            return self.follow(r, i, true, board);
+        }
+        if s & SOURCE != 0 {
+            let mut opts = [0u32; 4];
+            let mut n = 0;
+            for &j in &nb[..k] {
+                let t = self.state[j];
+                if t & REMOVE != 0
+                    && self.is_releasable(j)
+                    && self.occupant[j] == NONE
+                    && !(board && t & CLAIMED != 0)
+                {
+                    opts[n] = j as u32;
+                    n += 1;
+                }
+            }
+            if n > 0 {
+                return self
+                    .pick_random(&opts[..n])
+                    .map_or(Plan::Wait, Plan::Remove);
+            }
+            if s & CONVEYOR != 0 && !self.return_mode && !self.reuse {
+                return Plan::Pick;
+            }
+        }
+        self.follow(r, i, false, board)
+    }
+
+    pub(super) fn claim(&mut self, c: usize) {
+        self.state[c] |= CLAIMED;
+        self.claimed.push(c as u32);
+    }
+
+    pub(super) fn plan_all(&mut self) {
+        self.rng.shuffle(&mut self.order);
+        for k in 0..self.order.len() {
+            let r = self.order[k] as usize;
+            self.position[r] = k as u32;
+            self.planned[r] = false;
+            self.status[r] = UNKNOWN;
+            self.relaying[r] = false;
+        }
+        for k in 0..self.order.len() {
+            let r = self.order[k] as usize;
+            let plan = if self.robots[r].busy > 0 {
+                self.robots[r].busy -= 1;
+                Plan::Busy
+            } else {
+                self.decide(r)
+            };
+            let plan = match plan {
+                Plan::Move(t) | Plan::Place(t) | Plan::Remove(t) => {
+                    if self.state[t as usize] & CLAIMED != 0 {
+                        Plan::Blocked(t)
+                    } else {
+                        self.claim(t as usize);
+                        plan
+                    }
+                }
+                other => other,
+            };
+            self.plans[r] = plan;
+            self.planned[r] = true;
+        }
+    }
+}
