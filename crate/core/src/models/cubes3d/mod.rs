@@ -118,6 +118,11 @@ struct Spec {
     light: Option<String>,
     #[serde(default = "default_stable_steps")]
     stable_steps: u32,
+    /// Model version 1 weighted its light-seeking term by this factor (a form the paper does not
+    /// give; see the docs' Interpretations). Every link made then carries it, so it is still
+    /// read, and ignored: such a link opens with the notice that results may differ.
+    #[serde(default, skip_serializing, rename = "light_priority")]
+    _light_priority: Option<f64>,
 }
 
 #[derive(Deserialize, Serialize)]
