@@ -3,6 +3,9 @@
 
 use super::*;
 
+/// The largest empty region, in cells, a motion is checked not to enclose.
+const HOLE_REACH: usize = 7;
+
 impl Fracta {
     /// Where the unit on `cell` with neighbours `mask` ends when it rolls about slot `pivot`, if
     /// it may. One 60° roll is legal by the rule of [`types::roll_ok`], with every swept cell
@@ -28,23 +31,41 @@ impl Fracta {
         None
     }
 
-    /// `Some(to)` unless the unit moving from `from` to `to` would leave an empty cell with a
-    /// unit on each of its six sides (with `no_holes`): the cell it leaves or an empty cell
-    /// beside the one it reaches. No rule can open such a ring again (its units are never
-    /// movable), so the low-level control does not close one.
+    /// `Some(to)` unless the unit moving from `from` to `to` would enclose empty cells (with
+    /// `no_holes`): the cell it leaves or an empty cell beside the one it reaches would then
+    /// belong to an empty region of at most [`HOLE_REACH`] cells that does not reach the
+    /// lattice's edge. No rule can open such a ring again (its units are never movable), so
+    /// the low-level control does not close one. Larger regions count as open, as a unit's
+    /// map of its surroundings is local.
     fn leaves_no_hole(&self, from: u32, to: u32) -> Option<u32> {
         if !self.p.no_holes {
             return Some(to);
         }
-        let filled = |c: u32| c == to || (c != from && self.occ[c as usize] != NO_UNIT);
-        let enclosed = |c: u32| {
-            self.nbr[c as usize]
-                .iter()
-                .all(|&j| j != NO_UNIT && filled(j))
+        let empty = |c: u32| c != to && (c == from || self.occ[c as usize] == NO_UNIT);
+        let enclosed = |seed: u32| {
+            let mut region = [NO_UNIT; HOLE_REACH];
+            region[0] = seed;
+            let (mut len, mut next) = (1, 0);
+            while next < len {
+                for &j in &self.nbr[region[next] as usize] {
+                    if j == NO_UNIT {
+                        return false;
+                    }
+                    if empty(j) && !region[..len].contains(&j) {
+                        if len == HOLE_REACH {
+                            return false;
+                        }
+                        region[len] = j;
+                        len += 1;
+                    }
+                }
+                next += 1;
+            }
+            true
         };
         let beside = self.nbr[to as usize]
             .iter()
-            .any(|&c| c != NO_UNIT && !filled(c) && enclosed(c));
+            .any(|&c| c != NO_UNIT && empty(c) && enclosed(c));
         if beside || enclosed(from) {
             None
         } else {
