@@ -22,7 +22,10 @@ pub enum Mode {
 
 /// Runs the experiments of `papers` on `threads` threads and returns their sections.
 pub fn sections(papers: &[&Paper], threads: usize) -> Result<Vec<Section>, Failure> {
-    let mut names: Vec<&str> = papers.iter().flat_map(|p| p.experiments.iter().copied()).collect();
+    let mut names: Vec<&str> = papers
+        .iter()
+        .flat_map(|p| p.experiments.iter().copied())
+        .collect();
     names.sort_unstable();
     names.dedup();
     let experiments = names
@@ -66,7 +69,11 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
         Some(m) => vec![reproduce::paper(m).ok_or_else(|| {
             Failure::Usage(format!(
                 "no paper is registered for model '{m}'; known: {}",
-                reproduce::PAPERS.iter().map(|p| p.model).collect::<Vec<_>>().join(", ")
+                reproduce::PAPERS
+                    .iter()
+                    .map(|p| p.model)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ))
         })?],
         None => reproduce::PAPERS.iter().collect(),

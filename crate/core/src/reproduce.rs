@@ -245,7 +245,11 @@ pub fn fmt(v: f64, digits: usize) -> String {
         return "n/a".into();
     }
     let s = format!("{v:.digits$}");
-    match s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+    match s
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
         true => s.trim_start_matches('-').to_string(),
         false => s,
     }
@@ -284,8 +288,16 @@ pub fn markdown(sections: &[Section]) -> String {
          stated** where the paper gives a figure or a behaviour but no comparison to judge.\n",
     );
     for s in sections {
-        let holds = s.findings.iter().filter(|f| f.verdict == Verdict::Holds).count();
-        let differs = s.findings.iter().filter(|f| f.verdict == Verdict::Differs).count();
+        let holds = s
+            .findings
+            .iter()
+            .filter(|f| f.verdict == Verdict::Holds)
+            .count();
+        let differs = s
+            .findings
+            .iter()
+            .filter(|f| f.verdict == Verdict::Differs)
+            .count();
         out.push_str(&format!(
             "\n## {} — {}\n\n{} claims: {} hold, {} differ, {} with no comparison stated. \
              Experiments: {}.\n\n\
@@ -407,7 +419,10 @@ mod tests {
     #[test]
     fn stats_match_hand_computed_values() {
         let s = Stats::of(&[4.0, 1.0, 3.0, 2.0]);
-        assert_eq!((s.n, s.mean, s.median, s.min, s.max), (4, 2.5, 2.5, 1.0, 4.0));
+        assert_eq!(
+            (s.n, s.mean, s.median, s.min, s.max),
+            (4, 2.5, 2.5, 1.0, 4.0)
+        );
         assert_eq!((s.q1, s.q3), (1.75, 3.25));
         assert!((s.sd - 1.290_994_448_735_805_6).abs() < 1e-12);
         assert_eq!(
