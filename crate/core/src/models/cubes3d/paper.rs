@@ -162,7 +162,7 @@ fn findings(results: &Results) -> Vec<Finding> {
         kumiki: format!("{} cells (ground as anchor)", end.describe(2)),
         runs: end.n,
         verdict: Verdict::NotStated,
-        note: "The paper's distance is withheld from our copy; the figure is Kumiki's own.".into(),
+        note: "Kumiki's own figure; no comparison is judged.".into(),
     });
 
     for (scenario, units) in [("cubes-box16-ladder", 16), ("cubes-box20-ladder", 20)] {
