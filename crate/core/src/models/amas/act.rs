@@ -70,6 +70,7 @@ impl Amas {
                     let t = t as usize;
                     if self.state[t] & VACANT != 0 {
                         self.put(t);
+                        self.robots[r].placed_past_corner |= t / self.w <= self.corner_row as usize;
                         self.robots[r].loaded = false;
                         self.robots[r].busy = self.p.place_d - 1;
                         self.placed += 1;

@@ -76,6 +76,7 @@ impl Amas {
                     give_way: false,
                     lost: false,
                     top: (cell / w) as u32,
+                    placed_past_corner: false,
                     heading: UP,
                 }
             })

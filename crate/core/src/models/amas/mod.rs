@@ -64,6 +64,8 @@ struct Robot {
     lost: bool,
     /// The highest row (smallest y) it has stood on.
     top: u32,
+    /// It has placed a module on the corner row or above it (figure 24).
+    placed_past_corner: bool,
     /// The direction it faces (see [`Amas::heading_to`]): a move another way turns first.
     heading: u8,
 }
@@ -234,6 +236,11 @@ impl Model for Amas {
         m.insert(
             "never_past_corner".into(),
             json!(below as f64 / self.robots.len() as f64),
+        );
+        let assemblers = self.robots.iter().filter(|r| r.placed_past_corner).count();
+        m.insert(
+            "corner_assemblers".into(),
+            json!(assemblers as f64 / self.robots.len() as f64),
         );
         m
     }

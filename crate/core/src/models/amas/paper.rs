@@ -190,24 +190,30 @@ fn fig24_findings(r: &Results, out: &mut Vec<Finding>) {
     let corner = r.stats("amas-fig24", &d_relay, "corner_relays");
     let relays = r.stats("amas-fig24", &d_relay, "relays");
     let never = r.stats("amas-fig24", &d_relay, "never_past_corner");
+    let assemblers = r.stats("amas-fig24", &d_relay, "corner_assemblers");
+    let token_assemblers = r.stats("amas-fig24", &sel("discrete", "token"), "corner_assemblers");
     out.push(finding(
         "§5.2, fig. 24",
         "With the discrete field and module relay, robots are spontaneously grouped into two \
          sets: the first carries modules to the corner, the second assembles the modules \
          received from the first.",
         format!(
-            "L, 10 robots: relays per run {}; of them at the corner {}; share of robots that \
-             never pass the corner {}",
+            "L, 10 robots, discrete field: share of robots that place modules at the corner row \
+             or above, with relay {}, with tokens {}; relays per run {}, of them at the corner \
+             {}; share of robots that never pass the corner {}",
+            assemblers.describe(2),
+            token_assemblers.describe(2),
             relays.describe(1),
             corner.describe(1),
             never.describe(2)
         ),
-        corner.n,
-        Verdict::NotStated,
-        "A relay is at the corner when the handing robot stands on the row where the L narrows \
-         or the row below it. Modules are handed over at the corner, but the groups are not \
-         fixed: nearly every robot passes the corner at some time of the run (the foot is built \
-         first, by everyone).",
+        assemblers.n + token_assemblers.n,
+        Verdict::from(assemblers.mean < token_assemblers.mean),
+        "Holds if, with relay, a smaller share of the robots assembles past the corner than with \
+         tokens (where every robot does). A relay is at the corner when the handing robot stands \
+         on the row where the L narrows or the row below it. The grouping is partial: most \
+         robots still place some stem modules, and nearly every robot passes the corner at some \
+         time, since everyone builds the foot first.",
     ));
     let mut text = Vec::new();
     let mut ok = true;

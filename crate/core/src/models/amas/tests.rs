@@ -655,4 +655,6 @@ fn the_corner_is_the_row_where_the_target_narrows() {
     run_to_end(&mut m, 20000);
     assert!(m.corner_relays <= m.relays);
     assert!(m.metrics()["never_past_corner"].as_f64().unwrap() < 1.0);
+    // Somebody placed the stem's modules.
+    assert!(m.metrics()["corner_assemblers"].as_f64().unwrap() > 0.0);
 }
