@@ -401,19 +401,12 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
         s.seed = seeds[i];
         let mut run = Run::new(s).expect("the scenario was validated");
         run.run_to_end();
-        let outcome = run.outcome();
-        Ok(Row {
-            scenario: outcome.scenario,
-            seed: outcome.seed,
-            completed: outcome.completed,
-            steps: outcome.steps,
-            hash: outcome.hash,
-            metrics: outcome.metrics,
-            params: params.clone(),
-            scenario_hash: scenario_hash.clone(),
-            version: PROGRAM_VERSION.into(),
-            trace: None,
-        })
+        Ok(Row::from_outcome(
+            run.outcome(),
+            params.clone(),
+            scenario_hash.clone(),
+            None,
+        ))
     })
 }
 

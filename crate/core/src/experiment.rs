@@ -84,6 +84,29 @@ pub struct Row {
     pub trace: Option<Trace>,
 }
 
+impl Row {
+    /// The row of a finished run, traced to its parameters, scenario and program.
+    pub fn from_outcome(
+        outcome: crate::run::Outcome,
+        params: Map<String, Value>,
+        scenario_hash: String,
+        trace: Option<Trace>,
+    ) -> Row {
+        Row {
+            scenario: outcome.scenario,
+            seed: outcome.seed,
+            completed: outcome.completed,
+            steps: outcome.steps,
+            hash: outcome.hash,
+            metrics: outcome.metrics,
+            params,
+            scenario_hash,
+            version: PROGRAM_VERSION.to_string(),
+            trace,
+        }
+    }
+}
+
 impl Experiment {
     pub fn from_json(text: &str) -> Result<Experiment> {
         let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
@@ -326,19 +349,12 @@ impl Experiment {
             trace
         });
         run.run_to_end();
-        let outcome = run.outcome();
-        Ok(Row {
-            scenario: outcome.scenario,
-            seed: outcome.seed,
-            completed: outcome.completed,
-            steps: outcome.steps,
-            hash: outcome.hash,
-            metrics: outcome.metrics,
-            params: canonical_params(&job.params),
+        Ok(Row::from_outcome(
+            run.outcome(),
+            canonical_params(&job.params),
             scenario_hash,
-            version: PROGRAM_VERSION.to_string(),
             trace,
-        })
+        ))
     }
 }
 

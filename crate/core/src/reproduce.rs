@@ -81,6 +81,26 @@ pub struct Finding {
     pub note: String,
 }
 
+impl Finding {
+    pub fn new(
+        section: &str,
+        claim: &str,
+        kumiki: String,
+        runs: usize,
+        verdict: Verdict,
+        note: &str,
+    ) -> Finding {
+        Finding {
+            section: section.into(),
+            claim: claim.into(),
+            kumiki,
+            runs,
+            verdict,
+            note: note.into(),
+        }
+    }
+}
+
 /// The rows of every experiment a paper reads, by experiment name, each in job order.
 #[derive(Clone, Debug, Default)]
 pub struct Results {

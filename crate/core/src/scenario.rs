@@ -33,17 +33,6 @@ pub const MAX_STEPS: u64 = 100_000_000;
 pub const MAX_NAME_CHARS: usize = 100;
 pub const MAX_DESCRIPTION_CHARS: usize = 4000;
 
-const ENVELOPE: [&str; 8] = [
-    "version",
-    "model",
-    "name",
-    "description",
-    "seed",
-    "max_steps",
-    "disturbances",
-    "exercise",
-];
-
 /// A model action scheduled at a step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Disturbance {
@@ -401,11 +390,6 @@ fn kind(v: &Value) -> &'static str {
         Value::Array(_) => "a list",
         Value::Object(_) => "an object",
     }
-}
-
-/// Names of the keys every scenario has, whatever its model.
-pub fn envelope_keys() -> &'static [&'static str] {
-    &ENVELOPE
 }
 
 #[cfg(test)]

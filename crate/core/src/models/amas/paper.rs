@@ -21,24 +21,6 @@ pub const PAPER: Paper = Paper {
 
 const FIELDS: [(&str, &str); 2] = [("continuous", "continuous"), ("discrete", "discrete")];
 
-fn finding(
-    section: &str,
-    claim: &str,
-    kumiki: String,
-    runs: usize,
-    verdict: Verdict,
-    note: &str,
-) -> Finding {
-    Finding {
-        section: section.into(),
-        claim: claim.into(),
-        kumiki,
-        runs,
-        verdict,
-        note: note.into(),
-    }
-}
-
 /// Figure 23's rows of one shape ("L" or "T") and field, a rule and a number of robots.
 fn fig23(r: &Results, shape: &str, field: &str, rule: &str, robots: u32, metric: &str) -> Stats {
     r.stats(
@@ -81,7 +63,7 @@ fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
             ten.describe(0)
         ));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 23",
         "When assembling the L-shaped structure, the efficiency suffers as the number of robots \
          is increased because of collisions.",
@@ -112,7 +94,7 @@ fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
         let ten = fig23(r, "L", field, "token", 10, "total_steps").mean;
         100.0 * (ten / one - 1.0)
     };
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 23",
         "The continuous field is better than the discrete field at high robot densities (the \
          discrete field concentrates every path at the corner of the L).",
@@ -139,7 +121,7 @@ fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
         ok &= t.mean < l.mean;
         text.push(format!("{name}: T {}, L {}", t.describe(0), l.describe(0)));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 23",
         "The T-shaped structure has two corners, the L-shaped structure one: the T suffers \
          fewer collisions.",
@@ -171,7 +153,7 @@ fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
             ));
         }
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 23",
         "Module relay prevents a chain of collisions while blackboard planning does not.",
         format!("total steps at 10 robots (mean ± sd): {}", text.join("; ")),
@@ -192,7 +174,7 @@ fn fig24_findings(r: &Results, out: &mut Vec<Finding>) {
     let never = r.stats("amas-fig24", &d_relay, "never_past_corner");
     let assemblers = r.stats("amas-fig24", &d_relay, "corner_assemblers");
     let token_assemblers = r.stats("amas-fig24", &sel("discrete", "token"), "corner_assemblers");
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 24",
         "With the discrete field and module relay, robots are spontaneously grouped into two \
          sets: the first carries modules to the corner, the second assembles the modules \
@@ -227,7 +209,7 @@ fn fig24_findings(r: &Results, out: &mut Vec<Finding>) {
             token.describe(0)
         ));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§5.2, fig. 24",
         "By dividing the labour, the frequency of collisions is decreased because the robots do \
          not need to go through the corner.",
@@ -270,7 +252,7 @@ fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         .iter()
         .flat_map(|s| r.values("amas-fig27", &[("scenario", json!(s))], "completed"))
         .collect();
-    out.push(finding(
+    out.push(Finding::new(
         "§5.3",
         "28 robots assemble a square of 28×28 modules; under normal conditions the task was \
          completed within [a figure the paper gives] steps.",
@@ -301,7 +283,7 @@ fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
     }
     let runs = done.len();
     let finished = done.iter().filter(|&&v| v == 1.0).count();
-    out.push(finding(
+    out.push(Finding::new(
         "§5.5, fig. 27",
         "Communication breakdown is more serious than module removal, because the robots cannot \
          restore the broken gradient field.",
@@ -359,7 +341,7 @@ fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
             plural(first),
         ));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§5.5, fig. 27",
         "When the number of disturbances does not exceed some threshold, efficiency is not much \
          affected by the disturbances.",
@@ -398,7 +380,7 @@ fn bridge_findings(r: &Results, out: &mut Vec<Finding>) {
         &[("scenario", json!("amas-bridge-staged"))],
         "dismantled",
     );
-    out.push(finding(
+    out.push(Finding::new(
         "§6.4, fig. 33",
         "The 35×15 bridge, five robots, discrete field with module relay, ten trials: assembly \
          using disassembly and reassembly takes fewer steps than normal assembly in one stage \
@@ -444,7 +426,7 @@ fn figb1_findings(r: &Results, out: &mut Vec<Finding>) {
             token.describe(0)
         ));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "App. B, fig. B.1",
         "The total steps to complete the L with ten robots, with and without module relay \
          (durations of one step).",
@@ -468,7 +450,7 @@ fn figb1_findings(r: &Results, out: &mut Vec<Finding>) {
         }
         text.push(format!("{field} — {}", parts.join(", ")));
     }
-    out.push(finding(
+    out.push(Finding::new(
         "App. B, fig. B.1",
         "As the collision penalty increases, total steps with and without module relay compare \
          differently against the duration of a relay.",

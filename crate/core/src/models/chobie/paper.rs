@@ -25,24 +25,6 @@ const CRAWLS: [&str; 4] = [
     "chobie-crawl9",
 ];
 
-fn finding(
-    section: &str,
-    claim: &str,
-    kumiki: String,
-    runs: usize,
-    verdict: Verdict,
-    note: &str,
-) -> Finding {
-    Finding {
-        section: section.into(),
-        claim: claim.into(),
-        kumiki,
-        runs,
-        verdict,
-        note: note.into(),
-    }
-}
-
 fn sum(v: &[f64]) -> f64 {
     v.iter().sum()
 }
@@ -75,7 +57,7 @@ fn crawl(r: &Results, out: &mut Vec<Finding>) {
         leaders.extend(temporary(s, "leaders"));
     }
     let one_cell = !per_cycle.is_empty() && per_cycle.iter().all(|c| (c - 1.0).abs() < 1e-9);
-    out.push(finding(
+    out.push(Finding::new(
         "§3.3, figs. 7, 9, 10",
         "Crawl motion with 3, 5, 7 and 9 robots was successfully demonstrated in all cases; the four forms move the whole structure by the unit length of a robot.",
         format!("cells moved per crawl cycle (4 transformations): {}", Stats::of(&per_cycle).describe(3)),
@@ -83,7 +65,7 @@ fn crawl(r: &Results, out: &mut Vec<Finding>) {
         Verdict::from(one_cell && failures == 0.0 && refused == 0.0),
         "40 transformations per run, n = 3, 5, 7, 9; distance is the move of the centre of mass along x",
     ));
-    out.push(finding(
+    out.push(Finding::new(
         "§3.3, figs. 7, 8",
         "In each form the three rules make one robot, at a position fixed by the form, the temporary leader; its kind tells the form and the line to drive.",
         format!(
@@ -109,7 +91,7 @@ fn crawl(r: &Results, out: &mut Vec<Finding>) {
     };
     let (n0, n1) = ends(&robots);
     let (p0, p1) = ends(&p_slots);
-    out.push(finding(
+    out.push(Finding::new(
         "§3.1, §3.3",
         "The temporary leader scheme is independent of the scale of the structure: it follows a simple local rule whatever the number of robots.",
         format!(
@@ -123,7 +105,7 @@ fn crawl(r: &Results, out: &mut Vec<Finding>) {
     let t_msg = rows("temporary", "messages_per_robot");
     let p_msg = rows("permanent", "messages_per_robot");
     let fewer = !t_msg.is_empty() && t_msg.iter().zip(&p_msg).all(|(t, p)| t < p);
-    out.push(finding(
+    out.push(Finding::new(
         "§1, §3.1",
         "The temporary leader decreases the amount of information communicated between the robots, compared with a leader that handles the whole structure's information.",
         format!(
@@ -137,7 +119,7 @@ fn crawl(r: &Results, out: &mut Vec<Finding>) {
     ));
     let slot = rows("temporary", "slot_us");
     let (s0, s1) = ends(&slot);
-    out.push(finding(
+    out.push(Finding::new(
         "§3.2",
         "Each time step must be longer than a signal's round trip between both ends of the structure (about 10 µs per robot).",
         format!("slot length needed: {s0:.0} µs at n = {n0} to {s1:.0} µs at n = {n1}"),
@@ -168,7 +150,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
         .iter()
         .flat_map(|f| pick(f, "first", false, "election_failures"))
         .collect();
-    out.push(finding(
+    out.push(Finding::new(
         "§IV, fig. 15",
         "Forms (b) and (c) have the problem that no leader is elected.",
         format!(
@@ -182,7 +164,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
     ));
     let leaders = pick("d", "first", false, "leaders");
     let moved = pick("d", "first", false, "distance");
-    out.push(finding(
+    out.push(Finding::new(
         "§IV, fig. 15",
         "In form (d) several leaders are elected at once; if their commands go different ways the transformation may be impossible.",
         format!(
@@ -198,7 +180,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
         .iter()
         .flat_map(|f| pick(f, "trial_and_error", false, "distance"))
         .collect();
-    out.push(finding(
+    out.push(Finding::new(
         "§IV, fig. 16",
         "The trial-and-error method, trying a second and a third algorithm when no leader is detected, makes forms (b) and (c) move.",
         format!("cells moved in 20 cycles: {}", Stats::of(&te).describe(1)),
@@ -222,7 +204,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
             }
         }
     }
-    out.push(finding(
+    out.push(Finding::new(
         "§IV, fig. 17",
         "The cautious method, which checks the structure's characteristics first, is thought to be more efficient than trial and error.",
         format!("slots per cycle, trial-and-error vs cautious: {}", text.join("; ")),
@@ -232,7 +214,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
     ));
     let fixed = pick("d", "first", true, "distance");
     let refused = pick("d", "first", true, "refused");
-    out.push(finding(
+    out.push(Finding::new(
         "§IV, fig. 18",
         "Checking leader kinds in a priority sequence avoids plural leaders of different kinds in form (d).",
         format!(
@@ -272,7 +254,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
         .iter()
         .filter(|&&m| m == 2.0)
         .count();
-    out.push(finding(
+    out.push(Finding::new(
         "§3.4, fig. 12",
         "When a robot's stress exceeds the threshold all robots switch to load-adaptation mode, and when the overload is done away with they switch back to bridge construction.",
         format!(
@@ -287,7 +269,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
     let with = r.values(e, &[("adaptation", Value::Bool(true))], "max_peak_stress");
     let without = r.values(e, &[("adaptation", Value::Bool(false))], "max_peak_stress");
     let lower = !with.is_empty() && with.iter().zip(&without).all(|(w, o)| w < o);
-    out.push(finding(
+    out.push(Finding::new(
         "§3.4, figs. 1, 11",
         "Load adaptation equalises the robots' stressed states: overloaded parts are thickened by other robots instead of the stress concentrating.",
         format!(
@@ -301,7 +283,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
     ));
     let span_with = r.values(e, &[("adaptation", Value::Bool(true))], "span");
     let span_without = r.values(e, &[("adaptation", Value::Bool(false))], "span");
-    out.push(finding(
+    out.push(Finding::new(
         "§3.4, fig. 11",
         "The lower tier slides right over the cliff and builds the bridge.",
         format!(
@@ -317,7 +299,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
     let moved = r.values(l, &[("adaptation", Value::Bool(true))], "energy");
     let idle = r.values(l, &[("adaptation", Value::Bool(false))], "energy");
     let left = r.values(l, &[("adaptation", Value::Bool(true))], "overloads");
-    out.push(finding(
+    out.push(Finding::new(
         "§3.4, figs. 13, 14",
         "With five robots, a load at the cantilever's end overloads robot B near the root, and robot A moves so that the stressed part becomes thick: load information is the trigger.",
         format!(
@@ -338,7 +320,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
         .zip(&theory)
         .map(|(f, t)| ((f - t) / t).abs())
         .fold(0.0, f64::max);
-    out.push(finding(
+    out.push(Finding::new(
         "§3.4 (strain gauges)",
         "The robots sense their stress with strain gauges; Kumiki computes it with a plane-frame model.",
         format!("largest relative difference between the frame's root stress and beam theory, cantilevers of 1–20 robots: {worst:.1e}"),
