@@ -5,7 +5,8 @@
 // change its layer, Space or Enter toggles a unit there. Undo and redo; the same shape as text
 // (cubic layers, read and written by the core). Shapes are applied through the page, which has the
 // core validate them: a refused shape stays on screen with the core's reason.
-import { Camera3D, type Hit } from '../render/camera';
+import { Camera3D, type Hit, cameraGestures } from '../render/camera';
+import { bindGestures } from '../render/gestures';
 import { createRenderer, type Renderer, type Scene } from '../render/renderer';
 import type { Frame, Layout, SceneInfo } from '../types';
 import { History } from '../store';
@@ -28,6 +29,8 @@ type Cell = [number, number, number];
 /** Free cells shown around the shape on each side, and above it. */
 const PAD = 2;
 const LONG_PRESS_MS = 550;
+/** A drag turns the view once it has moved this many pixels, so a shaky click stays a click. */
+const DRAG_SLOP = 4;
 const UNIT_COLOR = '#5b8fd0';
 const LAYER_COLOR = '#2fb7a4';
 
@@ -53,8 +56,7 @@ export class VoxelEditor {
   private focused = false;
   private scheduled = false;
   private fitted = false;
-  private readonly pointers = new Map<number, { x: number; y: number }>();
-  private drag = { moved: 0, pinch: 0, mid: null as { x: number; y: number } | null, longPress: 0, longPressed: false };
+  private gestures: { destroy(): void } | null = null;
   private readonly canvas: HTMLCanvasElement;
   private readonly wrap: HTMLElement;
   private readonly status: HTMLElement;
@@ -199,7 +201,7 @@ export class VoxelEditor {
   destroy() {
     this.destroyed = true;
     this.resizeObserver.disconnect();
-    window.clearTimeout(this.drag.longPress);
+    this.gestures?.destroy();
     this.renderer?.destroy();
     clear(this.root);
   }
@@ -493,89 +495,40 @@ export class VoxelEditor {
 
   private bind() {
     const c = this.canvas;
-    const local = (e: PointerEvent | WheelEvent) => {
-      const r = c.getBoundingClientRect();
-      return { x: e.clientX - r.left, y: e.clientY - r.top };
-    };
-    const removing = (e: PointerEvent) => this.tool === 'remove' || e.altKey || e.button === 2;
-    c.addEventListener('contextmenu', (e) => e.preventDefault());
-    c.addEventListener('pointerdown', (e) => {
-      c.setPointerCapture(e.pointerId);
-      c.focus({ preventScroll: true });
-      const p = local(e);
-      this.pointers.set(e.pointerId, p);
-      this.drag.moved = 0;
-      this.drag.longPressed = false;
-      this.drag.pinch = this.pinchDistance();
-      this.drag.mid = this.pinchMiddle();
-      window.clearTimeout(this.drag.longPress);
-      if (e.pointerType !== 'mouse' && this.pointers.size === 1) {
-        // A long press on touch or pen removes the unit under it.
-        this.drag.longPress = window.setTimeout(() => {
-          if (this.drag.moved >= 8 || this.pointers.size !== 1) return;
-          const t = this.target(p.x, p.y, true);
-          this.drag.longPressed = true;
+    const camera = cameraGestures(() => this.camera, () => this.request());
+    this.gestures = bindGestures(
+      c,
+      {
+        press: () => c.focus({ preventScroll: true }),
+        drag: (dx, dy, kind, at) => {
+          this.pointerCursor = null;
+          camera.drag(dx, dy, kind, at);
+        },
+        zoom: camera.zoom,
+        tap: (at, button, mods) => {
+          const removing = this.tool === 'remove' || mods.altKey || button === 2;
+          const t = this.target(at.x, at.y, removing);
           if (t) this.act(t);
-        }, LONG_PRESS_MS);
-      }
-    });
-    c.addEventListener('pointermove', (e) => {
-      const p = local(e);
-      const prev = this.pointers.get(e.pointerId);
-      if (!prev) {
-        const t = this.target(p.x, p.y, this.tool === 'remove' || e.altKey);
-        this.pointerCursor = t;
-        this.hint.textContent = t ? this.describe(t) : '';
-        this.request();
-        return;
-      }
-      this.pointers.set(e.pointerId, p);
-      if (this.pointers.size === 2) {
-        const d = this.pinchDistance();
-        const mid = this.pinchMiddle();
-        if (this.drag.pinch > 0 && d > 0) this.camera.zoom(d / this.drag.pinch);
-        if (this.drag.mid && mid) this.camera.pan(mid.x - this.drag.mid.x, mid.y - this.drag.mid.y);
-        this.drag.pinch = d;
-        this.drag.mid = mid;
-        this.drag.moved += 10;
-      } else {
-        const dx = p.x - prev.x;
-        const dy = p.y - prev.y;
-        this.drag.moved += Math.abs(dx) + Math.abs(dy);
-        if (this.drag.moved < 4) return;
-        this.pointerCursor = null;
-        if (e.shiftKey || e.buttons === 2 || e.buttons === 4) this.camera.pan(dx, dy);
-        else this.camera.orbit(dx, dy);
-      }
-      this.request();
-    });
-    const end = (e: PointerEvent) => {
-      const p = this.pointers.get(e.pointerId);
-      this.pointers.delete(e.pointerId);
-      window.clearTimeout(this.drag.longPress);
-      if (e.type === 'pointerup' && p && this.drag.moved < 6 && this.pointers.size === 0 && !this.drag.longPressed) {
-        const t = this.target(p.x, p.y, removing(e));
-        if (t) this.act(t);
-        else if (removing(e)) this.hint.textContent = 'Nothing to remove there.';
-      }
-      this.drag.pinch = this.pinchDistance();
-      this.drag.mid = this.pinchMiddle();
-    };
-    c.addEventListener('pointerup', end);
-    c.addEventListener('pointercancel', end);
-    c.addEventListener('pointerleave', () => {
-      this.pointerCursor = null;
-      this.hint.textContent = '';
-      this.request();
-    });
-    c.addEventListener(
-      'wheel',
-      (e) => {
-        e.preventDefault();
-        this.camera.zoom(Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015)));
-        this.request();
+          else if (removing) this.hint.textContent = 'Nothing to remove there.';
+        },
+        // A long press on touch or pen removes the unit under it.
+        longPress: (at) => {
+          const t = this.target(at.x, at.y, true);
+          if (t) this.act(t);
+        },
+        hover: (at, mods) => {
+          const t = this.target(at.x, at.y, this.tool === 'remove' || mods.altKey);
+          this.pointerCursor = t;
+          this.hint.textContent = t ? this.describe(t) : '';
+          this.request();
+        },
+        leave: () => {
+          this.pointerCursor = null;
+          this.hint.textContent = '';
+          this.request();
+        },
       },
-      { passive: false },
+      { dragSlop: DRAG_SLOP, longPressMs: LONG_PRESS_MS },
     );
     c.addEventListener('focus', () => {
       this.focused = true;
@@ -659,18 +612,6 @@ export class VoxelEditor {
     const [x, y, z] = this.cellOf(t.cell);
     return `${t.kind === 'add' ? 'add a unit' : 'remove the unit'} at (${x}, ${y}), layer ${z + 1}`;
   }
-
-  private pinchDistance(): number {
-    if (this.pointers.size !== 2) return 0;
-    const [a, b] = [...this.pointers.values()];
-    return Math.hypot(a.x - b.x, a.y - b.y);
-  }
-
-  private pinchMiddle(): { x: number; y: number } | null {
-    if (this.pointers.size !== 2) return null;
-    const [a, b] = [...this.pointers.values()];
-    return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
-  }
 }
 
 /** Lowers a shape so that its lowest layer is the ground (layers are written from the ground up). */
@@ -732,6 +673,7 @@ function emptyFrame(n: number): Frame {
     bonds: null,
     stepsPerSecond: 0,
     scene: null,
+    chart: null,
   };
 }
 

@@ -1,0 +1,374 @@
+//! The scenario keys of the model, their defaults and their checks: a description is checked
+//! whole, within the scenario's limits, before anything is built.
+
+use serde::{Deserialize, Serialize};
+
+use super::motion::PAD;
+use super::typelist::{self, TypeList};
+use super::{actions, types, Cubes};
+use crate::error::{Error, Result};
+use crate::limits::Limits;
+use crate::models::{self, Action, Model};
+use crate::shape::{self, Grid3};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Selection {
+    /// Equations 7 and 8: P_i ∝ exp(-D_i / T), T = c / log(1 + t).
+    Mrf,
+    /// Every option (staying included) equally likely.
+    Random,
+    /// The option of least difference, ties broken at random.
+    Steepest,
+}
+
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize, schemars::JsonSchema,
+)]
+pub enum Ground {
+    /// No ground: free space on every side.
+    #[default]
+    #[serde(rename = "none")]
+    Open,
+    /// A plane under the lowest layer of the shape that units cannot pass.
+    #[serde(rename = "floor")]
+    Floor,
+    /// As `floor`, and units touching the plane are fixed to it (section 6).
+    #[serde(rename = "fixed")]
+    Fixed,
+    /// As `floor`, and the plane holds the units touching it (a support), which may still move.
+    #[serde(rename = "anchor")]
+    Anchor,
+}
+
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(rename = "Cubes3dSpec")]
+pub struct Spec {
+    /// The initial configuration: cubic-lattice text layers from the ground up, at least two
+    /// units, connected face to face.
+    pub(super) shape: String,
+    /// The targets, the first one worked toward first (section 6 switches between them).
+    #[schemars(length(min = 1, max = Limits::PAGE.cubes3d.targets))]
+    pub(super) targets: Vec<TargetSpec>,
+    /// The choice rule of step 4.
+    #[serde(default = "default_selection")]
+    pub(super) selection: Selection,
+    /// W of equation 4, above 0.
+    #[serde(default = "default_w")]
+    pub(super) w: f64,
+    /// a of equation 5, above 0.
+    #[serde(default = "default_a")]
+    pub(super) a: f64,
+    /// C of equation 8, above 0.
+    #[serde(default = "default_c")]
+    pub(super) c: f64,
+    /// The movable connection types (section 3.3).
+    #[serde(default = "default_movable")]
+    pub(super) movable: Vec<String>,
+    /// Units moving per step (footnote 2).
+    #[serde(default = "one")]
+    #[schemars(range(min = 1, max = 1024))]
+    pub(super) movers: u32,
+    /// Least Manhattan distance between the movers of one step.
+    #[serde(default = "default_mover_distance")]
+    #[schemars(range(min = 1, max = 1000))]
+    pub(super) mover_distance: u32,
+    /// Free cells around the shapes.
+    #[serde(default = "default_margin")]
+    #[schemars(range(max = 200))]
+    pub(super) margin: u32,
+    /// A ground plane under the lowest layer.
+    #[serde(default)]
+    pub(super) ground: Ground,
+    /// The direction in which the light source lies: +x, -x, +y, -y, +z or -z.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) light: Option<String>,
+    /// t_stable of section 6: steps a unit stays under its target's threshold before it switches.
+    #[serde(default = "default_stable_steps")]
+    #[schemars(range(min = 1))]
+    pub(super) stable_steps: u32,
+    /// Model version 1 weighted its light-seeking term by this factor (a form the paper does not
+    /// give; see the docs' Interpretations). Every link made then carries it, so it is still
+    /// read, and ignored: such a link opens with the notice that results may differ.
+    #[serde(default, skip_serializing, rename = "light_priority")]
+    _light_priority: Option<f64>,
+}
+
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TargetSpec {
+    #[serde(default)]
+    pub(super) name: String,
+    /// The target's type-lists, `C31[C41, C31, C31]` and so on.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) type_lists: Option<String>,
+    /// A cubic shape drawn as a ghost; without `type_lists` they are derived from it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) shape: Option<String>,
+    /// D_th: a unit under it for `stable_steps` switches to the next target (0 never does).
+    #[serde(default)]
+    #[schemars(range(min = 0.0))]
+    pub(super) threshold: f64,
+    /// Hold a unit that sees the light when it switches to this target (needs `light`).
+    #[serde(default)]
+    pub(super) hold_lit: bool,
+}
+
+/// A description whose every key is checked: the shapes and type-lists read from their text,
+/// and the space they need.
+pub struct Checked {
+    pub(super) spec: Spec,
+    pub(super) movable_types: u16,
+    pub(super) light: Option<usize>,
+    pub(super) shape: Grid3,
+    pub(super) target_lists: Vec<Vec<TypeList>>,
+    pub(super) target_shapes: Vec<Option<Grid3>>,
+    pub(super) dims: [u32; 3],
+    /// Margin cells under the shape (none on a ground plane).
+    pub(super) below: u32,
+    /// The most units the structure may grow to by added units.
+    pub(super) max_units: usize,
+}
+
+impl Spec {
+    /// Checks the parameters that need no shape: answers the movable types as a bit set and the
+    /// light direction.
+    fn check(&self) -> Result<(u16, Option<usize>)> {
+        check_positive("w", self.w)?;
+        check_positive("a", self.a)?;
+        check_positive("c", self.c)?;
+        if self.stable_steps == 0 {
+            return Err(Error::field("stable_steps", "must be at least 1"));
+        }
+        if self.movers == 0 || self.movers > 1024 {
+            return Err(Error::field("movers", "must be from 1 to 1024"));
+        }
+        if self.mover_distance == 0 || self.mover_distance > 1000 {
+            return Err(Error::field("mover_distance", "must be from 1 to 1000"));
+        }
+        if self.margin > 200 {
+            return Err(Error::field("margin", "must be at most 200 cells"));
+        }
+        let mut movable_types = 0u16;
+        for (i, name) in self.movable.iter().enumerate() {
+            let code = types::code(name).ok_or_else(|| {
+                Error::field(
+                    format!("movable[{i}]"),
+                    format!(
+                        "unknown connection type '{name}'; known: {}",
+                        types::known_names()
+                    ),
+                )
+            })?;
+            movable_types |= 1 << code;
+        }
+        let light = self.light.as_deref().map(light_dir).transpose()?;
+        Ok((movable_types, light))
+    }
+}
+
+impl models::Spec for Spec {
+    type Checked = Checked;
+
+    fn validate(&self, limits: &Limits) -> Result<Checked> {
+        let max = limits.cubes3d;
+        let (movable_types, light) = self.check()?;
+
+        let shape = parse_shape(&self.shape, "shape", limits)?;
+        if shape.count() > max.units {
+            return Err(Error::field(
+                "shape",
+                format!("{} units exceed the limit of {}", shape.count(), max.units),
+            ));
+        }
+        if self.targets.is_empty() {
+            return Err(Error::field("targets", "give at least one target"));
+        }
+        if self.targets.len() > max.targets {
+            return Err(Error::field(
+                "targets",
+                format!(
+                    "{} targets are too many; at most {}",
+                    self.targets.len(),
+                    max.targets
+                ),
+            ));
+        }
+        let mut target_shapes: Vec<Option<Grid3>> = Vec::new();
+        let mut target_lists: Vec<Vec<TypeList>> = Vec::new();
+        for (i, t) in self.targets.iter().enumerate() {
+            let path = format!("targets[{i}]");
+            let g = t
+                .shape
+                .as_deref()
+                .map(|s| parse_shape(s, &format!("{path}.shape"), limits))
+                .transpose()?;
+            let lists =
+                match (&t.type_lists, &g) {
+                    (Some(text), _) => typelist::parse(text)
+                        .map_err(|e| e.within(&format!("{path}.type_lists")))?,
+                    (None, Some(g)) => typelist::describe_grid(g)
+                        .map_err(|e| e.within(&format!("{path}.shape")))?,
+                    (None, None) => {
+                        return Err(Error::field(
+                            path,
+                            "give type_lists, a shape to derive them from, or both",
+                        ))
+                    }
+                };
+            if !(t.threshold.is_finite() && t.threshold >= 0.0) {
+                return Err(Error::field(
+                    format!("{path}.threshold"),
+                    "must be a finite number of at least 0",
+                ));
+            }
+            if t.hold_lit && light.is_none() {
+                return Err(Error::field(
+                    format!("{path}.hold_lit"),
+                    "needs a light direction (the light key)",
+                ));
+            }
+            target_lists.push(lists);
+            target_shapes.push(g);
+        }
+
+        // The space: the largest shape plus the margin on every side (none under a ground plane),
+        // plus the padding.
+        let m = self.margin;
+        let mut ext = [shape.w, shape.h, shape.d];
+        for g in target_shapes.iter().flatten() {
+            ext = [ext[0].max(g.w), ext[1].max(g.h), ext[2].max(g.d)];
+        }
+        let grounded = self.ground != Ground::Open;
+        let below = if grounded { 0 } else { m };
+        let dims = [
+            2 * PAD + 2 * m + ext[0],
+            2 * PAD + 2 * m + ext[1],
+            2 * PAD + below + m + ext[2],
+        ];
+        let cells = dims.iter().map(|&d| u64::from(d)).product::<u64>();
+        if dims.iter().any(|&d| d > max.side) || cells > max.cells {
+            return Err(Error::field(
+                "shape",
+                format!(
+                    "the space the shapes need with margin {m} ({}×{}×{} cells) exceeds the limit of {} per side and {} cells",
+                    dims[0], dims[1], dims[2], max.side, max.cells
+                ),
+            ));
+        }
+        if !face_connected(&typelist::grid_units(&shape)) {
+            return Err(Error::field(
+                "shape",
+                "the units are not all connected; every unit must touch the others face to face",
+            ));
+        }
+        Ok(Checked {
+            spec: self.clone(),
+            movable_types,
+            light,
+            shape,
+            target_lists,
+            target_shapes,
+            dims,
+            below,
+            max_units: max.units,
+        })
+    }
+
+    fn check_action(checked: &Checked, action: &Action) -> Result<()> {
+        let cells = checked.dims.iter().map(|&d| d as usize).product();
+        actions::check_form(action, cells, checked.spec.targets.len())
+    }
+
+    fn build(checked: Checked, seed: u64) -> Box<dyn Model> {
+        Box::new(Cubes::from_checked(checked, seed))
+    }
+}
+
+/// The units form one piece, face to face.
+fn face_connected(units: &[(i32, i32, i32)]) -> bool {
+    let occupied: std::collections::HashSet<(i32, i32, i32)> = units.iter().copied().collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut stack: Vec<(i32, i32, i32)> = units.first().copied().into_iter().collect();
+    seen.extend(stack.iter().copied());
+    while let Some((x, y, z)) = stack.pop() {
+        for (dx, dy, dz) in [
+            (1, 0, 0),
+            (-1, 0, 0),
+            (0, 1, 0),
+            (0, -1, 0),
+            (0, 0, 1),
+            (0, 0, -1),
+        ] {
+            let n = (x + dx, y + dy, z + dz);
+            if occupied.contains(&n) && seen.insert(n) {
+                stack.push(n);
+            }
+        }
+    }
+    seen.len() == occupied.len()
+}
+
+fn default_selection() -> Selection {
+    Selection::Mrf
+}
+fn default_w() -> f64 {
+    3.0
+}
+fn default_a() -> f64 {
+    1.0
+}
+fn default_c() -> f64 {
+    10.0
+}
+fn default_movable() -> Vec<String> {
+    vec!["C1".into(), "C21".into(), "C31".into()]
+}
+fn one() -> u32 {
+    1
+}
+fn default_mover_distance() -> u32 {
+    7
+}
+fn default_margin() -> u32 {
+    8
+}
+fn default_stable_steps() -> u32 {
+    30
+}
+
+pub(super) fn light_dir(text: &str) -> Result<usize> {
+    const NAMES: [&str; 6] = ["+x", "-x", "+y", "-y", "+z", "-z"];
+    NAMES.iter().position(|n| *n == text).ok_or_else(|| {
+        Error::field(
+            "light",
+            format!(
+                "'{text}' is not a direction; use one of {}",
+                NAMES.join(", ")
+            ),
+        )
+    })
+}
+
+pub(super) fn check_positive(name: &str, v: f64) -> Result<()> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::field(
+            name,
+            format!("must be a positive finite number, not {v}"),
+        ))
+    }
+}
+
+fn parse_shape(text: &str, path: &str, limits: &Limits) -> Result<Grid3> {
+    let g = shape::parse_cubic_within(text, limits).map_err(|e| e.within(path))?;
+    if g.count() < 2 {
+        return Err(Error::field(
+            path,
+            "needs at least two units ('#' cells): a lone unit has no connection type and cannot move",
+        ));
+    }
+    Ok(g)
+}
