@@ -20,7 +20,12 @@ impl Chobie {
         let mut comm = Comm::default();
         if self.p.task == Task::Bridge {
             let overloaded: Vec<u32> = self.overloaded_robots();
-            comm.flood(&self.body, &overloaded, kind::OVERLOAD);
+            comm.flood(
+                &self.body,
+                &overloaded,
+                kind::OVERLOAD,
+                "mode: a robot over its threshold announces an overload",
+            );
             self.mode = if self.p.adaptation && !overloaded.is_empty() {
                 Mode::Adaptation
             } else {
@@ -33,8 +38,7 @@ impl Chobie {
             Leader::Temporary => self.elect(&mut comm),
             Leader::Permanent => self.direct(&mut comm),
         };
-        let mut drives = Vec::new();
-        let mut opened = false;
+        let mut orders = Vec::new();
         for e in &leaders {
             let (lines, route) = e.command(&self.body, self.mode);
             if lines.is_empty() {
@@ -44,16 +48,12 @@ impl Chobie {
             if self.body.check(&lines).is_err() {
                 continue;
             }
-            if self.p.leader == Leader::Temporary {
-                if !opened {
-                    // Route, which robots drive, direction: three slots shared by all leaders.
-                    comm.slots += 3;
-                    opened = true;
-                }
-                self.send_command(&mut comm, e, &lines, route);
-            }
-            drives.extend(lines);
+            orders.push((e.robot, lines, route));
         }
+        if self.p.leader == Leader::Temporary && !orders.is_empty() {
+            self.send_commands(&mut comm, &orders);
+        }
+        let drives: Vec<Drive> = orders.into_iter().flat_map(|o| o.1).collect();
         let mut last = Last {
             leaders,
             ..Last::default()
@@ -73,7 +73,12 @@ impl Chobie {
                     last.driven = moving.iter().map(|m| m.0).collect();
                     last.moved = true;
                     let senders = last.driven.clone();
-                    comm.flood(&self.body, &senders, kind::ANNOUNCE);
+                    comm.flood(
+                        &self.body,
+                        &senders,
+                        kind::ANNOUNCE,
+                        "completion: the robots that moved signal the end of the move",
+                    );
                 }
                 Err(_) => self.totals.refused += 1,
             }
@@ -85,6 +90,7 @@ impl Chobie {
         last.slots = comm.slots;
         last.messages = comm.messages;
         last.signals = comm.signals;
+        last.trace = comm.trace;
         self.last = last;
         self.solve();
     }
@@ -102,40 +108,42 @@ impl Chobie {
                 all.retain(|e| e.kind == Kind::TopRight);
                 all
             }
-            Mode::Crawl => match self.p.method {
-                Method::First => election::three_rule(body, comm),
-                Method::TrialAndError => {
-                    let first = election::three_rule(body, comm);
-                    if !first.is_empty() {
-                        first
-                    } else {
-                        self.totals.election_failures += 1;
-                        comm.slot();
-                        election::all_directions(body, comm);
-                        let second = election::row_end(body);
-                        if !second.is_empty() {
-                            second
+            Mode::Crawl => {
+                match self.p.method {
+                    Method::First => election::three_rule(body, comm),
+                    Method::TrialAndError => {
+                        let first = election::three_rule(body, comm);
+                        if !first.is_empty() {
+                            first
                         } else {
                             self.totals.election_failures += 1;
-                            comm.slot();
+                            comm.slot("trial and error: no leader; every robot starts the second algorithm");
                             election::all_directions(body, comm);
-                            election::corner(body)
+                            let second = election::row_end(body);
+                            if !second.is_empty() {
+                                second
+                            } else {
+                                self.totals.election_failures += 1;
+                                comm.slot("trial and error: no leader; every robot starts the third algorithm");
+                                election::all_directions(body, comm);
+                                election::corner(body)
+                            }
                         }
                     }
-                }
-                Method::Cautious => {
-                    // The first two slots give every robot its neighbours and the rule-2
-                    // signals; then one slot per algorithm, in order, until one has a leader.
-                    let first = election::three_rule(body, comm);
-                    let tries = [first, election::row_end(body), election::corner(body)];
-                    let found = tries.iter().position(|t| !t.is_empty());
-                    let checks = found.map_or(tries.len(), |i| i + 1);
-                    for _ in 1..checks {
-                        comm.slot();
+                    Method::Cautious => {
+                        // The first two slots give every robot its neighbours and the rule-2
+                        // signals; then one slot per algorithm, in order, until one has a leader.
+                        let first = election::three_rule(body, comm);
+                        let tries = [first, election::row_end(body), election::corner(body)];
+                        let found = tries.iter().position(|t| !t.is_empty());
+                        let checks = found.map_or(tries.len(), |i| i + 1);
+                        for _ in 1..checks {
+                            comm.slot("cautious: the next algorithm's leader test");
+                        }
+                        found.map(|i| tries[i].clone()).unwrap_or_default()
                     }
-                    found.map(|i| tries[i].clone()).unwrap_or_default()
                 }
-            },
+            }
         };
         let leaders = self.announce(comm, leaders);
         if leaders.is_empty() {
@@ -161,25 +169,51 @@ impl Chobie {
                 order.iter().position(|&o| o == k).unwrap_or(0)
             });
             for _ in 0..silent {
-                comm.slot();
+                comm.slot("priority sequence: no leader of this kind");
             }
             leaders.retain(|e| Some(e.kind) == best);
         }
         let origins: Vec<u32> = leaders.iter().map(|e| e.robot).collect();
-        comm.flood(&self.body, &origins, kind::ANNOUNCE);
+        comm.flood(
+            &self.body,
+            &origins,
+            kind::ANNOUNCE,
+            "announcement: the leaders make themselves known",
+        );
         leaders
     }
 
-    /// The messages of one leader's command: the route from the leader to its first line, a
-    /// signal along every driven line (which robots drive), and again along the lines driven
-    /// right or up (the direction slot: a signal means right or up, silence left or down).
-    fn send_command(&self, comm: &mut Comm, e: &Elected, lines: &[Drive], route: u64) {
-        comm.send(&self.body, e.robot, route, kind::COMMAND);
-        for line in lines {
-            let n = line.robots.len() as u64;
-            let positive = matches!(line.dir, RIGHT | UP);
-            let on = if positive { 2 * n } else { n };
-            comm.send(&self.body, line.robots[0], on, kind::COMMAND);
+    /// The drive command in three slots shared by all leaders: the route from each leader to
+    /// its first line, a signal along every driven line (which robots drive), and again along
+    /// the lines driven right or up (the direction slot: a signal means right or up, silence
+    /// left or down).
+    fn send_commands(&self, comm: &mut Comm, orders: &[(u32, Vec<Drive>, u64)]) {
+        let body = &self.body;
+        comm.slot("command, route: each leader signals the way to its first line");
+        for (leader, _, route) in orders {
+            comm.send_along(body, *leader, *route, kind::COMMAND);
+        }
+        comm.slot("command, drive: a signal runs along every line that drives");
+        for line in orders.iter().flat_map(|o| &o.1) {
+            comm.send_along(
+                body,
+                line.robots[0],
+                line.robots.len() as u64,
+                kind::COMMAND,
+            );
+        }
+        comm.slot(
+            "command, direction: a signal along a line means right or up, silence left or down",
+        );
+        for line in orders.iter().flat_map(|o| &o.1) {
+            if matches!(line.dir, RIGHT | UP) {
+                comm.send_along(
+                    body,
+                    line.robots[0],
+                    line.robots.len() as u64,
+                    kind::COMMAND,
+                );
+            }
         }
     }
 
@@ -200,8 +234,11 @@ impl Chobie {
         }
         let faces = body.degree(self.permanent).max(1) as u64;
         let gather = ((body.len() as u64 - 1) * bits).div_ceil(faces).max(1);
-        comm.slots += gather;
-        comm.send(body, self.permanent, sent, kind::GATHER);
+        comm.open(
+            gather,
+            "baseline: every robot reports its cell to the permanent leader, bit by bit",
+        );
+        comm.send_along(body, self.permanent, sent, kind::GATHER);
         let mut scratch = Comm::default();
         let mut leaders = match self.mode {
             Mode::Adaptation => {
@@ -247,7 +284,10 @@ impl Chobie {
         let n = body.len().max(2) as u32;
         let id_bits = (32 - (n - 1).leading_zeros()) as u64;
         let robots: u64 = drives.iter().map(|d| d.robots.len() as u64).sum();
-        comm.slots += robots * id_bits + 1;
+        comm.open(
+            robots * id_bits + 1,
+            "baseline: the permanent leader floods the driving robots' ids and the direction",
+        );
         let flood: u64 = (0..body.len() as u32).map(|r| body.degree(r) as u64).sum();
         let ones: u64 = drives
             .iter()
@@ -257,7 +297,7 @@ impl Chobie {
             + drives
                 .first()
                 .map_or(0, |d| matches!(d.dir, RIGHT | UP) as u64);
-        comm.send(body, self.permanent, ones * flood, kind::COMMAND);
+        comm.send_along(body, self.permanent, ones * flood, kind::COMMAND);
     }
 
     pub(super) fn overloaded(&self, stress: f64) -> bool {

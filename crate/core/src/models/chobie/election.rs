@@ -93,12 +93,15 @@ pub struct Elected {
 /// heard from right (a robot hearing both ways picks those).
 pub fn three_rule(body: &Body, comm: &mut Comm) -> Vec<Elected> {
     all_directions(body, comm);
-    comm.slot();
+    comm.slot(RULE_2);
     let vertical = |r: u32| body.has(r, UP) || body.has(r, DOWN);
     for r in 0..body.len() as u32 {
         if !vertical(r) {
-            let sent = [LEFT, RIGHT].iter().filter(|&&d| body.has(r, d)).count();
-            comm.send(body, r, sent as u64, kind::ELECTION);
+            let faces = [LEFT, RIGHT]
+                .iter()
+                .filter(|&&d| body.has(r, d))
+                .fold(0u8, |m, &d| m | 1 << d);
+            comm.send_toward(body, r, faces, kind::ELECTION);
         }
     }
     let mut out = Vec::new();
@@ -128,9 +131,14 @@ pub fn three_rule(body: &Body, comm: &mut Comm) -> Vec<Elected> {
     out
 }
 
+/// The meanings of the election's slots, as the page shows them.
+pub const RULE_1: &str = "election, rule 1: every robot signals in all four directions";
+pub const RULE_2: &str =
+    "election, rule 2: robots that heard from top or bottom fall silent; the others signal left and right";
+
 /// Slot 1 of every election: each robot lights all four faces.
 pub fn all_directions(body: &Body, comm: &mut Comm) {
-    comm.slot();
+    comm.slot(RULE_1);
     for r in 0..body.len() as u32 {
         comm.send(body, r, body.degree(r) as u64, kind::ELECTION);
     }
@@ -169,17 +177,17 @@ pub fn corner(body: &Body) -> Vec<Elected> {
 ///
 /// Two slots: the right-edge signal, then the leftward relay.
 pub fn adaptation(body: &Body, overloaded: &[bool], comm: &mut Comm) -> Vec<Elected> {
-    comm.slot();
+    comm.slot("load adaptation, step 2: each robot on the right edge signals to bottom");
     let from_top = |r: u32| {
         let t = body.nbr(r, UP);
         t != NONE && !body.has(t, RIGHT)
     };
     for r in 0..body.len() as u32 {
         if !body.has(r, RIGHT) && body.has(r, DOWN) {
-            comm.send(body, r, 1, kind::CHAIN);
+            comm.send_toward(body, r, 1 << DOWN, kind::CHAIN);
         }
     }
-    comm.slot();
+    comm.slot("load adaptation, steps 3-6: overloaded robots relay the signal left to leader 2");
     let mut out = Vec::new();
     let mut leader2 = vec![false; body.len()];
     for r in 0..body.len() as u32 {
@@ -199,7 +207,7 @@ pub fn adaptation(body: &Body, overloaded: &[bool], comm: &mut Comm) -> Vec<Elec
             if left == NONE {
                 break;
             }
-            comm.send(body, cur, 1, kind::CHAIN);
+            comm.send_toward(body, cur, 1 << LEFT, kind::CHAIN);
             if from_top(left) {
                 leader2[left as usize] = true;
                 break;

@@ -119,6 +119,10 @@ pub fn solve(
             band = band.max(3 * ri.abs_diff(rj) + 2);
         }
     }
+    // Every element runs right or down one cell (see [`elements`]): two stiffness matrices.
+    let right = element_matrix(m, 1.0, 0.0);
+    let down = element_matrix(m, 0.0, -1.0);
+    let stiffness = |s: f64| if s == 0.0 { &right } else { &down };
     let mut k = Banded::new(dofs, band);
     let dir = |i: u32, j: u32| {
         let (xi, yi) = pos[i as usize];
@@ -130,11 +134,9 @@ pub fn solve(
         r => Some(3 * r + d),
     };
     for &(i, j) in elems {
-        let (c, s) = dir(i, j);
-        let ke = element_matrix(m, c, s);
-        let map: Vec<Option<usize>> = (0..6)
-            .map(|a| dof(if a < 3 { i } else { j }, a % 3))
-            .collect();
+        let ke = stiffness(dir(i, j).1);
+        let map: [Option<usize>; 6] =
+            std::array::from_fn(|a| dof(if a < 3 { i } else { j }, a % 3));
         for a in 0..6 {
             for b in 0..6 {
                 if let (Some(p), Some(q)) = (map[a], map[b]) {
@@ -170,19 +172,11 @@ pub fn solve(
     let mut stress = vec![0.0f64; n];
     for &(i, j) in elems {
         let (c, s) = dir(i, j);
-        let ke = element_matrix(m, c, s);
-        let u: Vec<f64> = disp[i as usize]
-            .iter()
-            .chain(disp[j as usize].iter())
-            .copied()
-            .collect();
-        let fg: Vec<f64> = (0..6)
-            .map(|a| (0..6).map(|b| ke[a][b] * u[b]).sum())
-            .collect();
+        let ke = stiffness(s);
+        let u: [f64; 6] = std::array::from_fn(|a| disp[if a < 3 { i } else { j } as usize][a % 3]);
+        let fg: [f64; 6] = std::array::from_fn(|a| (0..6).map(|b| ke[a][b] * u[b]).sum());
         let t = rotation(c, s);
-        let fl: Vec<f64> = (0..6)
-            .map(|a| (0..6).map(|b| t[a][b] * fg[b]).sum())
-            .collect();
+        let fl: [f64; 6] = std::array::from_fn(|a| (0..6).map(|b| t[a][b] * fg[b]).sum());
         let axial = fl[3];
         let (mi, mj) = (fl[2], fl[5]);
         forces.push([axial, mi, mj]);
@@ -197,7 +191,8 @@ pub fn solve(
     })
 }
 
-/// A symmetric banded matrix, lower band stored row by row: `a[i][i - j]` for j ≤ i.
+/// A symmetric banded matrix, lower band stored column by column: entry (i, j), j ≤ i ≤ j + b,
+/// at `j·(b + 1) + (i − j)`, so each column of the band is one contiguous slice.
 struct Banded {
     n: usize,
     b: usize,
@@ -215,7 +210,7 @@ impl Banded {
     }
 
     fn at(&self, i: usize, j: usize) -> usize {
-        i * (self.b + 1) + (i - j)
+        j * (self.b + 1) + (i - j)
     }
 
     fn add(&mut self, i: usize, j: usize, v: f64) {
@@ -223,31 +218,63 @@ impl Banded {
         self.a[p] += v;
     }
 
-    /// In-place Cholesky factorisation, L Lᵀ; None if not positive definite. Row i of the band
-    /// holds L(i, i - q) at `i·(b + 1) + q`, so the dot product of two rows' overlapping parts
-    /// runs over two contiguous slices.
+    /// In-place Cholesky factorisation, L Lᵀ; None if not positive definite. Column by column
+    /// (left-looking): column j of L is its column of the matrix less L(j, k)·(column k of L)
+    /// for every earlier column k whose L(j, k) is not zero, subtracted in order of k, four
+    /// columns per pass over the target so that it is loaded and stored once per four. The
+    /// loops carry no running sum, so they vectorise as written, with the same operations in
+    /// the same order on every target.
     fn factor(&mut self) -> Option<()> {
-        let b = self.b;
-        for i in 0..self.n {
-            let lo = i.saturating_sub(b);
-            let ri = self.at(i, i);
-            for j in lo..=i {
-                let rj = self.at(j, j);
-                let len = j - lo;
-                let dot = dot(
-                    &self.a[ri + i - j + 1..ri + i - j + 1 + len],
-                    &self.a[rj + 1..rj + 1 + len],
-                );
-                let p = self.at(i, j);
-                let sum = self.a[p] - dot;
-                if i == j {
-                    if sum <= 0.0 || !sum.is_finite() {
-                        return None;
-                    }
-                    self.a[p] = sum.sqrt();
-                } else {
-                    self.a[p] = sum / self.a[rj];
+        let (n, b, w) = (self.n, self.b, self.b + 1);
+        let mut from: Vec<(usize, f64)> = Vec::with_capacity(b);
+        for j in 0..n {
+            let m = b.min(n - 1 - j);
+            let (done, rest) = self.a.split_at_mut(j * w);
+            let col = &mut rest[..m + 1];
+            from.clear();
+            from.extend(
+                (j.saturating_sub(b)..j)
+                    .map(|k| (k, done[k * w + (j - k)]))
+                    .filter(|&(_, l)| l != 0.0),
+            );
+            // Column k holds rows k..=min(k + b, n - 1); from row j on, that is `len(k)` entries.
+            let source = |k: usize| &done[k * w + (j - k)..k * w + b.min(n - 1 - k) + 1];
+            let mut groups = from.chunks_exact(4);
+            for g in groups.by_ref() {
+                let [(k0, l0), (k1, l1), (k2, l2), (k3, l3)] = [g[0], g[1], g[2], g[3]];
+                let (s0, s1, s2, s3) = (source(k0), source(k1), source(k2), source(k3));
+                // Lengths grow with k: all four columns reach the first s0.len() rows.
+                let common = s0.len();
+                for ((((t, &x0), &x1), &x2), &x3) in col[..common]
+                    .iter_mut()
+                    .zip(s0)
+                    .zip(&s1[..common])
+                    .zip(&s2[..common])
+                    .zip(&s3[..common])
+                {
+                    *t = (((*t - l0 * x0) - l1 * x1) - l2 * x2) - l3 * x3;
                 }
+                for (t, target) in col.iter_mut().enumerate().take(s3.len()).skip(common) {
+                    for (s, l) in [(s1, l1), (s2, l2), (s3, l3)] {
+                        if let Some(&x) = s.get(t) {
+                            *target -= l * x;
+                        }
+                    }
+                }
+            }
+            for &(k, l) in groups.remainder() {
+                for (t, &x) in col.iter_mut().zip(source(k)) {
+                    *t -= l * x;
+                }
+            }
+            let d = col[0];
+            if d <= 0.0 || !d.is_finite() {
+                return None;
+            }
+            let d = d.sqrt();
+            col[0] = d;
+            for v in &mut col[1..] {
+                *v /= d;
             }
         }
         Some(())
@@ -255,22 +282,22 @@ impl Banded {
 
     /// Solves L Lᵀ x = f in place.
     fn solve(&self, f: &mut [f64]) {
-        let b = self.b;
-        for i in 0..self.n {
-            let lo = i.saturating_sub(b);
-            let ri = self.at(i, i);
-            let dot: f64 = self.a[ri + 1..ri + 1 + (i - lo)]
-                .iter()
-                .rev()
-                .zip(&f[lo..i])
-                .map(|(x, y)| x * y)
-                .sum();
-            f[i] = (f[i] - dot) / self.a[ri];
+        let w = self.b + 1;
+        for k in 0..self.n {
+            let m = self.b.min(self.n - 1 - k);
+            let col = &self.a[k * w..k * w + m + 1];
+            let x = f[k] / col[0];
+            f[k] = x;
+            if x != 0.0 {
+                for (t, &l) in f[k + 1..=k + m].iter_mut().zip(&col[1..]) {
+                    *t -= x * l;
+                }
+            }
         }
-        for i in (0..self.n).rev() {
-            let hi = (i + b).min(self.n - 1);
-            let dot: f64 = (i + 1..=hi).map(|k| self.a[self.at(k, i)] * f[k]).sum();
-            f[i] = (f[i] - dot) / self.a[self.at(i, i)];
+        for k in (0..self.n).rev() {
+            let m = self.b.min(self.n - 1 - k);
+            let col = &self.a[k * w..k * w + m + 1];
+            f[k] = (f[k] - dot(&col[1..], &f[k + 1..=k + m])) / col[0];
         }
     }
 }

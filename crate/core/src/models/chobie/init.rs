@@ -1,12 +1,13 @@
-//! The model built from its scenario.
+//! The scenario's description checked, and the model built from it.
 
+use super::actions;
 use super::election::{Kind, Mode};
 use super::motion::Body;
-use super::spec::{self, Mechanics, Spec, Task};
+use super::spec::{self, Mechanics, Spec, Task, World};
 use super::{Chobie, Last, Params, Totals};
 use crate::error::Result;
-use crate::models;
-use crate::scenario::Scenario;
+use crate::limits::Limits;
+use crate::models::{self, Action, Model};
 
 /// The priority sequence of figure 18, highest first: the vertical commands (lift the left
 /// end, lower the right end) before the horizontal ones. Figure 18 is not in the text; of the
@@ -19,24 +20,60 @@ pub const PRIORITY: [Kind; 4] = [
     Kind::BottomLeft,
 ];
 
-/// The largest goal, in cells.
-pub const MAX_GOAL: u32 = 100_000;
+/// A description whose every key is checked, with its world read from the text.
+pub struct Checked {
+    spec: Spec,
+    world: World,
+    mech: Mechanics,
+    tip_load: f64,
+    hop_us: f64,
+}
 
-impl Chobie {
-    pub fn new(scenario: &Scenario) -> Result<Chobie> {
-        let s: Spec = models::body(scenario)?;
-        let world = spec::parse_world(&s.world, s.extend)?;
-        let mech = Mechanics::from_spec(&s)?;
-        let tip_load = spec::non_negative("tip_load", s.tip_load, 1e7)?;
-        let hop_us = spec::positive("hop_us", s.hop_us, 1e9)?;
-        if let Some(g) = s.goal {
-            if g == 0 || g > MAX_GOAL {
+impl models::Spec for Spec {
+    type Checked = Checked;
+
+    fn validate(&self, limits: &Limits) -> Result<Checked> {
+        let world = spec::parse_world(&self.world, self.extend, limits)?;
+        let mech = Mechanics::from_spec(self)?;
+        let tip_load = spec::non_negative("tip_load", self.tip_load, 1e7)?;
+        let hop_us = spec::positive("hop_us", self.hop_us, 1e9)?;
+        if let Some(g) = self.goal {
+            let max_goal = limits.chobie.goal;
+            if g == 0 || g > max_goal {
                 return Err(crate::Error::field(
                     "goal",
-                    format!("must be from 1 to {MAX_GOAL} cells"),
+                    format!("must be from 1 to {max_goal} cells"),
                 ));
             }
         }
+        Ok(Checked {
+            spec: self.clone(),
+            world,
+            mech,
+            tip_load,
+            hop_us,
+        })
+    }
+
+    fn check_action(_: &Checked, action: &Action) -> Result<()> {
+        actions::check_load(action)
+    }
+
+    fn build(checked: Checked, _seed: u64) -> Box<dyn Model> {
+        Box::new(Chobie::from_checked(checked))
+    }
+}
+
+impl Chobie {
+    /// The model at step 0. Nothing in it is random, so it takes no seed.
+    pub fn from_checked(checked: Checked) -> Chobie {
+        let Checked {
+            spec: s,
+            world,
+            mech,
+            tip_load,
+            hop_us,
+        } = checked;
         let body = Body::from_world(&world);
         let lowest = body.pos.iter().map(|p| p.1).max().unwrap_or(0);
         let left = body
@@ -68,6 +105,7 @@ impl Chobie {
                 order: PRIORITY,
             },
             loads: vec![0.0; n],
+            held: 0.0,
             mode: match s.task {
                 Task::Crawl => Mode::Crawl,
                 Task::Bridge => Mode::Construction,
@@ -82,6 +120,6 @@ impl Chobie {
             worst: 0.0,
         };
         model.solve();
-        Ok(model)
+        model
     }
 }

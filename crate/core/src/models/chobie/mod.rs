@@ -12,7 +12,7 @@
 //! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
 //! - [`paper`]: the paper's claims beside the experiments' figures.
 
-use crate::models::{self, Event, ModelEntry};
+use crate::models::{self, Event, ModelEntry, ModelSpec};
 
 pub mod actions;
 pub mod cycle;
@@ -37,9 +37,10 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "chobie",
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
-    model_version: 1,
-    build: |s| Ok(Box::new(Chobie::new(s)?)),
-    normalize: models::normalized::<spec::Spec>,
+    model_version: 2,
+    parse: |body| models::parse(body, ModelSpec::Chobie),
+    #[cfg(feature = "schema")]
+    schema: crate::schema::of::<spec::Spec>,
 };
 
 /// The checked parameters a run uses.
@@ -81,6 +82,8 @@ pub struct Last {
     pub leaders: Vec<Elected>,
     pub driven: Vec<u32>,
     pub signals: Vec<Event>,
+    /// The transformation's slots in order, with their senders.
+    pub trace: Vec<signals::Slot>,
     pub slots: u64,
     pub messages: u64,
     pub moved: bool,
@@ -92,6 +95,8 @@ pub struct Chobie {
     p: Params,
     /// Applied loads per robot, newtons downward (the tip load comes on top).
     loads: Vec<f64>,
+    /// A load lifted by the move tool and not yet put down, newtons.
+    held: f64,
     mode: Mode,
     steps: u64,
     totals: Totals,

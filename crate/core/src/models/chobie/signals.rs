@@ -19,6 +19,18 @@ pub mod kind {
     pub const GATHER: u8 = 5;
 }
 
+/// One entry of a transformation's slot trace: what the slot means and who sent in it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Slot {
+    /// The slot's meaning, as the page shows it.
+    pub meaning: &'static str,
+    /// How many time slots this entry stands for (the baseline's bit-serial transfers take many).
+    pub count: u64,
+    /// Per sender: its cell and the faces it lit, bit `d` for lattice direction `d` (right, up,
+    /// left, down); no bit when the signal's way is not modelled face by face.
+    pub senders: Vec<(u32, u8)>,
+}
+
 /// The slots and messages of one transformation, and who sent what.
 #[derive(Clone, Debug, Default)]
 pub struct Comm {
@@ -26,16 +38,47 @@ pub struct Comm {
     pub messages: u64,
     /// One event per robot that sent in a slot, for the page.
     pub signals: Vec<Event>,
+    /// Slot by slot, in order.
+    pub trace: Vec<Slot>,
 }
 
 impl Comm {
-    /// Opens a slot.
-    pub fn slot(&mut self) {
-        self.slots += 1;
+    /// Opens a slot with the given meaning.
+    pub fn slot(&mut self, meaning: &'static str) {
+        self.open(1, meaning);
     }
 
-    /// Records that robot `r` sent `messages` signals in the current slot.
+    /// Opens `count` consecutive slots that share one meaning (one trace entry).
+    pub fn open(&mut self, count: u64, meaning: &'static str) {
+        self.slots += count;
+        self.trace.push(Slot {
+            meaning,
+            count,
+            senders: Vec::new(),
+        });
+    }
+
+    /// Records that robot `r` sent `messages` signals in the current slot, on every face it
+    /// shares with a neighbour.
     pub fn send(&mut self, body: &Body, r: u32, messages: u64, kind: u8) {
+        let faces = (0..4)
+            .filter(|&d| body.has(r, d))
+            .fold(0, |m, d| m | 1 << d);
+        self.record(body, r, messages, faces, kind);
+    }
+
+    /// Records that robot `r` sent one signal through each face in `faces` (a direction mask).
+    pub fn send_toward(&mut self, body: &Body, r: u32, faces: u8, kind: u8) {
+        self.record(body, r, faces.count_ones() as u64, faces, kind);
+    }
+
+    /// Records that robot `r` sent `messages` signals along a path (a route or a line) rather
+    /// than through chosen faces.
+    pub fn send_along(&mut self, body: &Body, r: u32, messages: u64, kind: u8) {
+        self.record(body, r, messages, 0, kind);
+    }
+
+    fn record(&mut self, body: &Body, r: u32, messages: u64, faces: u8, kind: u8) {
         if messages == 0 {
             return;
         }
@@ -46,13 +89,16 @@ impl Comm {
                 cell: i as u32,
                 kind,
             });
+            if let Some(slot) = self.trace.last_mut() {
+                slot.senders.push((i as u32, faces));
+            }
         }
     }
 
     /// One slot in which a signal from `origins` is relayed to every robot: each robot, on first
     /// hearing it, lights all its faces once.
-    pub fn flood(&mut self, body: &Body, origins: &[u32], kind: u8) {
-        self.slot();
+    pub fn flood(&mut self, body: &Body, origins: &[u32], kind: u8, meaning: &'static str) {
+        self.slot(meaning);
         if origins.is_empty() {
             return;
         }

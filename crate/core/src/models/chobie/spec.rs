@@ -1,19 +1,14 @@
 //! The scenario body of the CHOBIE II model: its parameters, their limits, and the world text
 //! (terrain and robots) read into a typed plan.
 
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-
-/// The largest lattice side accepted, in cells (the world text plus `extend`).
-pub const MAX_SIDE: u32 = 2048;
-/// The most robots a world may hold. The stress solve of every step costs about
-/// robots × (3 × robots across the short side)² operations, so a square block of this many
-/// robots takes a fraction of a second per step; more would freeze the page.
-pub const MAX_ROBOTS: usize = 5_000;
+use crate::limits::Limits;
 
 /// What the robots do.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Task {
     /// Section 3.3: crawl to the right by successive transformations.
@@ -24,7 +19,7 @@ pub enum Task {
 }
 
 /// Who decides which line drives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Leader {
     /// Section 3.1: a temporary leader elected by local signals after every transformation.
@@ -35,7 +30,7 @@ pub enum Leader {
 }
 
 /// How the crawl copes with initial forms the first algorithm cannot handle (section IV).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
     /// Only the three-rule election of section 3.3.
@@ -47,18 +42,23 @@ pub enum Method {
     Cautious,
 }
 
-#[derive(Clone, Debug, Deserialize, Serialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(rename = "ChobieSpec")]
 pub struct Spec {
     /// The side view, top row first: `=` terrain (ground and cliff), `#` a robot, `.` empty.
     pub world: String,
     /// Empty columns added on the right, each a copy of the rightmost column's terrain.
     #[serde(default)]
+    #[schemars(range(max = Limits::PAGE.chobie.side))]
     pub extend: u32,
+    /// What the robots do: crawl (section 3.3) or build a bridge (3.4).
     #[serde(default)]
     pub task: Task,
+    /// Who decides which line drives.
     #[serde(default)]
     pub leader: Leader,
+    /// How the crawl copes with forms the first algorithm cannot handle (section IV).
     #[serde(default)]
     pub method: Method,
     /// Figure 18: check leader kinds in a fixed priority sequence, so one kind commands.
@@ -73,6 +73,7 @@ pub struct Spec {
     pub construction: bool,
     /// Completed when the crawl has moved this many cells, or the bridge spans this many cells.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(range(min = 1, max = Limits::PAGE.chobie.goal))]
     pub goal: Option<u32>,
     /// A downward load on the bridge's tip robot (the rightmost of the lowest row), newtons.
     #[serde(default)]
@@ -227,8 +228,10 @@ impl World {
     }
 }
 
-/// Reads the world text; errors name the line and column (counted in the text as written).
-pub fn parse_world(text: &str, extend: u32) -> Result<World> {
+/// Reads the world text within `limits`; errors name the line and column (counted in the text as
+/// written).
+pub fn parse_world(text: &str, extend: u32, limits: &Limits) -> Result<World> {
+    let max_side = u64::from(limits.chobie.side);
     let lines: Vec<&str> = text.lines().map(str::trim_end).collect();
     let first = lines.iter().position(|l| !l.is_empty());
     let last = lines.iter().rposition(|l| !l.is_empty());
@@ -266,10 +269,10 @@ pub fn parse_world(text: &str, extend: u32) -> Result<World> {
     let text_w = rows.iter().map(Vec::len).max().unwrap_or(0);
     let w = text_w as u64 + extend as u64;
     let h = rows.len() as u64;
-    if w > MAX_SIDE as u64 || h > MAX_SIDE as u64 {
+    if w > max_side || h > max_side {
         return Err(Error::field(
             "world",
-            format!("the world is {w}×{h} cells (extend included); at most {MAX_SIDE} a side"),
+            format!("the world is {w}×{h} cells (extend included); at most {max_side} a side"),
         ));
     }
     let mut tiles = Vec::with_capacity((w * h) as usize);
@@ -291,12 +294,12 @@ pub fn parse_world(text: &str, extend: u32) -> Result<World> {
         h: h as u32,
         tiles,
     };
-    check_world(&world, first)?;
+    check_world(&world, first, limits.chobie.robots)?;
     Ok(world)
 }
 
 /// The robots form one piece and at least one rests on the terrain.
-fn check_world(world: &World, first_line: usize) -> Result<()> {
+fn check_world(world: &World, first_line: usize, max_robots: usize) -> Result<()> {
     let robots: Vec<(i32, i32)> = (0..world.h as i32)
         .flat_map(|y| (0..world.w as i32).map(move |x| (x, y)))
         .filter(|&(x, y)| world.get(x, y) == Tile::Robot)
@@ -307,10 +310,10 @@ fn check_world(world: &World, first_line: usize) -> Result<()> {
             "there is no robot; draw robots with '#'",
         ));
     }
-    if robots.len() > MAX_ROBOTS {
+    if robots.len() > max_robots {
         return Err(Error::field(
             "world",
-            format!("{} robots; at most {MAX_ROBOTS}", robots.len()),
+            format!("{} robots are too many; at most {max_robots}", robots.len()),
         ));
     }
     let mut seen = vec![false; world.tiles.len()];

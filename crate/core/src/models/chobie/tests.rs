@@ -9,6 +9,18 @@ use crate::models::Model;
 use crate::scenario::Scenario;
 use serde_json::json;
 
+impl Chobie {
+    /// The model of a test scenario, built the way a run builds it.
+    fn new(s: &Scenario) -> crate::Result<Chobie> {
+        let crate::models::ModelSpec::Chobie(spec) = &s.spec else {
+            panic!("not a chobie scenario");
+        };
+        Ok(Chobie::from_checked(crate::models::Spec::validate(
+            spec, s.limits,
+        )?))
+    }
+}
+
 fn scenario(world: &str, extra: serde_json::Value) -> Scenario {
     let mut v = json!({
         "version": 1, "model": "chobie", "name": "t", "description": "", "seed": 1,
@@ -118,7 +130,7 @@ fn parameters_are_checked() {
 
 #[test]
 fn extend_copies_the_rightmost_terrain_column() {
-    let w = spec::parse_world("#.\n==\n", 3).unwrap();
+    let w = spec::parse_world("#.\n==\n", 3, &crate::Limits::PAGE).unwrap();
     assert_eq!(w.w, 5);
     assert_eq!(w.get(4, 1), spec::Tile::Ground);
     assert_eq!(w.get(4, 0), spec::Tile::Empty);
@@ -403,6 +415,9 @@ fn loads_are_checked_and_stay_with_their_robot() {
         .unwrap_err()
         .to_string()
         .starts_with("force:"));
+    // The form is checked whatever the state (a recorded click must read as valid from step
+    // 0); the cell is checked when the action is applied.
+    assert!(m.check_action(&load(json!([0]), 10.0)).is_ok());
     assert_eq!(
         m.apply(&load(json!([0]), 10.0)).unwrap_err().to_string(),
         "cells[0]: cell 0 holds no robot"
@@ -412,6 +427,72 @@ fn loads_are_checked_and_stay_with_their_robot() {
     assert!(m.peak() > before);
     m.apply(&load(json!([6]), 0.0)).unwrap();
     assert!((m.peak() - before).abs() < 1e-9 * before);
+}
+
+#[test]
+fn the_move_tool_lifts_a_load_and_puts_it_down_and_unload_takes_it_off() {
+    let mut m = model(
+        "....\n###.\n=...\n",
+        json!({"task": "bridge", "construction": false}),
+    );
+    let act = |v: serde_json::Value| v.as_object().unwrap().clone();
+    let bare = m.peak();
+    m.apply(&act(json!({"kind": "load", "cells": [5], "force": 40.0})))
+        .unwrap();
+    let near = m.peak();
+    assert_eq!(
+        m.apply(&act(json!({"kind": "move", "cells": [6]})))
+            .unwrap_err()
+            .to_string(),
+        "cells[0]: the robot at cell 6 carries no load to move"
+    );
+    m.apply(&act(json!({"kind": "move", "cells": [5]})))
+        .unwrap();
+    assert_eq!(m.held, 40.0);
+    assert!((m.peak() - bare).abs() < 1e-9 * bare);
+    m.apply(&act(json!({"kind": "move", "cells": [6]})))
+        .unwrap();
+    assert_eq!((m.held, m.loads[1], m.loads[2]), (0.0, 0.0, 40.0));
+    // Further out on the cantilever, the same load stresses the root more.
+    assert!(m.peak() > near);
+    m.apply(&act(json!({"kind": "unload", "cells": [6]})))
+        .unwrap();
+    assert!((m.peak() - bare).abs() < 1e-9 * bare);
+}
+
+#[test]
+fn the_slot_trace_names_every_slot_and_its_senders() {
+    let preset = crate::presets::scenario("chobie-crawl5").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    step_checked(&mut m);
+    let trace = &m.last.trace;
+    assert_eq!(
+        trace.iter().map(|s| s.count).sum::<u64>(),
+        m.last.slots,
+        "one entry per slot"
+    );
+    let meanings: Vec<&str> = trace.iter().map(|s| s.meaning).collect();
+    assert_eq!(meanings[0], election::RULE_1);
+    assert_eq!(meanings[1], election::RULE_2);
+    for word in ["announcement", "route", "drive", "direction", "completion"] {
+        assert!(
+            meanings.iter().any(|m| m.contains(word)),
+            "{word} in {meanings:?}"
+        );
+    }
+    // Rule 1: every robot lights each face it shares; rule 2: only the robots with no
+    // vertical neighbour send, and only left or right.
+    assert_eq!(trace[0].senders.len(), m.body.len());
+    assert!(trace[1]
+        .senders
+        .iter()
+        .all(|&(_, faces)| faces != 0 && faces & (1 << UP | 1 << DOWN) == 0));
+    let messages: u64 = trace
+        .iter()
+        .flat_map(|s| &s.senders)
+        .map(|&(_, f)| f.count_ones() as u64)
+        .sum();
+    assert!(messages <= m.last.messages);
 }
 
 #[test]

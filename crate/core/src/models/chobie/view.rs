@@ -80,16 +80,9 @@ impl Model for Chobie {
                 },
             ],
             tools: vec![
-                tool(
-                    "load",
-                    "Load 100 N",
-                    json!({"kind": "load", "force": 100.0}),
-                ),
-                tool(
-                    "unload",
-                    "Remove load",
-                    json!({"kind": "load", "force": 0.0}),
-                ),
+                tool("load", "Load (N)", json!({"kind": "load", "force": 100.0})),
+                tool("move", "Move load", json!({"kind": "move"})),
+                tool("unload", "Remove load", json!({"kind": "unload"})),
             ],
             cell_labels: false,
             chart: match self.p.task {
@@ -172,6 +165,10 @@ impl Model for Chobie {
         for &l in &self.loads {
             h.f64(l);
         }
+        // Only while the move tool holds a load, so earlier states hash as before.
+        if self.held > 0.0 {
+            h.f64(self.held);
+        }
         h.u8(self.mode as u8);
         let t = &self.totals;
         for v in [
@@ -247,7 +244,7 @@ impl Model for Chobie {
     }
 
     fn check_action(&self, action: &Action) -> Result<()> {
-        self.parse_load(action).map(|_| ())
+        super::actions::check_load(action)
     }
 
     fn apply(&mut self, action: &Action) -> Result<()> {
@@ -272,6 +269,36 @@ impl Model for Chobie {
             }
             .into(),
         );
+        // The last transformation slot by slot, for the page's slot stepper: each slot's
+        // meaning and its senders as (cell, lit faces) pairs.
+        m.insert(
+            "slots".into(),
+            self.last
+                .trace
+                .iter()
+                .map(|s| {
+                    json!({
+                        "meaning": s.meaning,
+                        "count": s.count,
+                        "signals": s.senders.iter().flat_map(|&(c, f)| [c, f as u32]).collect::<Vec<u32>>(),
+                    })
+                })
+                .collect::<Vec<Value>>()
+                .into(),
+        );
+        // Every robot's frame-node displacement in cells (x right, y down), for the page's
+        // exaggerated deflection view.
+        let length = self.p.mech.length;
+        let mut displacement = Vec::with_capacity(3 * self.body.len());
+        for (r, &(x, y)) in self.body.pos.iter().enumerate() {
+            if let (Some(i), Some(d)) = (self.body.index(x, y), self.disp.get(r)) {
+                displacement.extend([i as f64, d[0] / length, -d[1] / length]);
+            }
+        }
+        m.insert("displacement".into(), json!(displacement));
+        if self.held > 0.0 {
+            m.insert("held_load_n".into(), json!(self.held));
+        }
         let r = self.body.occ[cell];
         if r == NONE {
             if self.body.ground[cell] {

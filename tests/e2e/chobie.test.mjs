@@ -1,0 +1,187 @@
+// chobie in the page: every preset opens; the crawl moves the structure; a load with a typed
+// magnitude is placed by clicking a robot, recorded for the link, and shows in the stress field
+// and the overload count; the exaggerated deflected shape; the last step's signals, slot by slot.
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
+
+const wasm = loadWasm();
+const s = session('/');
+
+const PRESETS = ['chobie-crawl3', 'chobie-crawl5', 'chobie-crawl7', 'chobie-crawl9', 'chobie-form-a', 'chobie-form-b', 'chobie-form-c', 'chobie-form-d', 'chobie-bridge', 'chobie-load5'];
+
+const open = (preset, change = (x) => x) => openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(change(JSON.parse(wasm.preset_json(preset)))))}`);
+const scenario = async (page) => JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
+const metric = (page, name) =>
+  page.$$eval(
+    '#metrics .metric',
+    (nodes, n) => {
+      const m = nodes.find((x) => x.firstChild.textContent === n);
+      return m ? Number(m.lastChild.textContent.replace(/,/g, '')) : Number.NaN;
+    },
+    name.replace(/_/g, ' '),
+  );
+
+/** The annotation layer's pixels, as one string to compare, and how many are drawn. */
+const annotations = (page) =>
+  page.$eval('#annotations', (c) => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let inked = 0;
+    let sum = 0;
+    for (let i = 3; i < d.length; i += 4) {
+      if (d[i] > 0) inked++;
+      sum = (sum * 31 + d[i - 3] + 7 * d[i - 2] + 13 * d[i - 1] + 17 * d[i]) % 1000000007;
+    }
+    return { inked, sum };
+  });
+
+/** Moves the pointer over the view until the inspector names cell `cell`; returns that point. */
+async function findCell(page, cell) {
+  const box = await page.locator('#view').boundingBox();
+  // The worlds used here are small: a cell is far wider than the grid's pitch.
+  for (let gy = 1; gy < 24; gy++) {
+    for (let gx = 1; gx < 32; gx++) {
+      const x = box.x + (box.width * gx) / 32;
+      const y = box.y + (box.height * gy) / 24;
+      await page.mouse.move(x, y);
+      const text = await page.textContent('#inspector');
+      if (text?.startsWith(`cell${cell} `)) return { x, y };
+    }
+  }
+  throw new Error(`no point of the view shows cell ${cell}`);
+}
+
+test('every chobie preset opens with its robots, terrain and no error', async () => {
+  for (const preset of PRESETS) {
+    const { page, context, problems } = await open(preset);
+    assert.equal(await page.textContent('#scenario-model'), 'chobie', preset);
+    const legend = await page.$$eval('#legend span', (spans) => spans.map((x) => x.textContent));
+    for (const name of ['terrain', 'R: resting robot', 'D: driving robot']) assert.ok(legend.includes(name), `${preset}: ${legend.join(', ')}`);
+    assert.ok((await metric(page, 'robots')) >= 3, preset);
+    assert.deepEqual(problems, [], preset);
+    await context.close();
+  }
+});
+
+test('the crawl moves the structure right, step after step', async () => {
+  const { page, context, problems } = await open('chobie-crawl5');
+  assert.equal(await metric(page, 'distance'), 0);
+  const distances = [];
+  for (let k = 1; k <= 8; k++) {
+    await page.click('#step');
+    await waitForSteps(page, k);
+    await settle(page);
+    if (k % 4 === 0) distances.push(await metric(page, 'distance'));
+  }
+  // One crawl cycle (four transformations) moves the structure one cell.
+  assert.deepEqual(distances, [1, 2]);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a load with a typed magnitude is put on the clicked robot, recorded for the link, and overloads the root', async () => {
+  // Figure 14's cantilever without its load: the tip robot is cell 19 (x 3, y 2).
+  const { page, context, problems } = await open('chobie-load5', (doc) => ({ ...doc, disturbances: [] }));
+  await page.selectOption('#overlay', 'stress');
+  await settle(page);
+  assert.equal(await metric(page, 'overloads'), 0);
+  const bare = await metric(page, 'peak_stress');
+  const tip = await findCell(page, 19);
+  // Inspecting the robot lists its own facts; the whole-structure ones stay in their panel.
+  await page.mouse.click(tip.x, tip.y);
+  await page.waitForFunction(() => document.querySelector('#inspector').textContent.includes('stress mpa'));
+  assert.ok(!(await page.textContent('#inspector')).includes('meaning'), 'no slot trace in the cell inspector');
+  await page.click('#tools button[data-tool="load"]');
+  await page.fill('#tool-load-force', '300');
+  await page.mouse.click(tip.x, tip.y);
+  await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).disturbances?.length === 1);
+  const recorded = (await scenario(page)).disturbances[0];
+  assert.deepEqual([recorded.kind, recorded.cells, recorded.force], ['load', [19], 300]);
+  const link = wasm.decode_link(wasm.encode_link(JSON.stringify(await scenario(page))));
+  assert.equal(JSON.parse(link).disturbances[0].force, 300, 'the magnitude survives a link');
+  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.lastChild.textContent) > 0));
+  assert.ok((await metric(page, 'peak_stress')) > 2 * bare, 'the load raises the peak stress');
+  assert.equal(await page.isVisible('#colorbar'), true, 'the stress field has its colour bar');
+  assert.ok(Number((await page.textContent('#colorbar-max')).replace(/,/g, '')) > 0);
+  // Overloaded robots are drawn in their own colour, from the model's cell codes.
+  const codes = await page.evaluate(() => {
+    const legend = [...document.querySelectorAll('#legend span')].map((x) => x.textContent);
+    return legend.includes('overloaded robot');
+  });
+  assert.ok(codes);
+
+  // Moving the load: lift it off the tip, put it on the robot beside the root.
+  await page.click('#tools button[data-tool="move"]');
+  await page.mouse.click(tip.x, tip.y);
+  const inner = await findCell(page, 17);
+  await page.mouse.click(inner.x, inner.y);
+  await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).disturbances?.length === 3);
+  const moved = (await scenario(page)).disturbances.slice(1).map((d) => [d.kind, d.cells[0]]);
+  assert.deepEqual(moved, [
+    ['move', 19],
+    ['move', 17],
+  ]);
+  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.lastChild.textContent) === 0));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('the deflected shape is drawn exaggerated by the typed factor', async () => {
+  const { page, context, problems } = await open('chobie-load5');
+  await settle(page);
+  const plain = await annotations(page);
+  await page.check('#deflection-view');
+  await page.waitForFunction((n) => {
+    const c = document.querySelector('#annotations');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let inked = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) inked++;
+    return inked > n;
+  }, plain.inked);
+  await settle(page);
+  const small = await annotations(page);
+  await page.fill('#deflection-scale', '2000');
+  await settle(page);
+  await settle(page);
+  const large = await annotations(page);
+  assert.notEqual(large.sum, small.sum, 'a larger factor moves the drawn robots');
+  await page.uncheck('#deflection-view');
+  await settle(page);
+  assert.equal((await annotations(page)).inked, plain.inked);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('stepping slowly shows each slot of the last step: its meaning and its senders', async () => {
+  const { page, context, problems } = await open('chobie-crawl5');
+  await page.check('#slot-view');
+  await page.click('#step');
+  await page.waitForFunction(() => document.querySelector('#slot-label').textContent.startsWith('Slot 1 of'));
+  assert.equal(await stepCount(page), 1);
+  const first = await page.textContent('#slot-label');
+  assert.match(first, /rule 1: every robot signals in all four directions \(5 robots send\)/);
+  await settle(page);
+  const drawn = await annotations(page);
+  await page.click('#slot-next');
+  await page.waitForFunction(() => document.querySelector('#slot-label').textContent.startsWith('Slot 2 of'));
+  assert.match(await page.textContent('#slot-label'), /rule 2/);
+  await settle(page);
+  assert.notEqual((await annotations(page)).sum, drawn.sum, 'another slot, other signals');
+  // Through to the command and the completion signal.
+  const meanings = [];
+  const total = Number(await page.getAttribute('#slot-range', 'max'));
+  for (let k = 2; k <= total; k++) {
+    await page.click('#slot-next');
+    await page.waitForFunction((n) => document.querySelector('#slot-label').textContent.startsWith(`Slot ${n} of`), k + 1);
+    meanings.push(await page.textContent('#slot-label'));
+  }
+  for (const word of ['route', 'drive', 'direction', 'completion']) assert.ok(meanings.some((m) => m.includes(word)), `${word} in ${meanings.join(' | ')}`);
+  // The next step brings its own slots.
+  await page.fill('#slot-range', '0');
+  await page.dispatchEvent('#slot-range', 'input');
+  await page.click('#step');
+  await waitForSteps(page, 2);
+  await page.waitForFunction(() => document.querySelector('#slot-label').textContent.startsWith('Slot 1 of'));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
