@@ -14,49 +14,6 @@ impl Fracta {
         }
         Ok(u)
     }
-
-    /// Reads a fault action. Only what holds at any step is checked here (the kind, cells inside
-    /// the lattice, an existing unit number), since a scheduled fault is checked against the
-    /// starting state; whether a working unit is there is checked when it is applied.
-    pub(super) fn parse_fault(&self, action: &Action) -> Result<Fault> {
-        let a: FaultAction = crate::error::from_value(Value::Object(action.clone()))?;
-        if a.kind != "fault" {
-            return Err(Error::field(
-                "kind",
-                format!("unknown disturbance '{}'; known: fault", a.kind),
-            ));
-        }
-        match (a.cells, a.unit) {
-            (Some(cells), None) => {
-                if cells.is_empty() {
-                    return Err(Error::field("cells", "name at least one cell"));
-                }
-                if let Some(c) = cells.iter().find(|&&c| c >= self.occ.len() as u64) {
-                    return Err(Error::field(
-                        "cells",
-                        format!("cell {c} is outside the lattice"),
-                    ));
-                }
-                Ok(Fault::Cells(cells))
-            }
-            (None, Some(u)) => {
-                if u >= self.units.len() as u64 {
-                    return Err(Error::field(
-                        "unit",
-                        format!(
-                            "there is no unit {u}; units are numbered 0 to {} in reading order of the start shape",
-                            self.units.len() - 1
-                        ),
-                    ));
-                }
-                Ok(Fault::Unit(u as u32))
-            }
-            _ => Err(Error::field(
-                "",
-                "give either cells (lattice cell indices) or unit (a unit number)",
-            )),
-        }
-    }
 }
 
 pub(super) enum Fault {
@@ -75,4 +32,47 @@ pub(super) struct FaultAction {
     pub(super) cells: Option<Vec<u64>>,
     #[serde(default)]
     pub(super) unit: Option<u64>,
+}
+
+/// Reads a fault action. Only what holds at any step is checked here (the kind, cells inside
+/// the lattice, an existing unit number), since a scheduled fault is checked against the
+/// starting state; whether a working unit is there is checked when it is applied.
+pub(super) fn parse_fault(action: &Action, cells_in_lattice: usize, units: usize) -> Result<Fault> {
+    let a: FaultAction = crate::error::from_value(Value::Object(action.clone()))?;
+    if a.kind != "fault" {
+        return Err(Error::field(
+            "kind",
+            format!("unknown disturbance '{}'; known: fault", a.kind),
+        ));
+    }
+    match (a.cells, a.unit) {
+        (Some(cells), None) => {
+            if cells.is_empty() {
+                return Err(Error::field("cells", "name at least one cell"));
+            }
+            if let Some(c) = cells.iter().find(|&&c| c >= cells_in_lattice as u64) {
+                return Err(Error::field(
+                    "cells",
+                    format!("cell {c} is outside the lattice"),
+                ));
+            }
+            Ok(Fault::Cells(cells))
+        }
+        (None, Some(u)) => {
+            if u >= units as u64 {
+                return Err(Error::field(
+                    "unit",
+                    format!(
+                        "there is no unit {u}; units are numbered 0 to {} in reading order of the start shape",
+                        units - 1
+                    ),
+                ));
+            }
+            Ok(Fault::Unit(u as u32))
+        }
+        _ => Err(Error::field(
+            "",
+            "give either cells (lattice cell indices) or unit (a unit number)",
+        )),
+    }
 }

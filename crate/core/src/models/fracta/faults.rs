@@ -1,16 +1,19 @@
-//! Step phase 1, the "OK" signals of section 4: faulty units are cut off, and the others start
-//! equation 2 again.
+//! Step phase 1, the "OK" signals of section 4: faulty units are cut off, the others take up
+//! the description with one spare fewer per unit lost and start equation 2 again.
 
 use super::*;
 
 impl Fracta {
     /// Section 4: a unit that sends no "OK" at the start of a step is cut off by its neighbours.
     /// If that splits the system, the largest part carries on (the part holding the smallest
-    /// unit id among equals) and the others are stranded.
+    /// unit id among equals) and the others are stranded. The goal then loses one priority
+    /// level per unit lost (the description with one spare fewer, section 3.3), and every
+    /// working unit restarts equation 2.
     pub(super) fn cut_off_faulty(&mut self) {
         if self.pending == 0 {
             return;
         }
+        let before = self.working.len() + self.pending;
         for u in 0..self.units.len() {
             if self.units[u].status == Status::Faulty {
                 let cell = self.units[u].cell;
@@ -48,6 +51,7 @@ impl Fracta {
             self.working
                 .retain(|&u| self.units[u as usize].status == Status::Working);
         }
+        self.goal = self.goal.without_last_levels(before - self.working.len());
         self.refresh();
         // The structure the units form has changed: equation 2 starts again from its initial
         // state (section 3.3 / 4: the self-repair process is launched anew).

@@ -55,7 +55,9 @@ impl Statement {
 
 /// How statements of lower priority take part in the difference. See the documentation of
 /// [`Goal::difference`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "lowercase")]
 pub enum Priorities {
     /// Every statement counts alike; priority only breaks ties between equally close ones.
@@ -151,6 +153,23 @@ impl Goal {
             p += 1;
         }
         out
+    }
+
+    /// The goal without its `levels` last priority levels, keeping at least the first level
+    /// present: the description the units repair towards once `levels` units are lost
+    /// (section 3.3: the first priority is the original shape, each later one adds a spare).
+    pub fn without_last_levels(&self, levels: usize) -> Goal {
+        let mut present: Vec<u8> = self.statements.iter().map(|s| s.priority).collect();
+        present.dedup();
+        let keep = present.len().saturating_sub(levels).max(1);
+        let last = present[keep - 1];
+        Goal::new(
+            self.statements
+                .iter()
+                .filter(|s| s.priority <= last)
+                .cloned()
+                .collect(),
+        )
     }
 
     /// Reads a goal. Errors name the line and the problem.

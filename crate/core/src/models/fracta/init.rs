@@ -2,32 +2,45 @@
 //! reads: neighbour masks, types, differences, connected groups, and equation 2's initial state.
 
 use super::*;
+use crate::limits::Limits;
 
-impl Fracta {
-    pub fn new(scenario: &Scenario) -> Result<Fracta> {
-        let spec: Spec = models::body(scenario)?;
-        let p = check_params(&spec)?;
-        let goal = Goal::parse(&spec.goal).map_err(|e| Error::field("goal", e))?;
-        let start = shape::parse_hex(&spec.start).map_err(|e| e.within("start"))?;
-        if spec.margin > MAX_MARGIN {
+/// A description whose every key is checked: its parameters, its goal, and the start shape's
+/// units placed on a lattice of `w × h` cells, in reading order.
+pub struct Checked {
+    p: Params,
+    goal: Goal,
+    placed: Vec<crate::lattice::Coord>,
+    w: u32,
+    h: u32,
+}
+
+impl models::Spec for Spec {
+    type Checked = Checked;
+
+    fn validate(&self, limits: &Limits) -> Result<Checked> {
+        let max = limits.fracta;
+        let p = check_params(self)?;
+        let goal = Goal::parse(&self.goal).map_err(|e| Error::field("goal", e))?;
+        let start = shape::parse_hex_within(&self.start, limits).map_err(|e| e.within("start"))?;
+        if self.margin > max.margin {
             return Err(Error::field(
                 "margin",
-                format!("{} is wider than the limit of {MAX_MARGIN}", spec.margin),
+                format!("{} is wider than the limit of {}", self.margin, max.margin),
             ));
         }
         let count = start.count();
         if count == 0 {
             return Err(Error::field("start", "has no '#' cells"));
         }
-        if count > MAX_UNITS {
+        if count > max.units {
             return Err(Error::field(
                 "start",
-                format!("{count} units exceed the limit of {MAX_UNITS}"),
+                format!("{count} units exceed the limit of {}", max.units),
             ));
         }
         // Place the shape `margin` rows down and at least `margin` columns in, moving it in axial
         // coordinates so that its odd rows keep their offsets relative to its even ones.
-        let m = spec.margin as i32;
+        let m = self.margin as i32;
         let mut axial: Vec<(i32, i32)> = Vec::with_capacity(count);
         for y in 0..start.h {
             for x in 0..start.w {
@@ -49,14 +62,72 @@ impl Fracta {
             .collect();
         let max_x = placed.iter().map(|c| c.x).max().unwrap_or(0);
         let w = (max_x + 1 + m) as u64;
-        let h = u64::from(start.h) + 2 * u64::from(spec.margin);
-        if w > u64::from(MAX_SIDE) || h > u64::from(MAX_SIDE) {
+        let h = u64::from(start.h) + 2 * u64::from(self.margin);
+        let side = max.side;
+        if w > u64::from(side) || h > u64::from(side) {
             return Err(Error::field(
                 "start",
-                format!("{w}×{h} cells with the margin exceeds the limit of {MAX_SIDE}×{MAX_SIDE}"),
+                format!("{w}×{h} cells with the margin exceeds the limit of {side}×{side}"),
             ));
         }
         let lattice = Hex::new(w as u32, h as u32);
+        let cells: Vec<usize> = placed
+            .iter()
+            .map(|c| lattice.index(*c).expect("placed inside the lattice"))
+            .collect();
+        if !connected(&lattice, &cells) {
+            return Err(Error::field(
+                "start",
+                "the units fall apart into pieces; fracta units are always connected",
+            ));
+        }
+        Ok(Checked {
+            p,
+            goal,
+            placed,
+            w: w as u32,
+            h: h as u32,
+        })
+    }
+
+    fn check_action(checked: &Checked, action: &Action) -> Result<()> {
+        let cells = checked.w as usize * checked.h as usize;
+        actions::parse_fault(action, cells, checked.placed.len()).map(|_| ())
+    }
+
+    fn build(checked: Checked, seed: u64) -> Box<dyn Model> {
+        Box::new(Fracta::from_checked(checked, seed))
+    }
+}
+
+/// The units on `cells` form one piece on the lattice.
+fn connected(lattice: &Hex, cells: &[usize]) -> bool {
+    let occupied: std::collections::HashSet<usize> = cells.iter().copied().collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut stack: Vec<usize> = cells.first().copied().into_iter().collect();
+    seen.extend(stack.iter().copied());
+    while let Some(i) = stack.pop() {
+        for j in lattice.neighbours(i) {
+            if occupied.contains(&j) && seen.insert(j) {
+                stack.push(j);
+            }
+        }
+    }
+    seen.len() == occupied.len()
+}
+
+impl Fracta {
+    /// The model at step 0, from its checked description.
+    pub fn from_checked(checked: Checked, seed: u64) -> Fracta {
+        let Checked {
+            p,
+            goal,
+            placed,
+            w,
+            h,
+        } = checked;
+        let count = placed.len();
+        let lattice = Hex::new(w, h);
         let n = lattice.len();
         let nbr: Vec<[u32; 6]> = (0..n)
             .map(|i| {
@@ -90,7 +161,7 @@ impl Fracta {
             units,
             goal,
             p,
-            rng: Rng::new(scenario.seed),
+            rng: Rng::new(seed),
             steps: 0,
             mask: vec![0; count],
             class: vec![0; count],
@@ -111,15 +182,9 @@ impl Fracta {
             last_fault: None,
             events: Vec::new(),
         };
-        if model.components().len() > 1 {
-            return Err(Error::field(
-                "start",
-                "the units fall apart into pieces; fracta units are always connected",
-            ));
-        }
         model.refresh();
         model.restart();
-        Ok(model)
+        model
     }
 
     /// Neighbour mask of a cell: bit d set when a unit (working or faulty) is in direction d.

@@ -26,10 +26,9 @@ use crate::lattice::{Hex, Lattice, LatticeKind};
 use crate::math;
 use crate::models::{
     self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metrics, Model, ModelEntry,
-    ToolInfo,
+    ModelSpec, ToolInfo,
 };
 use crate::rng::Rng;
-use crate::scenario::Scenario;
 use crate::shape;
 
 mod actions;
@@ -47,25 +46,19 @@ mod view;
 
 use actions::Fault;
 use goal::{Goal, Priorities};
-pub use spec::defaults;
-use spec::{check_params, Params, Spec};
+use spec::{check_params, Params};
+pub use spec::{defaults, Spec};
 use types::{far_steps, swept_slots, target_slot, types, Turn, Types};
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
-    model_version: 2,
-    build: |s| Ok(Box::new(Fracta::new(s)?)),
-    normalize: models::normalized::<Spec>,
+    model_version: 3,
+    parse: |body| models::parse(body, ModelSpec::Fracta),
+    #[cfg(feature = "schema")]
+    schema: crate::schema::of::<Spec>,
 };
-
-/// The most units a scenario may hold.
-pub const MAX_UNITS: usize = 20_000;
-/// The largest lattice side, in cells, margin included.
-pub const MAX_SIDE: u32 = 1024;
-/// The widest margin around the start shape.
-pub const MAX_MARGIN: u32 = 256;
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see
 /// [`types::Types::info`]).
@@ -315,11 +308,11 @@ impl Model for Fracta {
     }
 
     fn check_action(&self, action: &Action) -> Result<()> {
-        self.parse_fault(action).map(|_| ())
+        actions::parse_fault(action, self.occ.len(), self.units.len()).map(|_| ())
     }
 
     fn apply(&mut self, action: &Action) -> Result<()> {
-        let targets = match self.parse_fault(action)? {
+        let targets = match actions::parse_fault(action, self.occ.len(), self.units.len())? {
             Fault::Cells(cells) => cells
                 .iter()
                 .map(|&c| self.working_unit_at(c))

@@ -2,33 +2,55 @@
 
 use super::*;
 
-#[derive(Deserialize, Serialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
-pub(super) struct Spec {
+#[schemars(rename = "FractaSpec")]
+pub struct Spec {
     /// The starting configuration, a hex shape (see [`crate::shape`]).
     pub(super) start: String,
     /// The goal statements (see [`goal`]).
     pub(super) goal: String,
+    /// Free cells around the start shape's bounding box.
     #[serde(default = "defaults::margin")]
+    #[schemars(range(max = crate::limits::Limits::PAGE.fracta.margin))]
     pub(super) margin: u32,
+    /// Diffusion coefficient (equation 2); above 1/6 a unit with six neighbours would overshoot.
     #[serde(rename = "K", default = "defaults::k")]
+    #[schemars(range(min = 0.0, max = 0.16666666666666666))]
     pub(super) k: f64,
+    /// Leak constant, movable units only (equation 2).
     #[serde(rename = "L", default = "defaults::l")]
+    #[schemars(range(min = 0.0, max = 1000.0))]
     pub(super) l: f64,
+    /// Activation threshold (equation 3).
     #[serde(rename = "G", default = "defaults::g")]
+    #[schemars(range(min = 0.0, max = 1000.0))]
     pub(super) g: f64,
+    /// Irritation threshold (condition 5), above 0.
     #[serde(rename = "I_th", default = "defaults::i_th")]
+    #[schemars(range(max = 1e9))]
     pub(super) i_th: f64,
+    /// x counts as stable when |Δx| is below this (equation 4).
     #[serde(default = "defaults::stable")]
+    #[schemars(range(min = 0.0, max = 1000.0))]
     pub(super) stable: f64,
+    /// How much x is raised when irritation fires.
     #[serde(default = "defaults::irritation_gain")]
+    #[schemars(range(min = 0.0, max = 1000.0))]
     pub(super) irritation_gain: f64,
+    /// Temperature of the choice between the two rolls.
     #[serde(default = "defaults::temperature")]
+    #[schemars(range(min = 0.001, max = 1e6))]
     pub(super) temperature: f64,
+    /// No motion ends as an `e` (the hardware rule of section 4): a unit keeps rolling about its
+    /// pivot until it touches a second unit; off, every motion is one 60° roll.
     #[serde(default = "defaults::avoid_e")]
     pub(super) avoid_e: bool,
+    /// No motion encloses empty cells (a region of up to 7 empty cells cut off from the
+    /// lattice's edge).
     #[serde(default = "defaults::no_holes")]
     pub(super) no_holes: bool,
+    /// How lower-priority goal statements count in the difference.
     #[serde(default = "defaults::priorities")]
     pub(super) priorities: Priorities,
 }

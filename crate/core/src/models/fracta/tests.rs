@@ -5,7 +5,21 @@ use super::types::{canonical, images, reflect, rotate, CLASSES};
 use super::*;
 use crate::lattice::Coord;
 use crate::run::Run;
+use crate::scenario::Scenario;
 use proptest::prelude::*;
+
+impl Fracta {
+    /// The model of a test scenario, built the way a run builds it.
+    fn new(s: &Scenario) -> crate::Result<Fracta> {
+        let crate::models::ModelSpec::Fracta(spec) = &s.spec else {
+            panic!("not a fracta scenario");
+        };
+        Ok(Fracta::from_checked(
+            crate::models::Spec::validate(spec, s.limits)?,
+            s.seed,
+        ))
+    }
+}
 
 const TRIANGLE: &str = ". . # .\n . # # .\n. # # #\n # # # #\n";
 const TRIANGLE_GOAL: &str = "o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n";
@@ -311,7 +325,7 @@ fn the_triangles_statements_are_the_papers() {
     assert_eq!(goal.text(), TRIANGLE_GOAL);
     // The presets use exactly these as their first priority.
     let preset = presets::scenario("fracta-triangle10").unwrap();
-    let g = Goal::parse(preset.body["goal"].as_str().unwrap()).unwrap();
+    let g = Goal::parse(preset.body()["goal"].as_str().unwrap()).unwrap();
     let first: Vec<String> = g
         .statements()
         .iter()
@@ -325,7 +339,6 @@ fn the_triangles_statements_are_the_papers() {
 }
 
 use crate::presets;
-
 #[test]
 fn statements_parse_in_any_spelling_and_order() {
     let a = Goal::parse("K{o, K, K, s}").unwrap();
@@ -445,7 +458,7 @@ fn a_completed_goal_has_zero_difference_and_stays_still() {
         (TRIANGLE, TRIANGLE_GOAL),
         (
             ". # # .\n . # # .\n. # # #\n # # # #\n",
-            presets::scenario("fracta-triangle10").unwrap().body["goal"]
+            presets::scenario("fracta-triangle10").unwrap().body()["goal"]
                 .as_str()
                 .unwrap(),
         ),
@@ -813,9 +826,11 @@ fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
     // Without the no-holes rule some runs close a ring round an empty cell and never finish.
     let stuck = (1..=300)
         .filter(|&seed| {
-            let mut s = presets::scenario("fracta-triangle10").unwrap();
+            let mut s = presets::scenario("fracta-triangle10")
+                .unwrap()
+                .with_override("no_holes", json!(false))
+                .unwrap();
             s.seed = seed;
-            s.body["no_holes"] = json!(false);
             let mut m = Fracta::new(&s).unwrap();
             while m.steps < 3000 && !m.completed() {
                 m.step();
@@ -878,8 +893,10 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
     }
     assert!(legal > 0 && m.moves > 0);
     // Read as a single 60° roll, the rule leaves nothing to do from the two lines.
-    let mut s = presets::scenario("fracta-triangle10").unwrap();
-    s.body["avoid_e"] = json!(true);
+    let s = presets::scenario("fracta-triangle10")
+        .unwrap()
+        .with_override("avoid_e", json!(true))
+        .unwrap();
     let mut m = Fracta::new(&s).unwrap();
     m.p.avoid_e = false;
     let ends_as_e = m.working.iter().all(|&u| {
@@ -908,9 +925,158 @@ fn a_cut_off_restarts_equation_2_from_the_differences() {
 }
 
 #[test]
+fn a_cut_off_leaves_the_description_with_one_spare_fewer() {
+    let three = Goal::parse("o{K, K}\n2: o{ε, c}\n3: ε{o, K, c}\n4: c{o, ε, K, K, s}\n").unwrap();
+    let levels = |g: &Goal| {
+        let mut p: Vec<u8> = g.statements().iter().map(|s| s.priority).collect();
+        p.dedup();
+        p
+    };
+    assert_eq!(levels(&three.without_last_levels(0)), [1, 2, 3, 4]);
+    assert_eq!(levels(&three.without_last_levels(1)), [1, 2, 3]);
+    assert_eq!(levels(&three.without_last_levels(2)), [1, 2]);
+    assert_eq!(levels(&three.without_last_levels(9)), [1]);
+    // The paper's repair: after the cut-off only the triangle's own statements are left, and
+    // the 10 units rebuild exactly the triangle.
+    let s = presets::scenario("fracta-repair").unwrap();
+    let mut m = Fracta::new(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.step();
+    assert_eq!(
+        m.goal.text(),
+        Goal::parse(TRIANGLE_GOAL).unwrap().text(),
+        "the spare's statements are dropped"
+    );
+    while !m.completed() && m.steps < 5000 {
+        m.step();
+    }
+    assert!(m.completed());
+    let triangle = Fracta::new(&scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}))).unwrap();
+    assert_eq!(shape_up_to_symmetry(&m), shape_up_to_symmetry(&triangle));
+}
+
+#[test]
 fn holes_count_the_cells_a_ring_encloses() {
     let ring = scenario(". # # .\n # . # .\n. # # .\n", TRIANGLE_GOAL, 1, json!({}));
     assert_eq!(Fracta::new(&ring).unwrap().holes(), 1);
     let full = scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}));
     assert_eq!(Fracta::new(&full).unwrap().holes(), 0);
+}
+
+/// The plain definition `holes` must agree with: empty cells that no path of empty cells joins
+/// to the lattice's edge, flooded over the whole lattice.
+fn holes_over_the_whole_lattice(m: &Fracta) -> u64 {
+    let n = m.occ.len();
+    let mut outside = vec![false; n];
+    let mut queue: VecDeque<u32> = (0..n as u32)
+        .filter(|&i| m.nbr[i as usize].contains(&NO_UNIT) && m.occ[i as usize] == NO_UNIT)
+        .collect();
+    for &i in &queue {
+        outside[i as usize] = true;
+    }
+    while let Some(i) = queue.pop_front() {
+        for &j in &m.nbr[i as usize] {
+            if j != NO_UNIT && !outside[j as usize] && m.occ[j as usize] == NO_UNIT {
+                outside[j as usize] = true;
+                queue.push_back(j);
+            }
+        }
+    }
+    (0..n)
+        .filter(|&i| m.occ[i] == NO_UNIT && !outside[i])
+        .count() as u64
+}
+
+#[test]
+fn holes_searched_in_the_units_box_equal_holes_over_the_whole_lattice() {
+    let edge = scenario(". # #\n # . #\n. # #\n", TRIANGLE_GOAL, 1, json!({}));
+    let m = Fracta::new(&edge).unwrap();
+    assert_eq!((m.holes(), holes_over_the_whole_lattice(&m)), (1, 1));
+    let mut compared = 0;
+    let mut with_holes = 0;
+    for seed in 1..=40 {
+        let mut s = presets::scenario("fracta-triangle10")
+            .unwrap()
+            .with_override("no_holes", json!(false))
+            .unwrap();
+        s.seed = seed;
+        let mut m = Fracta::new(&s).unwrap();
+        while m.steps < 600 && !m.completed() {
+            m.step();
+            let holes = m.holes();
+            assert_eq!(
+                holes,
+                holes_over_the_whole_lattice(&m),
+                "seed {seed}, step {}",
+                m.steps
+            );
+            compared += 1;
+            with_holes += usize::from(holes > 0);
+        }
+    }
+    assert!(
+        compared > 1000 && with_holes > 0,
+        "{compared} steps, {with_holes} with holes"
+    );
+}
+
+/// The fewest motions (one unit's motion each, in turn) that take the 10 units left after a
+/// fault on `unit` of fracta-repair to the triangle, searched breadth first up to `limit`.
+fn fewest_motions(unit: u64, limit: usize) -> Option<usize> {
+    let mut s = presets::scenario("fracta-repair").unwrap();
+    s.disturbances[0].action.insert("unit".into(), json!(unit));
+    let mut m = Fracta::new(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.cut_off_faulty();
+    let key = |m: &Fracta| {
+        let mut cells: Vec<u32> = m
+            .working
+            .iter()
+            .map(|&u| m.units[u as usize].cell)
+            .collect();
+        cells.sort_unstable();
+        cells
+    };
+    let mut seen = BTreeSet::from([key(&m)]);
+    let mut layer = vec![m];
+    for depth in 0..=limit {
+        if layer.iter().any(Fracta::completed) {
+            return Some(depth);
+        }
+        let mut next = Vec::new();
+        for m in &layer {
+            for &u in &m.working {
+                let cell = m.units[u as usize].cell;
+                for pivot in 0..6 {
+                    for turn in Turn::BOTH {
+                        let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) else {
+                            continue;
+                        };
+                        let mut n = m.clone();
+                        n.occ[cell as usize] = NO_UNIT;
+                        n.occ[to as usize] = u;
+                        n.units[u as usize].cell = to;
+                        n.refresh();
+                        if seen.insert(key(&n)) {
+                            next.push(n);
+                        }
+                    }
+                }
+            }
+        }
+        layer = next;
+    }
+    None
+}
+
+#[test]
+fn a_few_motions_repair_every_fault_position() {
+    // The paper's "few steps" is what the geometry allows: 2.4 motions on average over the 10
+    // positions, at most 4 (docs/models/fracta.md quotes these).
+    let fewest: Vec<Option<usize>> = [0, 1, 2, 3, 4, 6, 7, 8, 9, 10]
+        .into_iter()
+        .map(|unit| fewest_motions(unit, 4))
+        .collect();
+    let expected = [0, 1, 3, 2, 3, 3, 2, 3, 4, 3].map(Some);
+    assert_eq!(fewest, expected);
 }
