@@ -76,52 +76,9 @@ impl Amas {
         }
     }
 
-    /// The form of an action: its kind, a count or cells, and cells inside the lattice. Whether
-    /// the cells suit the action depends on the state when it is applied (see [`Self::check`]).
-    pub(super) fn parse(&self, action: &Action) -> Result<Checked> {
-        let raw: Raw = crate::error::from_value(Value::Object(action.clone()))?;
-        let kind = match raw.kind.as_str() {
-            "remove" => Kind::Remove,
-            "break" => Kind::Break,
-            "dismantle" => Kind::Dismantle,
-            "extend" => Kind::Extend,
-            other => {
-                return Err(Error::field(
-                    "kind",
-                    format!(
-                        "unknown disturbance '{other}'; known: remove, break, dismantle, extend"
-                    ),
-                ))
-            }
-        };
-        match (raw.count, raw.cells) {
-            (Some(count), None) => Ok(Checked {
-                kind,
-                count: Some(count),
-                cells: Vec::new(),
-            }),
-            (None, Some(cells)) => {
-                for (n, &c) in cells.iter().enumerate() {
-                    if c as usize >= self.state.len() {
-                        return Err(Error::field(
-                            format!("cells[{n}]"),
-                            format!("cell {c} is outside the lattice"),
-                        ));
-                    }
-                }
-                Ok(Checked {
-                    kind,
-                    count: None,
-                    cells,
-                })
-            }
-            _ => Err(Error::field("count", "give either count or cells")),
-        }
-    }
-
     /// An action that fits the present state: every listed cell suits it.
     pub(super) fn check(&self, action: &Action) -> Result<Checked> {
-        let a = self.parse(action)?;
+        let a = parse(action, self.state.len())?;
         for (n, &c) in a.cells.iter().enumerate() {
             if let Some(why) = self.unfit(a.kind, c as usize) {
                 return Err(Error::field(format!("cells[{n}]"), why));
@@ -181,5 +138,47 @@ impl Amas {
             self.init_value(i);
         }
         self.settle();
+    }
+}
+
+/// The form of an action: its kind, a count or cells, and cells inside a lattice of
+/// `cells_in_lattice` cells. Whether the cells suit the action depends on the state when it is
+/// applied (see [`Amas::check`]).
+pub(super) fn parse(action: &Action, cells_in_lattice: usize) -> Result<Checked> {
+    let raw: Raw = crate::error::from_value(Value::Object(action.clone()))?;
+    let kind = match raw.kind.as_str() {
+        "remove" => Kind::Remove,
+        "break" => Kind::Break,
+        "dismantle" => Kind::Dismantle,
+        "extend" => Kind::Extend,
+        other => {
+            return Err(Error::field(
+                "kind",
+                format!("unknown disturbance '{other}'; known: remove, break, dismantle, extend"),
+            ))
+        }
+    };
+    match (raw.count, raw.cells) {
+        (Some(count), None) => Ok(Checked {
+            kind,
+            count: Some(count),
+            cells: Vec::new(),
+        }),
+        (None, Some(cells)) => {
+            for (n, &c) in cells.iter().enumerate() {
+                if c as usize >= cells_in_lattice {
+                    return Err(Error::field(
+                        format!("cells[{n}]"),
+                        format!("cell {c} is outside the lattice"),
+                    ));
+                }
+            }
+            Ok(Checked {
+                kind,
+                count: None,
+                cells,
+            })
+        }
+        _ => Err(Error::field("count", "give either count or cells")),
     }
 }

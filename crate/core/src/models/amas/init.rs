@@ -4,21 +4,17 @@
 use std::collections::VecDeque;
 
 use super::field::{Field, FAR};
-use super::spec::{self, Spec};
+use super::spec;
 use super::state::{ACTIVE_MASK, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
 use super::{
     Amas, FieldKind, Plan, Robot, NONE, STREAM_DISTURBANCE, STREAM_PLACEMENT, UNKNOWN, UP,
 };
-use crate::error::Result;
 use crate::lattice::{Lattice, Square};
-use crate::models;
 use crate::rng::Rng;
-use crate::scenario::Scenario;
 
 impl Amas {
-    pub fn new(scenario: &Scenario) -> Result<Amas> {
-        let spec: Spec = models::body(scenario)?;
-        let plan = spec::read(spec)?;
+    /// The model at step 0, from its checked plan (see [`spec::Spec::validate`]).
+    pub fn from_checked(plan: spec::Plan, seed: u64) -> Amas {
         let w = plan.w as usize;
         let sh = plan.shape_h as usize;
         let h = sh + plan.supply_rows as usize;
@@ -60,7 +56,7 @@ impl Amas {
             sh,
         );
         let supply_cells = w * plan.supply_rows as usize;
-        let mut place_rng = Rng::stream(scenario.seed, STREAM_PLACEMENT);
+        let mut place_rng = Rng::stream(seed, STREAM_PLACEMENT);
         let starts = place_rng.sample_distinct(supply_cells, plan.robots as usize);
         let mut occupant = vec![NONE; n];
         let robots: Vec<Robot> = starts
@@ -104,8 +100,8 @@ impl Amas {
             position: vec![0; robots_n],
             claimed: Vec::new(),
             chain: Vec::new(),
-            rng: Rng::new(scenario.seed),
-            disturb_rng: Rng::stream(scenario.seed, STREAM_DISTURBANCE),
+            rng: Rng::new(seed),
+            disturb_rng: Rng::stream(seed, STREAM_DISTURBANCE),
             releasable: vec![0; n.div_ceil(64)],
             dirty: true,
             reuse: false,
@@ -140,7 +136,7 @@ impl Amas {
             .find(|&y| m.state[y * w..(y + 1) * w].iter().any(|&s| s & MODULE != 0))
             .unwrap_or(sh);
         m.reset_field();
-        Ok(m)
+        m
     }
 
     pub(super) fn recount(&mut self) {

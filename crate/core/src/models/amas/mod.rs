@@ -8,7 +8,7 @@ use serde_json::{json, Map, Value};
 
 use crate::error::Result;
 use crate::hash::StateHasher;
-use crate::models::{self, Action, Agent, Event, Layout, Metrics, Model, ModelEntry};
+use crate::models::{self, Action, Agent, Event, Layout, Metrics, Model, ModelEntry, ModelSpec};
 use crate::rng::Rng;
 
 mod act;
@@ -23,18 +23,19 @@ mod spec;
 mod state;
 mod view;
 
-pub use spec::{Collision, Communication, FieldKind, MAX_SIDE, MAX_SUPPLY_ROWS};
+pub use spec::{Collision, Communication, FieldKind, Spec};
 
 use field::Field;
-use spec::{Params, Spec};
+use spec::Params;
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
     model_version: 2,
-    build: |s| Ok(Box::new(Amas::new(s)?)),
-    normalize: models::normalized::<Spec>,
+    parse: |body| models::parse(body, ModelSpec::Amas),
+    #[cfg(feature = "schema")]
+    schema: crate::schema::of::<Spec>,
 };
 
 const NONE: u32 = u32::MAX;
@@ -300,7 +301,7 @@ impl Model for Amas {
     }
 
     fn check_action(&self, action: &Action) -> Result<()> {
-        self.parse(action).map(|_| ())
+        actions::parse(action, self.state.len()).map(|_| ())
     }
 
     fn apply(&mut self, action: &Action) -> Result<()> {

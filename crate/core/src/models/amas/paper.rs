@@ -11,8 +11,10 @@ pub const PAPER: Paper = Paper {
                Control, IJRR 27(3–4), 2008",
     experiments: &[
         "amas-fig23",
+        "amas-fig23-corner",
         "amas-fig24",
         "amas-fig27",
+        "amas-fig27-rules",
         "amas-bridge",
         "amas-figB1",
     ],
@@ -94,22 +96,55 @@ fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
         let ten = fig23(r, "L", field, "token", 10, "total_steps").mean;
         100.0 * (ten / one - 1.0)
     };
+    let collisions = |field: &str| fig23(r, "L", field, "token", 10, "collisions").mean;
+    let corner = |field: &str, rule: &str, robots: u32, metric: &str| {
+        r.stats(
+            "amas-fig23-corner",
+            &[
+                ("field", json!(field)),
+                ("collision", json!(rule)),
+                ("robots", json!(robots)),
+            ],
+            metric,
+        )
+    };
+    let turned: Vec<String> = ["token", "relay", "blackboard"]
+        .iter()
+        .map(|rule| {
+            format!(
+                "{rule}: continuous {}, discrete {}",
+                corner("continuous", rule, 10, "total_steps").short(0),
+                corner("discrete", rule, 10, "total_steps").short(0)
+            )
+        })
+        .collect();
     out.push(Finding::new(
         "§5.2, fig. 23",
         "The continuous field is better than the discrete field at high robot densities (the \
          discrete field concentrates every path at the corner of the L).",
         format!(
             "L, 10 robots, total steps (mean ± sd, 10 runs each): {}. From 1 to 10 robots the \
-             token total grows {:.0} % with the continuous field and {:.0} % with the discrete.",
+             token total grows {:.0} % with the continuous field and {:.0} % with the discrete; \
+             collisions at 10 robots, token: continuous {:.0}, discrete {:.0}. The L turned \
+             upside down (amas-fig23-corner: stem on the supply, arm at the top), 10 robots: {}; \
+             1 robot: continuous {:.0}, discrete {:.0}.",
             text.join("; "),
             grow("continuous"),
-            grow("discrete")
+            grow("discrete"),
+            collisions("continuous"),
+            collisions("discrete"),
+            turned.join("; "),
+            corner("continuous", "token", 1, "total_steps").mean,
+            corner("discrete", "token", 1, "total_steps").mean,
         ),
-        60,
+        60 + r.rows("amas-fig23-corner").len(),
         Verdict::from(better == 3),
         "Holds if the continuous field takes fewer total steps than the discrete one at 10 robots \
-         under all three rules. The discrete field starts far ahead (shortest paths) and loses \
-         its lead as robots are added; it stays level or ahead under relay and blackboard.",
+         under all three rules, on figure 23's L. Figure 22's L is not in the text: \
+         amas-fig23-corner builds the same 88 modules upside down, so that every module of the \
+         arm is carried round the inner corner, where 5.2 and figure 20 put the discrete \
+         field's paths. The field's update rate and the number of robots (up to the 14 the \
+         supply holds) were checked too (docs/models/amas.md, interpretation 27).",
     ));
 
     // The T (two corners) against the L (one).
@@ -341,21 +376,57 @@ fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
             plural(first),
         ));
     }
+    // The same first removals with each field and rule: is the jump the setup's or the rule's?
+    let rules_steps = |field: &str, rule: &str, count: u32, metric: &str| {
+        r.stats(
+            "amas-fig27-rules",
+            &[
+                ("field", json!(field)),
+                ("collision", json!(rule)),
+                ("disturbances.0.count", json!(count)),
+            ],
+            metric,
+        )
+    };
+    let mut rules = Vec::new();
+    for (field, _) in FIELDS {
+        for rule in ["token", "relay"] {
+            let base = rules_steps(field, rule, 0, "steps").median;
+            let rise = |c: u32| 100.0 * (rules_steps(field, rule, c, "steps").median / base - 1.0);
+            rules.push(format!(
+                "{field} {rule} +{:.0} % / +{:.0} %",
+                rise(1),
+                rise(10)
+            ));
+        }
+    }
+    // total_steps = steps × robots.
+    let robots = rules_steps("continuous", "token", 0, "total_steps").mean
+        / rules_steps("continuous", "token", 0, "steps").mean;
+    let bound = rules_steps("continuous", "token", 0, "lower_bound").mean / robots;
     out.push(Finding::new(
         "§5.5, fig. 27",
         "When the number of disturbances does not exceed some threshold, efficiency is not much \
          affected by the disturbances.",
         format!(
-            "median steps against the undisturbed run: {}",
-            text.join("; ")
+            "median steps against the undisturbed run: {}. Undisturbed {:.0} steps against the \
+             footnote-2 bound of {bound:.0}. Removal of 1 / 10 modules with each field and rule \
+             (amas-fig27-rules, medians): {}",
+            text.join("; "),
+            base.median,
+            rules.join(", ")
         ),
-        r.rows("amas-fig27").len(),
+        r.rows("amas-fig27").len() + r.rows("amas-fig27-rules").len(),
         Verdict::from(flat),
         "Holds if the fewest disturbances tried cost less than 5 % of the undisturbed median. \
-         Undisturbed, the field is level across the square, each robot builds one column and \
-         no robot meets another (the run takes the bound's time). A single disturbed module \
-         mixes the columns, and from then on loaded and unloaded robots meet head-on: the cost \
-         jumps at the first disturbance instead of staying flat up to a threshold.",
+         Undisturbed, the field is level across the square, each of the 28 robots starts on its \
+         own supply module and builds one column, no robot meets another, and the run takes \
+         the bound's time: there is no slack to hide a lost module in. One removed module costs \
+         its column's robot an extra trip, and mixes the columns, so loaded and unloaded robots \
+         meet head-on from then on: the cost jumps at the first disturbance, with either field \
+         and either rule, instead of staying flat up to a threshold. A flat start needs slack \
+         in the undisturbed run, which the setup of 5.3 (28 robots on a square 28 wide) does \
+         not leave.",
     ));
 }
 
@@ -380,23 +451,41 @@ fn bridge_findings(r: &Results, out: &mut Vec<Finding>) {
         &[("scenario", json!("amas-bridge-staged"))],
         "dismantled",
     );
+    let relays = |scenario: &str| {
+        r.stats("amas-bridge", &[("scenario", json!(scenario))], "relays")
+            .mean
+    };
     out.push(Finding::new(
         "§6.4, fig. 33",
         "The 35×15 bridge, five robots, discrete field with module relay, ten trials: assembly \
          using disassembly and reassembly takes fewer steps than normal assembly in one stage \
          (which lets the deck overhang).",
         format!(
-            "one stage {}; staged {} (modules from the conveyor {}, dismantled and reused {})",
+            "one stage {}; staged {} (modules from the conveyor {}, dismantled and reused {}); \
+             relays per run: one stage {:.0}, staged {:.0}",
             single.describe(0),
             staged.describe(0),
             picked.describe(0),
-            dismantled.describe(0)
+            dismantled.describe(0),
+            relays("amas-bridge-single"),
+            relays("amas-bridge-staged"),
         ),
         single.n + staged.n,
         Verdict::from(staged.mean < single.mean),
         "Three targets (figure 32 is not in the text): a block 5 rows high, the deck raised to \
          rows 5–9 on piers, then to rows 0–4; each stage builds on top and removes the middle \
-         below, and while a module may be removed the conveyor offers none.",
+         below, and while a module may be removed the conveyor offers none. Section 6 gives the \
+         schedule: stages follow one another (the next target is switched in once the current \
+         one is complete), and within a stage dismantled modules go straight to the growth \
+         front, as in Kumiki. The time goes into the dismantling stages: robots remove the \
+         block where they reach it first, next to the new deck and from the conveyor below, \
+         which leaves one-wide remnants that the connection rule lets go only from their \
+         ends; those are reached over the conveyor and the piers, and robots meeting in them \
+         swap loads again and again (the relays). Switching stages when the target alone is \
+         full, letting the conveyor go on offering modules, leaving the conveyor out of the \
+         connection rule, counting modules that may go as supply too, or raising the deck in \
+         more, smaller stages did not make the staged bridge faster than one stage \
+         (docs/models/amas.md, interpretation 28).",
     ));
 }
 

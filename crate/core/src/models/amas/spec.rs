@@ -1,26 +1,22 @@
 //! The scenario body of the AMAS model: parsing, limits and the shapes laid on the lattice.
 
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use super::{actions, Amas};
 use crate::error::{Error, Result};
 use crate::lattice::{Lattice, Square};
+use crate::limits::{AmasLimits, Limits};
+use crate::models::{self, Action, Model};
 use crate::shape::{self, Grid2};
 
-/// The largest lattice side accepted, in cells, supply rows included.
-pub const MAX_SIDE: u32 = 2048;
-/// The largest number of supply rows.
-pub const MAX_SUPPLY_ROWS: u32 = 64;
 /// The largest `field_updates_per_step`.
 pub const MAX_UPDATES: u32 = 1000;
 /// The largest duration of one action, in steps.
 pub const MAX_DURATION: u32 = 1000;
-/// The largest number of stage targets before the final one.
-pub const MAX_STAGES: usize = 64;
-/// The largest number of cells of all stage targets together (lattice cells × targets).
-pub const MAX_STAGE_CELLS: u64 = 1 << 26;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum FieldKind {
     /// Equation 1: one diffusing potential, growth front high, supply low.
@@ -30,7 +26,7 @@ pub enum FieldKind {
     Discrete,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Collision {
     /// Random tokens: the largest moves, the others wait (section 4.6).
@@ -42,7 +38,7 @@ pub enum Collision {
     Blackboard,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Communication {
     /// Robots settle a whole chain of moves at once: a robot may follow one that leaves its
@@ -54,45 +50,69 @@ pub enum Communication {
     Radius2,
 }
 
-#[derive(Deserialize, Serialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(rename = "AmasSpec")]
 pub struct Spec {
     /// The final target shape: shape text (rows, top first) or `{"rect": [w, h]}`.
     pub target: Value,
     /// Intermediate targets built, in order, before `target` (section 6.4).
     #[serde(default)]
+    #[schemars(length(max = Limits::PAGE.amas.stages))]
     pub stages: Vec<Value>,
     /// Modules already built when the run starts.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub initial: Option<Value>,
+    /// Assembler robots, placed at random on distinct supply modules; at most one per supply
+    /// module.
+    #[schemars(range(min = 1))]
     pub robots: u32,
+    /// The gradient field the modules compute (equation 1 or 2).
     #[serde(default)]
     pub field: FieldKind,
+    /// How robots settle conflicts over a module (section 4.6).
     #[serde(default)]
     pub collision: Collision,
+    /// Field updates (sweeps) per step, U.
     #[serde(default = "default_updates")]
+    #[schemars(range(min = 1, max = MAX_UPDATES))]
     pub field_updates_per_step: u32,
-    /// D of equation 1.
+    /// D of equation 1; above 0.25 the update is unstable.
     #[serde(default = "default_diffusion")]
+    #[schemars(range(max = 0.25))]
     pub diffusion: f64,
     /// Footnote 3: below this spread of the neighbours' values there is no effective gradient.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient_threshold: Option<f64>,
+    /// Rows of the module supply under the shape.
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = Limits::PAGE.amas.supply_rows))]
     pub supply_rows: u32,
+    /// Steps a move to a neighbouring module takes.
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub move_duration: u32,
+    /// Steps picking a module from the supply takes.
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub pick_duration: u32,
+    /// Steps placing a module takes.
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub place_duration: u32,
+    /// Steps handing a module over to another robot takes (collision `relay`).
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub relay_duration: u32,
+    /// Steps a robot that lost a collision waits.
     #[serde(default = "one")]
+    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub collision_penalty: u32,
     /// Appendix B: steps a turn (left, right or 180°) takes before a move in a new direction.
     #[serde(default)]
+    #[schemars(range(max = MAX_DURATION))]
     pub turn_duration: u32,
+    /// How far robots hear each other when they settle moves (appendix A.1).
     #[serde(default)]
     pub communication: Communication,
 }
@@ -153,10 +173,11 @@ pub struct Plan {
     pub params: Params,
 }
 
-fn shape_value(v: &Value, path: &str) -> Result<Grid2> {
+fn shape_value(v: &Value, path: &str, limits: &Limits) -> Result<Grid2> {
+    let max_side = limits.amas.side;
     match v {
         Value::String(text) => {
-            let g = shape::parse_square(text).map_err(|e| e.within(path))?;
+            let g = shape::parse_square_within(text, limits).map_err(|e| e.within(path))?;
             if g.count() == 0 {
                 return Err(Error::field(path, "has no '#' cells"));
             }
@@ -174,10 +195,10 @@ fn shape_value(v: &Value, path: &str) -> Result<Grid2> {
             };
             let side = |v: &Value, what: &str| -> Result<u32> {
                 match v.as_u64() {
-                    Some(n) if (1..=u64::from(MAX_SIDE)).contains(&n) => Ok(n as u32),
+                    Some(n) if (1..=u64::from(max_side)).contains(&n) => Ok(n as u32),
                     _ => Err(Error::field(
                         format!("{path}.rect"),
-                        format!("{what} must be a whole number from 1 to {MAX_SIDE}"),
+                        format!("{what} {v} is not a whole number from 1 to {max_side}"),
                     )),
                 }
             };
@@ -243,11 +264,44 @@ fn duration(v: u32, name: &str) -> Result<u32> {
     }
 }
 
-pub fn read(spec: Spec) -> Result<Plan> {
-    if spec.stages.len() > MAX_STAGES {
+impl Plan {
+    /// Cells of the lattice: the rows above the supply and the supply rows.
+    pub fn cells(&self) -> usize {
+        self.w as usize * (self.shape_h + self.supply_rows) as usize
+    }
+}
+
+impl models::Spec for Spec {
+    type Checked = Plan;
+
+    fn validate(&self, limits: &Limits) -> Result<Plan> {
+        read(self, limits)
+    }
+
+    fn check_action(plan: &Plan, action: &Action) -> Result<()> {
+        actions::parse(action, plan.cells()).map(|_| ())
+    }
+
+    fn build(plan: Plan, seed: u64) -> Box<dyn Model> {
+        Box::new(Amas::from_checked(plan, seed))
+    }
+}
+
+/// Checks every key and lays the shapes on the lattice, allocating no more than the shapes.
+fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
+    let AmasLimits {
+        side: max_side,
+        supply_rows: max_supply_rows,
+        stages: max_stages,
+        stage_cells: max_stage_cells,
+    } = limits.amas;
+    if spec.stages.len() > max_stages {
         return Err(Error::field(
             "stages",
-            format!("at most {MAX_STAGES} stages"),
+            format!(
+                "{} stages are too many; at most {max_stages}",
+                spec.stages.len()
+            ),
         ));
     }
     // Rectangles are cheap to write and costly to hold: bound them before building any.
@@ -259,33 +313,36 @@ pub fn read(spec: Spec) -> Result<Plan> {
             Some(r) => r
                 .iter()
                 .filter_map(Value::as_u64)
-                .product::<u64>()
-                .min(1 << 32),
+                .try_fold(1u64, u64::checked_mul)
+                .map_or(1 << 32, |n| n.min(1 << 32)),
             None => 0,
         })
-        .sum();
-    if declared > MAX_STAGE_CELLS {
+        .fold(0u64, u64::saturating_add);
+    if declared > max_stage_cells {
         return Err(Error::field(
             "stages",
-            format!("the targets hold more than {MAX_STAGE_CELLS} cells in all"),
+            format!("the targets hold more than {max_stage_cells} cells in all"),
         ));
     }
     let mut shapes = Vec::with_capacity(spec.stages.len() + 1);
     for (i, v) in spec.stages.iter().enumerate() {
         shapes.push((
             format!("stages[{i}]"),
-            shape_value(v, &format!("stages[{i}]"))?,
+            shape_value(v, &format!("stages[{i}]"), limits)?,
         ));
     }
-    shapes.push(("target".to_string(), shape_value(&spec.target, "target")?));
+    shapes.push((
+        "target".to_string(),
+        shape_value(&spec.target, "target", limits)?,
+    ));
     let initial = match &spec.initial {
-        Some(v) => Some(shape_value(v, "initial")?),
+        Some(v) => Some(shape_value(v, "initial", limits)?),
         None => None,
     };
-    if !(1..=MAX_SUPPLY_ROWS).contains(&spec.supply_rows) {
+    if !(1..=max_supply_rows).contains(&spec.supply_rows) {
         return Err(Error::field(
             "supply_rows",
-            format!("must be from 1 to {MAX_SUPPLY_ROWS}"),
+            format!("must be from 1 to {max_supply_rows}"),
         ));
     }
     let w = shapes
@@ -300,21 +357,21 @@ pub fn read(spec: Spec) -> Result<Plan> {
         .chain(initial.iter().map(|g| g.h))
         .max()
         .unwrap_or(1);
-    if w > MAX_SIDE || shape_h + spec.supply_rows > MAX_SIDE {
+    if w > max_side || shape_h + spec.supply_rows > max_side {
         let (path, _) = shapes.last().expect("the target is always there");
         return Err(Error::field(
             path.as_str(),
             format!(
-                "{w}×{} cells (with the supply rows) exceeds the limit of {MAX_SIDE}×{MAX_SIDE}",
+                "{w}×{} cells (with the supply rows) exceeds the limit of {max_side}×{max_side}",
                 shape_h + spec.supply_rows
             ),
         ));
     }
-    if shapes.len() as u64 * u64::from(w) * u64::from(shape_h) > MAX_STAGE_CELLS {
+    if shapes.len() as u64 * u64::from(w) * u64::from(shape_h) > max_stage_cells {
         return Err(Error::field(
             "stages",
             format!(
-                "{} stage targets of {w}×{shape_h} cells are too many; at most {MAX_STAGE_CELLS} cells in all",
+                "{} stage targets of {w}×{shape_h} cells are too many; at most {max_stage_cells} cells in all",
                 shapes.len()
             ),
         ));

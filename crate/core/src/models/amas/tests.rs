@@ -8,6 +8,19 @@ use crate::run::Run;
 use crate::scenario::Scenario;
 use proptest::prelude::*;
 
+impl Amas {
+    /// The model of a test scenario, built the way a run builds it.
+    fn new(s: &Scenario) -> crate::Result<Amas> {
+        let crate::models::ModelSpec::Amas(spec) = &s.spec else {
+            panic!("not a amas scenario");
+        };
+        Ok(Amas::from_checked(
+            crate::models::Spec::validate(spec, s.limits)?,
+            s.seed,
+        ))
+    }
+}
+
 const L: &str = "##....\n##....\n##....\n######\n######\n";
 
 fn scenario(body: Value) -> Scenario {
@@ -495,9 +508,12 @@ fn bad_scenarios_name_the_field() {
     assert!(bad(json!({"target": ".."})).starts_with("target:"));
     assert!(bad(json!({"target": 7})).starts_with("target:"));
     assert!(bad(json!({"target": {"rect": [0, 3]}})).starts_with("target.rect:"));
-    let huge = format!("{}\n", "#".repeat(MAX_SIDE as usize + 1));
+    let huge = format!(
+        "{}\n",
+        "#".repeat(crate::Limits::PAGE.amas.side as usize + 1)
+    );
     assert!(bad(json!({"target": huge})).contains("exceeds the limit"));
-    let e = bad(json!({"target": {"rect": [10, MAX_SIDE]}}));
+    let e = bad(json!({"target": {"rect": [10, crate::Limits::PAGE.amas.side]}}));
     assert!(
         e.starts_with("target:") && e.contains("exceeds the limit"),
         "{e}"
