@@ -2,7 +2,8 @@
 // experiments and CSV. Runs happen in workers.
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
-import type { ExperimentInfo, PresetInfo } from './types';
+import scenarioSchema from '../docs/schema/scenario.schema.json';
+import type { ExperimentInfo, LessonInfo, PresetInfo } from './types';
 
 export async function loadCore(): Promise<void> {
   await init({ module_or_path: wasmUrl });
@@ -15,11 +16,20 @@ export function message(e: unknown): string {
 
 export const presets = (): PresetInfo[] => core.presets() as PresetInfo[];
 export const presetJson = (name: string): string => core.preset_json(name);
+export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];
+export const lessonJson = (name: string): string => core.lesson_json(name);
 export const normalize = (json: string): string => core.normalize_scenario(json);
-export const encodeLink = (json: string): string => core.encode_link(json);
-export const decodeLink = (link: string): string => core.decode_link(link);
-/** The behaviour version of its model that made a link, and this page's. */
-export const linkVersions = (link: string): { made_with: number; current: number } => core.link_model_versions(link) as { made_with: number; current: number };
+/** The link of a scenario the core validated before (the page's own); nothing is rebuilt. */
+export const encodeLink = (json: string): string => core.pack_link(json);
+/** The cells of the largest shape in scenario JSON, read from its text without building it. */
+export const estimateCells = (json: string): number => core.estimate_cells(json);
+/** A link's scenario JSON, not yet validated, and the model versions that made and read it. */
+export const unpackLink = (link: string): { scenario: string; made_with: number; current: number } =>
+  core.unpack_link(link) as { scenario: string; made_with: number; current: number };
+/** Sets one dotted path without validating: for a large scenario, which the worker validates. */
+export const setPath = (json: string, path: string, valueJson: string): string => core.set_scenario_path(json, path, valueJson);
+/** A fresh seed from crypto.getRandomValues (through getrandom), 0 to 2^53 − 1. */
+export const freshSeed = (): number => core.fresh_seed();
 export const goalProblem = (text: string): string | undefined => core.goal_problem(text);
 export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
 export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
@@ -29,6 +39,31 @@ export const query = <T = Record<string, unknown>>(model: string, name: string, 
   JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
 export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
 export const version = (): string => core.version();
+
+/** A JSON Schema node, as far as the page reads one. */
+export interface SchemaNode {
+  $ref?: string;
+  type?: string | string[];
+  description?: string;
+  const?: unknown;
+  enum?: unknown[];
+  oneOf?: SchemaNode[];
+  minimum?: number;
+  maximum?: number;
+  default?: unknown;
+  properties?: Record<string, SchemaNode>;
+}
+/** A model's scenario keys as the schema gives them, with the definitions they refer to. */
+export interface ModelSchema {
+  properties: Record<string, SchemaNode>;
+  defs: Record<string, SchemaNode>;
+}
+/** The schema of model `model`'s scenarios, from the published `docs/schema/scenario.schema.json`. */
+export function modelSchema(model: string): ModelSchema | undefined {
+  const defs = (scenarioSchema as { $defs: Record<string, SchemaNode> }).$defs;
+  const def = Object.values(defs).find((d) => d.properties?.model?.const === model);
+  return def?.properties ? { properties: def.properties, defs } : undefined;
+}
 
 export interface Shape {
   w: number;

@@ -1,5 +1,5 @@
-//! Registers every file in `presets/` and `experiments/` by its name, so adding a preset is adding
-//! one file.
+//! Registers every file in `presets/`, `lessons/` and `experiments/` by its name, so adding a preset
+//! or a lesson is adding one file.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -29,6 +29,7 @@ fn table(dir: &str, konst: &str, out: &mut String) {
 fn main() {
     let mut out = String::new();
     table("presets", "PRESET_FILES", &mut out);
+    table("lessons", "LESSON_FILES", &mut out);
     table("experiments", "EXPERIMENT_FILES", &mut out);
     let dest = Path::new(&std::env::var("OUT_DIR").unwrap()).join("registry.rs");
     std::fs::write(dest, out).unwrap();

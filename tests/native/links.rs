@@ -1,8 +1,8 @@
-//! Share links: round trips for every preset, clear errors for damaged links, and the links of
+//! Share links: round trips for every preset and lesson, clear errors for damaged links, and the links of
 //! earlier releases in `tests/fixtures/links.json`, which must keep opening.
 
 use kumiki_core::experiment::PROGRAM_VERSION;
-use kumiki_core::{hash, link, models, presets, Error, Run};
+use kumiki_core::{hash, lessons, link, models, presets, Error, Run, Scenario};
 use serde_json::{json, Value};
 
 const FIXTURE: &str = concat!(
@@ -11,6 +11,13 @@ const FIXTURE: &str = concat!(
 );
 /// Steps run from each fixture link before its state hash is taken.
 const STEPS: u64 = 150;
+
+/// Every built-in scenario, presets and lessons, with its name.
+fn builtins() -> impl Iterator<Item = (&'static str, Scenario)> {
+    presets::names()
+        .map(|n| (n, presets::scenario(n).unwrap()))
+        .chain(lessons::names().map(|n| (n, lessons::scenario(n).unwrap())))
+}
 
 fn hash_after(scenario: kumiki_core::Scenario, steps: u64) -> String {
     let mut run = Run::new(scenario).unwrap();
@@ -24,7 +31,7 @@ fn hash_after(scenario: kumiki_core::Scenario, steps: u64) -> String {
 /// must then still open and run.
 ///
 /// `KUMIKI_BLESS=1 cargo test -p kumiki-core --test links` adds a link, made by this program, for
-/// each preset the fixture lacks. It never rewrites an entry: the fixture is a record of links
+/// each preset or lesson the fixture lacks (a lesson's entry names it under "preset" too). It never rewrites an entry: the fixture is a record of links
 /// that are out in the world.
 #[test]
 fn links_of_earlier_releases_open_and_run_as_they_did() {
@@ -34,12 +41,11 @@ fn links_of_earlier_releases_open_and_run_as_they_did() {
     };
     let has = |stored: &[Value], name: &str| stored.iter().any(|e| e["preset"] == name);
     if std::env::var_os("KUMIKI_BLESS").is_some() {
-        for name in presets::names() {
+        for (name, scenario) in builtins() {
             if has(&stored, name) {
                 continue;
             }
-            let scenario = presets::scenario(name).unwrap();
-            let model = models::entry(&scenario.model).unwrap();
+            let model = models::entry(scenario.model()).unwrap();
             stored.push(json!({
                 "preset": name,
                 "made_by": PROGRAM_VERSION,
@@ -54,10 +60,10 @@ fn links_of_earlier_releases_open_and_run_as_they_did() {
         std::fs::write(FIXTURE, text).unwrap();
         return;
     }
-    for name in presets::names() {
+    for (name, _) in builtins() {
         assert!(
             has(&stored, name),
-            "preset {name} has no link in tests/fixtures/links.json; add one with KUMIKI_BLESS=1 cargo test -p kumiki-core --test links"
+            "{name} has no link in tests/fixtures/links.json; add one with KUMIKI_BLESS=1 cargo test -p kumiki-core --test links"
         );
     }
     for entry in &stored {
@@ -78,7 +84,7 @@ fn links_of_earlier_releases_open_and_run_as_they_did() {
                 hash,
                 entry["hash"].as_str().unwrap(),
                 "the {preset} link made by {made_by} runs differently, yet {} is still at model version {}: if its behaviour changed on purpose, raise model_version in its ModelEntry",
-                opened.scenario.model,
+                opened.scenario.model(),
                 opened.current
             );
         }
@@ -120,9 +126,8 @@ fn a_link_says_which_model_version_made_it() {
 }
 
 #[test]
-fn every_preset_survives_a_link_round_trip() {
-    for name in presets::names() {
-        let scenario = presets::scenario(name).unwrap();
+fn every_preset_and_lesson_survives_a_link_round_trip() {
+    for (name, scenario) in builtins() {
         let encoded = link::encode(&scenario);
         assert!(encoded.starts_with(link::PREFIX));
         assert!(encoded[3..]
@@ -135,6 +140,24 @@ fn every_preset_survives_a_link_round_trip() {
         ] {
             assert_eq!(link::decode(&form).unwrap(), scenario, "{name} via {form}");
         }
+    }
+}
+
+/// The page encodes the scenario it already validated from its JSON, and reads a large link's
+/// size before the worker validates it: both must agree with the checked paths.
+#[test]
+fn unchecked_packing_and_unpacking_match_the_checked_paths() {
+    for name in presets::names() {
+        let scenario = presets::scenario(name).unwrap();
+        let doc: Value = serde_json::from_str(&scenario.to_json_pretty()).unwrap();
+        let encoded = link::pack(doc.clone());
+        assert_eq!(encoded, link::encode(&scenario), "{name}");
+        let (unpacked, made_with) = link::unpack(&encoded).unwrap();
+        assert_eq!(unpacked, doc, "{name}");
+        assert_eq!(
+            made_with,
+            models::entry(scenario.model()).unwrap().model_version
+        );
     }
 }
 
@@ -198,7 +221,7 @@ fn canonical_scenarios_state_every_default() {
     let s = presets::scenario("fracta-triangle10").unwrap();
     for key in ["K", "L", "G", "I_th"] {
         assert!(
-            s.body.contains_key(key),
+            s.body().contains_key(key),
             "{key} missing from the canonical scenario"
         );
     }

@@ -2,7 +2,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use kumiki_wasm::{
-    decode_link, encode_link, link_model_versions, model_query, preset_json, ExperimentRunner, Sim,
+    decode_link, encode_link, estimate_cells, fresh_seed, link_model_versions, model_query,
+    pack_link, preset_json, set_scenario_path, unpack_link, ExperimentRunner, Sim,
 };
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -132,4 +133,31 @@ fn rewinding_gives_identical_hashes_and_a_click_in_the_past_forks() {
     assert!(sim.scenario_json().contains("\"at\": 100"));
     sim.advance(20);
     assert_ne!(sim.hash(), hashes[120], "the fork runs differently");
+}
+
+#[wasm_bindgen_test]
+fn fresh_seeds_come_from_crypto_and_fit_a_scenario() {
+    let a = fresh_seed().unwrap();
+    let b = fresh_seed().unwrap();
+    assert_ne!(a, b, "two draws of 53 bits");
+    for seed in [a, b] {
+        assert!((0.0..=9_007_199_254_740_991.0).contains(&seed) && seed.fract() == 0.0);
+    }
+}
+
+#[wasm_bindgen_test]
+fn large_scenarios_are_measured_and_packed_without_building() {
+    let json = preset_json("amas-L").unwrap();
+    assert_eq!(estimate_cells(&json), 14.0 * 12.0);
+    assert_eq!(estimate_cells("not json"), 0.0);
+    let big = set_scenario_path(&json, "target", r#"{"rect": [2048, 2040]}"#).unwrap();
+    assert_eq!(estimate_cells(&big), 2048.0 * 2040.0);
+    let link = pack_link(&json).unwrap();
+    assert_eq!(link, encode_link(&json).unwrap());
+    let unpacked = unpack_link(&link).unwrap();
+    let scenario = js_sys::Reflect::get(&unpacked, &"scenario".into())
+        .unwrap()
+        .as_string()
+        .unwrap();
+    assert_eq!(scenario, json);
 }

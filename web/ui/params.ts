@@ -1,5 +1,8 @@
-// The parameter form: one input per scenario key, generated from the scenario itself. A change is
-// validated by the core; an invalid value stays in its field with the core's message under it.
+// The parameter form: one input per scenario key, its kind read from the model's JSON Schema (a
+// select for every choice, bounds and help text from the schema), falling back to the value's own
+// type for a key the schema does not describe. A change is validated by the core; an invalid value
+// stays in its field with the core's message under it.
+import type { ModelSchema, SchemaNode } from '../wasm';
 import { clear, el } from './dom';
 
 const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise']);
@@ -7,8 +10,37 @@ const ORDER = ['name', 'description', 'max_steps'];
 
 export type Apply = (key: string, valueJson: string) => string | null;
 
+/** The node `$ref` points to, or the node itself. */
+function resolve(node: SchemaNode | undefined, schema: ModelSchema | undefined): SchemaNode | undefined {
+  const ref = node?.$ref?.replace('#/$defs/', '');
+  return ref ? { ...schema?.defs[ref], ...node, $ref: undefined } : node;
+}
+
+/** The constants a key may take, when the schema lists them (an enum). */
+export function choices(node: SchemaNode | undefined): unknown[] | undefined {
+  if (node?.enum) return node.enum;
+  const consts = node?.oneOf?.map((n) => n.const);
+  return consts?.length && consts.every((c) => c !== undefined) ? consts : undefined;
+}
+
+/** Help text: the key's description and each choice's. */
+function help(node: SchemaNode | undefined): string {
+  const lines = [node?.description ?? ''];
+  for (const option of node?.oneOf ?? []) {
+    if (option.const !== undefined && option.description) lines.push(`${String(option.const)}: ${option.description}`);
+  }
+  return lines.filter(Boolean).join('\n');
+}
+
 /** `locked` fields (an exercise's) are shown read-only, with a note. */
-export function renderParams(form: HTMLFormElement, scenario: Record<string, unknown>, apply: Apply, skip: string[] = [], locked: Set<string> = new Set()) {
+export function renderParams(
+  form: HTMLFormElement,
+  scenario: Record<string, unknown>,
+  apply: Apply,
+  skip: string[] = [],
+  locked: Set<string> = new Set(),
+  schema?: ModelSchema,
+) {
   const focused = document.activeElement instanceof HTMLElement && form.contains(document.activeElement) ? document.activeElement.id : '';
   clear(form);
   const keys = Object.keys(scenario).filter((k) => !HIDDEN.has(k) && k !== 'seed' && !skip.includes(k));
@@ -24,28 +56,46 @@ export function renderParams(form: HTMLFormElement, scenario: Record<string, unk
     const error = el('p', { class: 'error', id: `${id}-error`, role: 'status', 'aria-live': 'polite' });
     const wrap = el('div', { class: 'param' });
     const label = el('label', { for: id, text: key.replace(/_/g, ' ') });
-    let input: HTMLInputElement | HTMLTextAreaElement;
+    const node = resolve(schema?.properties[key], schema);
+    const options = choices(node);
+    const about = help(node);
+    const note = about ? el('p', { class: 'help', id: `${id}-help`, text: about }) : undefined;
+    const describedBy = note ? `${note.id} ${error.id}` : error.id;
+    let input: HTMLInputElement | HTMLTextAreaElement | HTMLSelectElement;
     let read: () => string;
-    if (typeof value === 'boolean') {
-      const box = el('input', { id, type: 'checkbox', 'aria-describedby': error.id });
+    if (options) {
+      const select = el('select', { id, 'aria-describedby': describedBy });
+      for (const option of options) {
+        const text = JSON.stringify(option);
+        const item = el('option', { value: text, text: String(option) });
+        item.selected = text === JSON.stringify(value);
+        select.append(item);
+      }
+      input = select;
+      read = () => select.value;
+    } else if (typeof value === 'boolean') {
+      const box = el('input', { id, type: 'checkbox', 'aria-describedby': describedBy });
       box.checked = value;
       input = box;
       read = () => JSON.stringify(box.checked);
     } else if (typeof value === 'number') {
-      const box = el('input', { id, type: 'number', step: 'any', value: String(value), 'aria-describedby': error.id });
+      const integer = node?.type === 'integer' || (Array.isArray(node?.type) && node.type.includes('integer'));
+      const box = el('input', { id, type: 'number', step: integer ? '1' : 'any', value: String(value), 'aria-describedby': describedBy });
+      if (node?.minimum !== undefined) box.min = String(node.minimum);
+      if (node?.maximum !== undefined) box.max = String(node.maximum);
       input = box;
       read = () => (box.value.trim() === '' ? '""' : box.value.trim());
     } else if (typeof value === 'string' && !value.includes('\n') && key !== 'description') {
-      const box = el('input', { id, type: 'text', value, 'aria-describedby': error.id });
+      const box = el('input', { id, type: 'text', value, 'aria-describedby': describedBy });
       input = box;
       read = () => JSON.stringify(box.value);
     } else if (typeof value === 'string') {
-      const area = el('textarea', { id, rows: Math.min(16, Math.max(3, value.split('\n').length + 1)), spellcheck: 'false', 'aria-describedby': error.id });
+      const area = el('textarea', { id, rows: Math.min(16, Math.max(3, value.split('\n').length + 1)), spellcheck: 'false', 'aria-describedby': describedBy });
       area.value = value;
       input = area;
       read = () => JSON.stringify(area.value);
     } else {
-      const area = el('textarea', { id, rows: 4, spellcheck: 'false', 'aria-describedby': error.id });
+      const area = el('textarea', { id, rows: 4, spellcheck: 'false', 'aria-describedby': describedBy });
       area.value = JSON.stringify(value, null, 1);
       input = area;
       read = () => area.value;
@@ -56,7 +106,9 @@ export function renderParams(form: HTMLFormElement, scenario: Record<string, unk
       wrap.classList.toggle('invalid', !!problem);
       input.setAttribute('aria-invalid', problem ? 'true' : 'false');
     });
-    wrap.append(label, input, error);
+    wrap.append(label, input);
+    if (note) wrap.append(note);
+    wrap.append(error);
     if (locked.has(key)) {
       input.disabled = true;
       wrap.classList.add('locked');

@@ -24,7 +24,7 @@ use serde_json::{json, Map, Value};
 /// Counts live heap bytes, so the benchmark can report the memory a run holds.
 ///
 /// A global allocator is chosen when the program is linked, not per command, so every command
-/// has it. It counts only after [`start_counting`], which `kumiki bench` alone calls: the other
+/// has it. It counts only after [`start_counting`], which only `kumiki bench` and `soak` call: the other
 /// commands pay one relaxed load of a flag that never changes under them. Measured on
 /// `kumiki sweep amas-fig23` (CPU seconds over five runs, two threads): the system allocator
 /// alone 1.95-2.00, this one not counting 1.94-2.07, counting 1.94-2.15; no difference shows.
@@ -34,6 +34,12 @@ static COUNTING: AtomicBool = AtomicBool::new(false);
 /// Bytes allocated minus bytes freed since counting started; it wraps when blocks allocated
 /// before are freed, and differences of it stay right.
 static LIVE: AtomicUsize = AtomicUsize::new(0);
+
+/// Heap bytes allocated and not yet freed since [`start_counting`] (wrapping; compare two
+/// readings).
+pub fn live_bytes() -> usize {
+    LIVE.load(Ordering::Relaxed)
+}
 
 /// Makes [`Counting`] count from now on.
 pub fn start_counting() {

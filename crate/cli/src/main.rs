@@ -5,8 +5,10 @@ mod check;
 mod pool;
 mod reproduce;
 mod shard;
+mod soak;
 
-// Counts only while `kumiki bench` measures; see `bench::Counting` for why it is installed.
+// Counts only while `kumiki bench` or `kumiki soak` measures; see `bench::Counting` for why it is
+// installed.
 #[global_allocator]
 static ALLOC: bench::Counting = bench::Counting;
 
@@ -18,13 +20,13 @@ use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use kumiki_core::experiment::{self, Experiment, Row, PROGRAM_VERSION};
 use kumiki_core::scenario::{parse_override, MAX_SEED, MAX_STEPS};
-use kumiki_core::{hash, link, presets, Run, Scenario};
+use kumiki_core::{hash, lessons, link, presets, Limits, Run, Scenario};
 use serde_json::Value;
 
 use shard::{Shard, Tag};
 
 const AFTER_HELP: &str = "\
-SCENARIO is a JSON file, a share link (or its #k1... part), or a preset name.
+SCENARIO is a JSON file, a share link (or its #k1... part), a preset name or a lesson name.
 EXPERIMENT is an experiment JSON file or a built-in experiment name.
 Runs of many seeds and sweeps use every core (--jobs to choose). Output: one JSON object per run
 and line, or CSV with a header. --shard I/N runs part of them (see docs/cluster.md); kumiki merge
@@ -48,18 +50,24 @@ enum Command {
     Presets,
     /// One built-in experiment name per line
     Experiments,
+    /// The built-in lessons (classroom exercises): name, model, paper section and title, one a line
+    Lessons,
     /// Print the scenario as JSON
     Show {
-        /// A JSON file, a share link or a preset name
+        /// A JSON file, a share link, a preset or a lesson name
         scenario: String,
+        #[command(flatten)]
+        size: Size,
     },
     /// Print a share link that opens the scenario in the page
     Link {
-        /// A JSON file, a share link or a preset name
+        /// A JSON file, a share link, a preset or a lesson name
         scenario: String,
         /// The page's address
         #[arg(long, value_name = "URL", default_value = "http://localhost:8080/")]
         base: String,
+        #[command(flatten)]
+        size: Size,
     },
     /// Run a scenario for one seed or many
     Run(RunArgs),
@@ -80,6 +88,20 @@ enum Command {
         #[command(flatten)]
         jobs: Jobs,
     },
+    /// Run each model's largest preset for many steps and sample its memory; one JSON line each
+    Soak {
+        /// Steps per model (a run that finishes is followed by the next seed)
+        #[arg(long, value_name = "N", default_value_t = 1_000_000,
+              value_parser = clap::value_parser!(u64).range(1..))]
+        steps: u64,
+        /// Steps between memory samples
+        #[arg(long, value_name = "N", default_value_t = 10_000,
+              value_parser = clap::value_parser!(u64).range(1..))]
+        every: u64,
+        /// Soak this model only
+        #[arg(long, value_name = "M")]
+        model: Option<String>,
+    },
     /// Run every model's paper experiments and write docs/reproduction.md and .json under DIR
     Reproduce {
         /// Print this model's part as Markdown instead of writing the report
@@ -93,6 +115,16 @@ enum Command {
         root: PathBuf,
         #[command(flatten)]
         jobs: Jobs,
+    },
+    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema) and the scenario
+    /// types generated from them (DIR/web/scenario.gen.ts)
+    Schema {
+        /// Compare the schemas under DIR with what this build derives; fail if they differ
+        #[arg(long)]
+        check: bool,
+        /// The repository root the schemas live under
+        #[arg(long, value_name = "DIR", default_value = ".")]
+        root: PathBuf,
     },
     /// Grade classroom hand-ins: replay each link and judge it by its exercise's goal
     Check {
@@ -110,6 +142,8 @@ enum Command {
         format: Format,
         #[command(flatten)]
         jobs: Jobs,
+        #[command(flatten)]
+        size: Size,
     },
     /// The models' helper calls: MODEL NAME and what each does
     Queries,
@@ -141,6 +175,23 @@ impl Jobs {
     }
 }
 
+#[derive(Args)]
+struct Size {
+    /// Accept scenarios beyond what the page draws, up to the core's large limits (see
+    /// docs/scenario-format.md)
+    #[arg(long)]
+    allow_large: bool,
+}
+
+impl Size {
+    fn limits(&self) -> &'static Limits {
+        match self.allow_large {
+            true => &Limits::LARGE,
+            false => &Limits::PAGE,
+        }
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Format {
     Json,
@@ -149,11 +200,12 @@ enum Format {
 
 #[derive(Args)]
 struct RunArgs {
-    /// A JSON file, a share link or a preset name
+    /// A JSON file, a share link, a preset or a lesson name
     scenario: String,
-    /// Run this seed instead of the scenario's
-    #[arg(long, value_name = "S", value_parser = clap::value_parser!(u64).range(0..=MAX_SEED))]
-    seed: Option<u64>,
+    /// Run this seed instead of the scenario's; `random` draws a fresh one from the system's
+    /// entropy, printed on stderr and recorded in the output
+    #[arg(long, value_name = "S|random", value_parser = parse_seed)]
+    seed: Option<SeedArg>,
     /// Run seeds 1..N
     #[arg(long, value_name = "N", conflicts_with = "seed",
           value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
@@ -172,6 +224,8 @@ struct RunArgs {
     /// Run only shard I of N (I from 0) of the seeds, as JSON lines for kumiki merge
     #[arg(long, value_name = "I/N", requires = "seeds")]
     shard: Option<Shard>,
+    #[command(flatten)]
+    size: Size,
 }
 
 #[derive(Args)]
@@ -185,6 +239,27 @@ struct SweepArgs {
     /// Run only shard I of N (I from 0) of the jobs, as JSON lines for kumiki merge
     #[arg(long, value_name = "I/N")]
     shard: Option<Shard>,
+    #[command(flatten)]
+    size: Size,
+}
+
+/// `--seed`: a seed a scenario accepts, or `random` for a fresh one.
+#[derive(Clone, Copy)]
+enum SeedArg {
+    Fixed(u64),
+    Random,
+}
+
+fn parse_seed(text: &str) -> Result<SeedArg, String> {
+    if text == "random" {
+        return Ok(SeedArg::Random);
+    }
+    match text.parse::<u64>() {
+        Ok(seed) if seed <= MAX_SEED => Ok(SeedArg::Fixed(seed)),
+        _ => Err(format!(
+            "'{text}' is not a seed: give a whole number from 0 to {MAX_SEED}, or 'random'"
+        )),
+    }
 }
 
 fn parse_set(text: &str) -> Result<(String, Value), String> {
@@ -252,16 +327,26 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 writeln!(out, "{name}")?;
             }
         }
+        Some(Command::Lessons) => {
+            for l in lessons::list()? {
+                writeln!(out, "{}\t{}\t{}\t{}", l.name, l.model, l.section, l.title)?;
+            }
+        }
         Some(Command::Experiments) => {
             for name in presets::experiment_names() {
                 writeln!(out, "{name}")?;
             }
         }
-        Some(Command::Show { scenario }) => {
-            writeln!(out, "{}", load_scenario(&scenario)?.to_json_pretty())?;
+        Some(Command::Show { scenario, size }) => {
+            let scenario = load_scenario(&scenario, size.limits())?;
+            writeln!(out, "{}", scenario.to_json_pretty())?;
         }
-        Some(Command::Link { scenario, base }) => {
-            let scenario = load_scenario(&scenario)?;
+        Some(Command::Link {
+            scenario,
+            base,
+            size,
+        }) => {
+            let scenario = load_scenario(&scenario, size.limits())?;
             writeln!(out, "{base}#{}", link::encode(&scenario))?;
         }
         Some(Command::Run(args)) => run(args, &mut out)?,
@@ -292,6 +377,16 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 writeln!(out, "{}", bench::measure(w, jobs.threads()))?;
             }
         }
+        Some(Command::Soak {
+            steps,
+            every,
+            model,
+        }) => {
+            bench::start_counting();
+            for model in soak::models(model.as_deref())? {
+                writeln!(out, "{}", soak::soak(model, steps, every)?)?;
+            }
+        }
         Some(Command::Reproduce {
             model,
             check,
@@ -311,18 +406,24 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
             exercise,
             format,
             jobs,
+            size,
         }) => {
+            let limits = size.limits();
             let handins = check::handins(links, file.as_deref())?;
-            let original = exercise.as_deref().map(load_scenario).transpose()?;
+            let original = exercise
+                .as_deref()
+                .map(|e| load_scenario(e, limits))
+                .transpose()?;
             check::run(
                 &handins,
                 original.as_ref(),
                 format == Format::Csv,
                 jobs.threads(),
-                load_scenario,
+                |h| load_scenario(h, limits),
                 &mut out,
             )?;
         }
+        Some(Command::Schema { check, root }) => schema(check, &root)?,
         Some(Command::Queries) => {
             for q in kumiki_core::models::QUERIES {
                 writeln!(out, "{} {}\t{}", q.model, q.name, q.description)?;
@@ -343,15 +444,50 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
     Ok(())
 }
 
-/// A scenario from a file, a link or a preset name, in that order.
-fn load_scenario(target: &str) -> Result<Scenario, Failure> {
+/// Writes `docs/schema/` under `root`, or with `check` says whether it is current.
+fn schema(check: bool, root: &Path) -> Result<(), Failure> {
+    let files = kumiki_core::schema::files();
+    if check {
+        let stale: Vec<String> = files
+            .iter()
+            .filter(|(path, text)| {
+                std::fs::read_to_string(root.join(path)).ok().as_ref() != Some(text)
+            })
+            .map(|(path, _)| path.clone())
+            .collect();
+        return match stale.is_empty() {
+            true => {
+                eprintln!("the schemas are current");
+                Ok(())
+            }
+            false => Err(Failure::Run(format!(
+                "{} {} not what this build derives: run 'kumiki schema' and commit the result",
+                stale.join(" and "),
+                if stale.len() == 1 { "is" } else { "are" }
+            ))),
+        };
+    }
+    for (path, text) in files {
+        let path = root.join(path);
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        }
+        std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(())
+}
+
+/// A scenario from a file, a link, a preset name or a lesson name, in that order, held to
+/// `limits`.
+fn load_scenario(target: &str, limits: &'static Limits) -> Result<Scenario, Failure> {
     let path = Path::new(target);
     if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
-        return Scenario::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")));
+        return Scenario::from_json_within(&text, limits)
+            .map_err(|e| Failure::Run(format!("{target}: {e}")));
     }
     if target.contains('#') || target.starts_with(link::PREFIX) {
-        let opened = link::open(target)?;
+        let opened = link::open_within(target, limits)?;
         if opened.version_differs() {
             let when = match opened.made_with < opened.current {
                 true => "an earlier",
@@ -359,21 +495,24 @@ fn load_scenario(target: &str) -> Result<Scenario, Failure> {
             };
             eprintln!(
                 "kumiki: this link was made with {when} Kumiki ({} behaviour version {}, this one runs {}); results may differ",
-                opened.scenario.model, opened.made_with, opened.current
+                opened.scenario.model(), opened.made_with, opened.current
             );
         }
         return Ok(opened.scenario);
     }
     if presets::names().any(|n| n == target) {
-        return Ok(presets::scenario(target)?);
+        return Ok(presets::scenario(target)?.with_limits(limits)?);
+    }
+    if lessons::names().any(|n| n == target) {
+        return Ok(lessons::scenario(target)?.with_limits(limits)?);
     }
     Err(Failure::Run(format!(
-        "'{target}' is not a file, a share link or a preset (see 'kumiki presets')"
+        "'{target}' is not a file, a share link, a preset or a lesson (see 'kumiki presets' and 'kumiki lessons')"
     )))
 }
 
 fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
-    let mut scenario = load_scenario(&args.scenario)?;
+    let mut scenario = load_scenario(&args.scenario, args.size.limits())?;
     let mut params = serde_json::Map::new();
     if !args.sets.is_empty() {
         scenario = scenario.with_overrides(&args.sets)?;
@@ -383,7 +522,13 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
         scenario = scenario.with_override("max_steps", m.into())?;
     }
     let seeds: Vec<u64> = match (args.seed, args.seeds) {
-        (Some(s), _) => vec![s],
+        (Some(SeedArg::Fixed(s)), _) => vec![s],
+        (Some(SeedArg::Random), _) => {
+            let seed = kumiki_seed::fresh_seed()
+                .map_err(|e| format!("no random seed could be drawn: {e}"))?;
+            eprintln!("kumiki: drew seed {seed}; --seed {seed} runs it again");
+            vec![seed]
+        }
         (None, Some(n)) => (1..=n).collect(),
         (None, None) => vec![scenario.seed],
     };
@@ -415,9 +560,10 @@ fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
     let path = Path::new(target);
     let experiment = if path.is_file() {
         let text = std::fs::read_to_string(path).map_err(|e| format!("{target}: {e}"))?;
-        Experiment::from_json(&text).map_err(|e| Failure::Run(format!("{target}: {e}")))?
+        Experiment::from_json_within(&text, args.size.limits())
+            .map_err(|e| Failure::Run(format!("{target}: {e}")))?
     } else {
-        Experiment::named_or_json(target)?
+        Experiment::named_or_json_within(target, args.size.limits())?
     };
     let jobs = experiment.jobs();
     let output = Output {

@@ -116,3 +116,40 @@ fn check_with_nothing_to_grade_is_a_usage_error() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("hand-in links"));
 }
+
+#[test]
+fn lessons_are_listed_and_graded_by_name() {
+    let out = kumiki(&["lessons"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let listed: Vec<&str> = text
+        .lines()
+        .map(|l| l.split('\t').next().unwrap())
+        .collect();
+    assert_eq!(listed, kumiki_core::lessons::names().collect::<Vec<_>>());
+    assert!(text.lines().all(|l| l.split('\t').count() == 4), "{text}");
+
+    let lesson = kumiki_core::lessons::scenario("lesson-chobie-forms").unwrap();
+    let solved = lesson.with_override("method", json!("cautious")).unwrap();
+    let handins = [&lesson, &solved].map(|s| format!("#{}", link::encode(s)));
+    let out = kumiki(&[
+        "check",
+        &handins[0],
+        &handins[1],
+        "--exercise",
+        "lesson-chobie-forms",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows: Vec<Value> = String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows[0]["met"], false);
+    assert_eq!(rows[1]["met"], true);
+    assert_eq!(rows[1]["changed"], json!(["method"]));
+}

@@ -185,3 +185,43 @@ fn run_writes_the_documented_json_line() {
     assert!(line.contains(r#","metrics":{"#) && !line.contains("scenario_hash"));
     assert_eq!(line.lines().count(), 1);
 }
+
+#[test]
+fn a_random_seed_is_recorded_and_replays() {
+    let out = kumiki(&["run", "amas-L", "--seed", "random", "--max-steps", "30"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let row: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let seed = row["seed"]
+        .as_u64()
+        .expect("the row records the seed drawn");
+    assert!(seed < 1 << 53);
+    let note = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        note,
+        format!("kumiki: drew seed {seed}; --seed {seed} runs it again\n")
+    );
+    let again = stdout(&[
+        "run",
+        "amas-L",
+        "--seed",
+        &seed.to_string(),
+        "--max-steps",
+        "30",
+    ]);
+    let replay: serde_json::Value = serde_json::from_str(&again).unwrap();
+    assert_eq!(
+        replay["hash"], row["hash"],
+        "seed {seed} replays the same run"
+    );
+}
+
+#[test]
+fn a_seed_that_is_neither_a_number_nor_random_is_refused() {
+    let out = kumiki(&["run", "amas-L", "--seed", "lucky"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'lucky' is not a seed"));
+}

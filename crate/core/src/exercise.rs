@@ -50,16 +50,25 @@ const MAX_DEPTH: usize = 32;
 /// ```
 /// `locked` maps dotted scenario paths to the teacher's values: the page shows those fields
 /// read-only, and `kumiki check` reports a hand-in whose values differ.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Exercise {
+    /// The exercise's title.
+    #[schemars(length(max = MAX_TITLE_CHARS))]
     pub title: String,
+    /// What the student is asked to do.
     #[serde(default)]
+    #[schemars(length(max = MAX_INSTRUCTIONS_CHARS))]
     pub instructions: String,
+    /// Dotted scenario paths and the teacher's values: fields students may not change.
     #[serde(default)]
     pub locked: BTreeMap<String, Value>,
+    /// A condition on the run's outcome, such as `completed and steps <= 800`.
+    #[schemars(length(max = MAX_GOAL_CHARS))]
     pub goal: String,
+    /// Hints shown one at a time.
     #[serde(default)]
+    #[schemars(length(max = MAX_HINTS), inner(length(max = MAX_HINT_CHARS)))]
     pub hints: Vec<String>,
 }
 

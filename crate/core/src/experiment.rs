@@ -23,6 +23,7 @@ use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
 use crate::hash;
+use crate::limits::Limits;
 use crate::models::Metrics;
 use crate::presets;
 use crate::run::Run;
@@ -30,7 +31,7 @@ use crate::scenario::{canonical, Scenario, MAX_SEED};
 
 /// The version of this program, carried by every row.
 pub const PROGRAM_VERSION: &str = concat!("kumiki ", env!("CARGO_PKG_VERSION"));
-const MAX_JOBS: usize = 1_000_000;
+pub const MAX_JOBS: usize = 1_000_000;
 
 #[derive(Clone, Debug)]
 pub struct Experiment {
@@ -108,21 +109,37 @@ impl Row {
 }
 
 impl Experiment {
+    /// Reads an experiment whose scenarios keep within the page's limits.
     pub fn from_json(text: &str) -> Result<Experiment> {
+        Experiment::from_json_within(text, &Limits::PAGE)
+    }
+
+    /// [`Experiment::from_json`] with scenarios (and their grid values) held to `limits`.
+    pub fn from_json_within(text: &str, limits: &'static Limits) -> Result<Experiment> {
         let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
-        Experiment::from_value(value)
+        Experiment::from_value_within(value, limits)
     }
 
     /// A built-in experiment by name, or an experiment file's text.
     pub fn named_or_json(name_or_text: &str) -> Result<Experiment> {
+        Experiment::named_or_json_within(name_or_text, &Limits::PAGE)
+    }
+
+    /// [`Experiment::named_or_json`] with scenarios held to `limits`.
+    pub fn named_or_json_within(name_or_text: &str, limits: &'static Limits) -> Result<Experiment> {
         if name_or_text.trim_start().starts_with('{') {
-            Experiment::from_json(name_or_text)
+            Experiment::from_json_within(name_or_text, limits)
         } else {
-            Experiment::from_json(presets::experiment_json(name_or_text)?)
+            Experiment::from_json_within(presets::experiment_json(name_or_text)?, limits)
         }
     }
 
     pub fn from_value(value: Value) -> Result<Experiment> {
+        Experiment::from_value_within(value, &Limits::PAGE)
+    }
+
+    /// [`Experiment::from_value`] with scenarios (and their grid values) held to `limits`.
+    pub fn from_value_within(value: Value, limits: &'static Limits) -> Result<Experiment> {
         let Value::Object(mut map) = value else {
             return Err(Error::field("", "an experiment is a JSON object"));
         };
@@ -153,10 +170,10 @@ impl Experiment {
                         let path = format!("scenarios[{i}]");
                         match item {
                             Value::String(name) => presets::scenario(&name)
+                                .and_then(|s| s.with_limits(limits))
                                 .map_err(|e| Error::field(&path, e.to_string())),
-                            obj @ Value::Object(_) => {
-                                Scenario::from_value(obj).map_err(|e| e.within(&path))
-                            }
+                            obj @ Value::Object(_) => Scenario::from_value_within(obj, limits)
+                                .map_err(|e| e.within(&path)),
                             _ => Err(Error::field(
                                 path,
                                 "expected a preset name or a scenario object",

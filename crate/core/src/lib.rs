@@ -4,7 +4,10 @@
 //! - [`models`]: the models and their registry;
 //! - [`scenario`]: the versioned JSON document that determines a run, and [`shape`] for the text
 //!   shapes inside it;
+//! - [`limits`]: every size a scenario may ask for, per model and lattice;
 //! - [`link`]: the share-link codec;
+//! - [`schema`]: the JSON Schemas of scenarios and experiments, derived from the same types;
+//! - [`presets`] and [`lessons`]: the built-in scenarios and classroom exercises;
 //! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`reproduce`]: the papers'
 //!   claims beside the figures of those runs;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
@@ -14,6 +17,8 @@ pub mod exercise;
 pub mod experiment;
 pub mod hash;
 pub mod lattice;
+pub mod lessons;
+pub mod limits;
 pub mod link;
 pub mod math;
 pub mod models;
@@ -22,10 +27,14 @@ pub mod reproduce;
 pub mod rng;
 pub mod run;
 pub mod scenario;
+#[cfg(feature = "schema")]
+pub mod schema;
+pub mod series;
 pub mod shape;
 pub mod timeline;
 
 pub use error::{Error, Result};
 pub use experiment::{Experiment, Row};
+pub use limits::Limits;
 pub use run::{Outcome, Run};
 pub use scenario::Scenario;

@@ -12,6 +12,7 @@ use base64::Engine as _;
 use serde_json::Value;
 
 use crate::error::{Error, Result};
+use crate::limits::Limits;
 use crate::models;
 use crate::scenario::{canonical, Scenario};
 
@@ -43,8 +44,19 @@ impl Opened {
 
 /// The fragment payload for a scenario (without the leading `#`).
 pub fn encode(scenario: &Scenario) -> String {
-    let mut doc = scenario.to_value();
-    let version = models::entry(&scenario.model).map_or(1, |e| e.model_version);
+    pack(scenario.to_value())
+}
+
+/// The fragment payload for a scenario document that was validated before (the JSON a
+/// [`Scenario`] writes), without validating it again: rebuilding a large model only to check it
+/// twice would hold the page for seconds. A document that is no valid scenario makes a link that
+/// [`open`] refuses.
+pub fn pack(mut doc: Value) -> String {
+    let version = doc
+        .get("model")
+        .and_then(Value::as_str)
+        .and_then(|model| models::entry(model).ok())
+        .map_or(1, |e| e.model_version);
     if let Value::Object(map) = &mut doc {
         map.insert(MODEL_VERSION_KEY.into(), version.into());
     }
@@ -58,8 +70,27 @@ pub fn decode(link: &str) -> Result<Scenario> {
     open(link).map(|o| o.scenario)
 }
 
-/// Reads a link and says which behaviour version of its model made it.
+/// Reads a link within the page's limits and says which behaviour version of its model made it.
 pub fn open(link: &str) -> Result<Opened> {
+    open_within(link, &Limits::PAGE)
+}
+
+/// [`open`] within `limits`.
+pub fn open_within(link: &str, limits: &'static Limits) -> Result<Opened> {
+    let (doc, made_with) = unpack(link)?;
+    let scenario = Scenario::from_value_within(doc, limits)?;
+    let current = models::entry(scenario.model())?.model_version;
+    Ok(Opened {
+        scenario,
+        made_with,
+        current,
+    })
+}
+
+/// The scenario document inside a link, not yet validated, and the behaviour version of its
+/// model that made it. Nothing is built: the page reads a large scenario's size this way and
+/// leaves its validation to the simulation worker, which opens it with [`Scenario::from_value`].
+pub fn unpack(link: &str) -> Result<(Value, u32)> {
     let mut doc: Value = serde_json::from_str(&decode_json(link)?).map_err(|e| Error::json(&e))?;
     let made_with = match doc
         .as_object_mut()
@@ -77,13 +108,7 @@ pub fn open(link: &str) -> Result<Opened> {
                 )
             })?,
     };
-    let scenario = Scenario::from_value(doc)?;
-    let current = models::entry(&scenario.model)?.model_version;
-    Ok(Opened {
-        scenario,
-        made_with,
-        current,
-    })
+    Ok((doc, made_with))
 }
 
 /// A byte as a person can read it: a visible character in quotes, anything else by its code.

@@ -1,5 +1,5 @@
 //! Built-in scenarios and experiments: one JSON file each under `presets/` and `experiments/`,
-//! registered by file name.
+//! registered by file name (the lessons under `lessons/` too: see [`crate::lessons`]).
 
 use crate::error::{Error, Result};
 use crate::scenario::Scenario;
@@ -34,7 +34,11 @@ pub fn experiment_json(name: &str) -> Result<&'static str> {
     lookup(EXPERIMENT_FILES, "experiment", name)
 }
 
-fn lookup(table: &'static [(&str, &str)], kind: &'static str, name: &str) -> Result<&'static str> {
+pub(crate) fn lookup(
+    table: &'static [(&str, &str)],
+    kind: &'static str,
+    name: &str,
+) -> Result<&'static str> {
     table
         .iter()
         .find(|(n, _)| *n == name)
@@ -64,7 +68,7 @@ mod tests {
                 !s.description.is_empty(),
                 "preset {name} needs a description"
             );
-            models::entry(&s.model).unwrap();
+            models::entry(s.model()).unwrap();
         }
     }
 

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::hash::{self, StateHasher};
-use crate::models::{self, Action, Metrics, Model};
+use crate::models::{Action, Metrics, Model};
 use crate::scenario::{Disturbance, Scenario};
 
 pub struct Run {
@@ -26,8 +26,9 @@ pub struct Outcome {
 }
 
 impl Run {
+    /// Builds the scenario's model, once.
     pub fn new(scenario: Scenario) -> Result<Run> {
-        let model = models::build(&scenario)?;
+        let model = scenario.build()?;
         Ok(Run {
             scenario,
             model,
@@ -137,6 +138,29 @@ impl Run {
             steps: self.model.steps(),
             hash: hash::hex(self.state_hash()),
             metrics: self.model.metrics(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::models::builds;
+    use crate::{link, presets};
+
+    /// Reading a scenario validates its model's description and actions without building the
+    /// model; the run builds it, once.
+    #[test]
+    fn one_load_from_a_link_builds_its_model_once() {
+        for name in presets::names() {
+            let link = link::encode(&presets::scenario(name).unwrap());
+            let before = builds::so_far();
+            let scenario = link::open(&link).unwrap().scenario;
+            let edited = scenario.with_override("seed", 7.into()).unwrap();
+            assert_eq!(builds::so_far(), before, "{name}: reading built the model");
+            let run = Run::new(edited).unwrap();
+            assert_eq!(builds::so_far(), before + 1, "{name}");
+            assert_eq!(run.steps(), 0);
         }
     }
 }

@@ -13,15 +13,17 @@
 //! }
 //! ```
 //!
-//! The envelope keys are read here; the rest (the model's "body") is handed to the model, which
-//! rejects unknown keys and invalid values by name. A disturbance is applied after `at` steps have
-//! run; its other keys are the model's action.
+//! The envelope keys are read here; the rest is read once into the model's typed description
+//! ([`ModelSpec`]), which rejects unknown keys and invalid values by name and is validated, with
+//! every scheduled action, without building the model. A disturbance is applied after `at` steps
+//! have run; its other keys are the model's action.
 
 use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
 use crate::exercise::Exercise;
-use crate::models;
+use crate::limits::Limits;
+use crate::models::{self, Action, Model, ModelSpec};
 
 /// The scenario format version this build reads and writes.
 pub const FORMAT_VERSION: u64 = 1;
@@ -37,12 +39,12 @@ pub const MAX_DESCRIPTION_CHARS: usize = 4000;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Disturbance {
     pub at: u64,
-    pub action: Map<String, Value>,
+    pub action: Action,
 }
 
+/// A read and validated scenario: the envelope and the model's typed description.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scenario {
-    pub model: String,
     pub name: String,
     pub description: String,
     pub seed: u64,
@@ -50,19 +52,31 @@ pub struct Scenario {
     pub disturbances: Vec<Disturbance>,
     /// A classroom exercise: instructions, locked fields and a goal (see [`crate::exercise`]).
     pub exercise: Option<Exercise>,
-    /// The model's own keys.
-    pub body: Map<String, Value>,
+    /// The model's own keys, read into its typed description.
+    pub spec: ModelSpec,
+    /// The size limits it was read under; its overrides and its run are held to them too.
+    pub limits: &'static Limits,
 }
 
 impl Scenario {
-    /// Reads and fully validates a scenario from JSON text.
+    /// Reads and fully validates a scenario from JSON text, within the page's limits.
     pub fn from_json(text: &str) -> Result<Scenario> {
-        let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
-        Scenario::from_value(value)
+        Scenario::from_json_within(text, &Limits::PAGE)
     }
 
-    /// Reads and fully validates a scenario from a JSON value.
+    /// Reads and fully validates a scenario from a JSON value, within the page's limits.
     pub fn from_value(value: Value) -> Result<Scenario> {
+        Scenario::from_value_within(value, &Limits::PAGE)
+    }
+
+    /// [`Scenario::from_json`] within `limits`.
+    pub fn from_json_within(text: &str, limits: &'static Limits) -> Result<Scenario> {
+        let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
+        Scenario::from_value_within(value, limits)
+    }
+
+    /// [`Scenario::from_value`] within `limits`.
+    pub fn from_value_within(value: Value, limits: &'static Limits) -> Result<Scenario> {
         let Value::Object(mut map) = value else {
             return Err(Error::field("", "a scenario is a JSON object"));
         };
@@ -70,29 +84,32 @@ impl Scenario {
         let mut map = migrate(version, map)?;
         let model = take_string(&mut map, "model", None)?;
         let entry = models::entry(&model)?;
-        let mut scenario = Scenario {
-            name: take_text(&mut map, "name", MAX_NAME_CHARS)?,
-            description: take_text(&mut map, "description", MAX_DESCRIPTION_CHARS)?,
-            seed: take_u64(&mut map, "seed", Some(1), MAX_SEED)?,
-            max_steps: take_u64(
-                &mut map,
-                "max_steps",
-                Some(entry.default_max_steps),
-                MAX_STEPS,
-            )?,
-            disturbances: take_disturbances(&mut map)?,
-            exercise: None,
-            model,
-            body: Map::new(),
-        };
+        let name = take_text(&mut map, "name", MAX_NAME_CHARS)?;
+        let description = take_text(&mut map, "description", MAX_DESCRIPTION_CHARS)?;
+        let seed = take_u64(&mut map, "seed", Some(1), MAX_SEED)?;
+        let max_steps = take_u64(
+            &mut map,
+            "max_steps",
+            Some(entry.default_max_steps),
+            MAX_STEPS,
+        )?;
+        let disturbances = take_disturbances(&mut map)?;
         let exercise = map.remove("exercise");
-        scenario.body = map;
-        if scenario.max_steps == 0 {
+        if max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
-        scenario.body = (entry.normalize)(&scenario)?;
-        // Building the model checks the body and every scheduled action.
-        models::build(&scenario)?;
+        let spec = ModelSpec::read(&model, map)?;
+        spec.validate(limits, disturbances.iter().map(|d| &d.action))?;
+        let mut scenario = Scenario {
+            name,
+            description,
+            seed,
+            max_steps,
+            disturbances,
+            exercise: None,
+            spec,
+            limits,
+        };
         if let Some(section) = exercise {
             let doc = scenario.to_value();
             scenario.exercise =
@@ -101,11 +118,31 @@ impl Scenario {
         Ok(scenario)
     }
 
+    /// The same scenario held to other limits (validated again).
+    pub fn with_limits(&self, limits: &'static Limits) -> Result<Scenario> {
+        Scenario::from_value_within(self.to_value(), limits)
+    }
+
+    /// The model's registered name.
+    pub fn model(&self) -> &'static str {
+        self.spec.model()
+    }
+
+    /// The model's keys as JSON, every default written out.
+    pub fn body(&self) -> Map<String, Value> {
+        self.spec.to_body()
+    }
+
+    /// Builds the model at step 0: the one place a scenario becomes a model.
+    pub fn build(&self) -> Result<Box<dyn Model>> {
+        self.spec.build(self.seed, self.limits)
+    }
+
     /// The whole scenario as one JSON object, keys sorted.
     pub fn to_value(&self) -> Value {
-        let mut map = self.body.clone();
+        let mut map = self.body();
         map.insert("version".into(), FORMAT_VERSION.into());
-        map.insert("model".into(), self.model.clone().into());
+        map.insert("model".into(), self.model().into());
         map.insert("name".into(), self.name.clone().into());
         map.insert("description".into(), self.description.clone().into());
         map.insert("seed".into(), self.seed.into());
@@ -153,7 +190,7 @@ impl Scenario {
     pub fn with_override(&self, path: &str, value: Value) -> Result<Scenario> {
         let mut doc = self.to_value();
         set_path(&mut doc, path, value)?;
-        Scenario::from_value(doc)
+        Scenario::from_value_within(doc, self.limits)
     }
 
     /// A copy with several overrides applied at once before validating.
@@ -162,7 +199,7 @@ impl Scenario {
         for (path, value) in overrides {
             set_path(&mut doc, path, value.clone())?;
         }
-        Scenario::from_value(doc)
+        Scenario::from_value_within(doc, self.limits)
     }
 }
 

@@ -16,25 +16,24 @@
 //! are padded with empty cells.
 
 use crate::error::{Error, Result};
+use crate::limits::Limits;
 
-/// The most cells a shape's text may describe (width × height, × layers on the cubic lattice).
-/// Rows are padded to the widest, so a short text can describe a huge rectangle: the size is
-/// computed from the text in 64 bits and checked against this before anything is allocated.
-/// Each model then applies its own, smaller limits to the shapes it accepts.
-pub const MAX_SHAPE_CELLS: u64 = 1 << 24;
-
-/// The cell count of a `dims` box, checked against [`MAX_SHAPE_CELLS`] without overflowing.
-fn checked_cells(dims: &[u64]) -> Result<usize> {
+/// The cell count of a `dims` box, checked against `max` (the most cells a shape's text may
+/// describe, [`Limits::shape_cells`]) without overflowing. Rows are padded to the widest, so a
+/// short text can describe a huge rectangle: the size is computed from the text in 64 bits and
+/// checked before anything is allocated. Each model then applies its own, smaller limits to the
+/// shapes it accepts.
+fn checked_cells(dims: &[u64], max: u64) -> Result<usize> {
     let total = dims
         .iter()
         .try_fold(1u64, |acc, &d| acc.checked_mul(d))
-        .filter(|&n| n <= MAX_SHAPE_CELLS);
+        .filter(|&n| n <= max);
     match total {
         Some(n) => Ok(n as usize),
         None => Err(Error::field(
             "",
             format!(
-                "the shape spans {} cells, more than the {MAX_SHAPE_CELLS} a shape may have",
+                "the shape spans {} cells, more than the {max} a shape may have",
                 dims.iter()
                     .map(u64::to_string)
                     .collect::<Vec<_>>()
@@ -107,7 +106,7 @@ fn cell(ch: char, row: usize, col: usize) -> Result<bool> {
     }
 }
 
-fn build(rows: Vec<Vec<bool>>) -> Result<Grid2> {
+fn build(rows: Vec<Vec<bool>>, max: u64) -> Result<Grid2> {
     if rows.is_empty() {
         return Err(Error::field(
             "",
@@ -116,7 +115,7 @@ fn build(rows: Vec<Vec<bool>>) -> Result<Grid2> {
     }
     let w = rows.iter().map(Vec::len).max().unwrap_or(0);
     let h = rows.len();
-    let mut cells = Vec::with_capacity(checked_cells(&[w as u64, h as u64])?);
+    let mut cells = Vec::with_capacity(checked_cells(&[w as u64, h as u64], max)?);
     for row in rows {
         let n = row.len();
         cells.extend(row);
@@ -129,8 +128,13 @@ fn build(rows: Vec<Vec<bool>>) -> Result<Grid2> {
     })
 }
 
-/// Parses a square-lattice shape (`.##.` rows).
+/// Parses a square-lattice shape (`.##.` rows) of at most the page's [`Limits::shape_cells`].
 pub fn parse_square(text: &str) -> Result<Grid2> {
+    parse_square_within(text, &Limits::PAGE)
+}
+
+/// [`parse_square`] within `limits`.
+pub fn parse_square_within(text: &str, limits: &Limits) -> Result<Grid2> {
     let rows = trimmed_lines(text)
         .iter()
         .enumerate()
@@ -141,11 +145,17 @@ pub fn parse_square(text: &str) -> Result<Grid2> {
                 .collect()
         })
         .collect::<Result<Vec<Vec<bool>>>>()?;
-    build(rows)
+    build(rows, limits.shape_cells)
 }
 
-/// Parses a hex-lattice shape (space-separated cells, odd rows indented).
+/// Parses a hex-lattice shape (space-separated cells, odd rows indented) of at most the page's
+/// [`Limits::shape_cells`].
 pub fn parse_hex(text: &str) -> Result<Grid2> {
+    parse_hex_within(text, &Limits::PAGE)
+}
+
+/// [`parse_hex`] within `limits`.
+pub fn parse_hex_within(text: &str, limits: &Limits) -> Result<Grid2> {
     let rows = trimmed_lines(text)
         .iter()
         .enumerate()
@@ -165,14 +175,20 @@ pub fn parse_hex(text: &str) -> Result<Grid2> {
                 .collect()
         })
         .collect::<Result<Vec<Vec<bool>>>>()?;
-    build(rows)
+    build(rows, limits.shape_cells)
 }
 
-/// Parses a cubic-lattice shape: square-lattice layers from the ground up, separated by `---`.
+/// Parses a cubic-lattice shape: square-lattice layers from the ground up, separated by `---`,
+/// of at most the page's [`Limits::shape_cells`].
 pub fn parse_cubic(text: &str) -> Result<Grid3> {
+    parse_cubic_within(text, &Limits::PAGE)
+}
+
+/// [`parse_cubic`] within `limits`.
+pub fn parse_cubic_within(text: &str, limits: &Limits) -> Result<Grid3> {
     let mut layers: Vec<Grid2> = Vec::new();
     for (n, block) in text.split("---").enumerate() {
-        let layer = parse_square(block).map_err(|e| match e {
+        let layer = parse_square_within(block, limits).map_err(|e| match e {
             Error::Field { reason, .. } => Error::field("", format!("layer {}: {reason}", n + 1)),
             other => other,
         })?;
@@ -180,7 +196,10 @@ pub fn parse_cubic(text: &str) -> Result<Grid3> {
     }
     let w = layers.iter().map(|l| l.w).max().unwrap_or(0);
     let h = layers.iter().map(|l| l.h).max().unwrap_or(0);
-    let size = checked_cells(&[w as u64, h as u64, layers.len() as u64])?;
+    let size = checked_cells(
+        &[w as u64, h as u64, layers.len() as u64],
+        limits.shape_cells,
+    )?;
     let d = layers.len() as u32;
     let mut cells = vec![false; size];
     for (z, layer) in layers.iter().enumerate() {
@@ -193,6 +212,54 @@ pub fn parse_cubic(text: &str) -> Result<Grid3> {
         }
     }
     Ok(Grid3 { w, h, d, cells })
+}
+
+/// The cells of the box a shape text describes, counted from the text alone: no parsing, no
+/// allocation, saturating instead of overflowing. A row's cells are its `#` and `.` characters,
+/// so this holds for square, hex and cubic texts alike (the widest row times the rows, times the
+/// `---` layers). The page uses it to tell a large scenario before anything is built.
+pub fn text_cells(text: &str) -> u64 {
+    let (mut w, mut h, mut layers) = (0u64, 0u64, 0u64);
+    for block in text.split("---") {
+        layers += 1;
+        let rows = block
+            .lines()
+            .map(|line| line.bytes().filter(|&b| b == b'#' || b == b'.').count() as u64);
+        let (mut widest, mut count) = (0u64, 0u64);
+        for cells in rows.filter(|&n| n > 0) {
+            widest = widest.max(cells);
+            count += 1;
+        }
+        w = w.max(widest);
+        h = h.max(count);
+    }
+    w.saturating_mul(h).saturating_mul(layers)
+}
+
+/// The cells of the largest shape a scenario document describes, from its text alone: every
+/// string is read as a shape text ([`text_cells`]) and every `{"rect": [w, h]}` as a `w × h`
+/// box. An estimate of the lattice a model would build (margins and supply rows are not
+/// counted), used to open large scenarios away from the page's main thread.
+pub fn estimate_cells(doc: &serde_json::Value) -> u64 {
+    use serde_json::Value;
+    match doc {
+        Value::String(text) => text_cells(text),
+        Value::Array(items) => items.iter().map(estimate_cells).max().unwrap_or(0),
+        Value::Object(map) => {
+            let rect = map.get("rect").and_then(Value::as_array).map(|sides| {
+                sides
+                    .iter()
+                    .map(|v| v.as_u64().unwrap_or(0))
+                    .fold(1u64, u64::saturating_mul)
+            });
+            map.values()
+                .map(estimate_cells)
+                .chain(rect)
+                .max()
+                .unwrap_or(0)
+        }
+        _ => 0,
+    }
 }
 
 /// The text form of a square-lattice shape, the inverse of [`parse_square`].
@@ -244,6 +311,39 @@ pub fn cubic_text(g: &Grid3) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn text_cells_counts_the_box_without_parsing() {
+        assert_eq!(text_cells(".##.\n####\n#...\n"), 12);
+        assert_eq!(
+            text_cells("#\n####\n\n"),
+            8,
+            "short rows are padded to the widest"
+        );
+        assert_eq!(
+            text_cells(". # # .\n # # # .\n"),
+            8,
+            "hex cells are counted, not spaces"
+        );
+        assert_eq!(text_cells("##\n##\n---\n#\n"), 8, "two layers of 2×2");
+        let wide = "#".repeat(1 << 19);
+        let tall = format!("{wide}\n{}", "#\n".repeat(1 << 19));
+        assert_eq!(text_cells(&tall), (1u64 << 19) * ((1 << 19) + 1));
+    }
+
+    #[test]
+    fn estimate_cells_takes_the_largest_shape_or_rect() {
+        let doc = serde_json::json!({
+            "name": "a",
+            "target": {"rect": [2048, 2040]},
+            "initial": "###\n###\n",
+            "stages": [{"rect": [4, 4]}],
+        });
+        assert_eq!(estimate_cells(&doc), 2048 * 2040);
+        let huge = serde_json::json!({"target": {"rect": [u64::MAX, 3]}});
+        assert_eq!(estimate_cells(&huge), u64::MAX);
+        assert_eq!(estimate_cells(&serde_json::json!({"robots": 5})), 0);
+    }
 
     #[test]
     fn square_round_trip() {

@@ -4,11 +4,12 @@
 
 use std::sync::Mutex;
 
-use js_sys::{Float32Array, Uint32Array, Uint8Array};
+use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
 use kumiki_core::scenario::Disturbance;
+use kumiki_core::series::{self, Series};
 use kumiki_core::timeline::Timeline;
-use kumiki_core::{hash, link, models, presets, shape, Run, Scenario};
+use kumiki_core::{hash, lessons, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
@@ -71,10 +72,10 @@ pub fn presets() -> Result<JsValue, JsError> {
             let s = presets::scenario(name).map_err(js_err)?;
             Ok(PresetInfo {
                 name,
-                title: models::entry(&s.model)
+                title: models::entry(s.model())
                     .map(|m| m.title.to_string())
                     .unwrap_or_default(),
-                model: s.model,
+                model: s.model().to_string(),
                 description: s.description,
             })
         })
@@ -85,6 +86,19 @@ pub fn presets() -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn preset_json(name: &str) -> Result<String, JsError> {
     presets::scenario(name)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// The built-in lessons: name, model, paper, section, exercise title and description.
+#[wasm_bindgen]
+pub fn lessons() -> Result<JsValue, JsError> {
+    to_js(&lessons::list().map_err(js_err)?)
+}
+
+#[wasm_bindgen]
+pub fn lesson_json(name: &str) -> Result<String, JsError> {
+    lessons::scenario(name)
         .map(|s| s.to_json_pretty())
         .map_err(js_err)
 }
@@ -127,6 +141,67 @@ pub fn link_model_versions(link_text: &str) -> Result<JsValue, JsError> {
         made_with: opened.made_with,
         current: opened.current,
     })
+}
+
+/// The cells of the largest shape a scenario's JSON describes, read from the text without
+/// building anything (see `shape::estimate_cells`); 0 when it is not JSON. The page opens a
+/// scenario above its threshold in the simulation worker, so the main thread never builds it.
+/// Saturates at 2^53 so it stays a JavaScript number.
+#[wasm_bindgen]
+pub fn estimate_cells(json: &str) -> f64 {
+    serde_json::from_str::<Value>(json)
+        .map(|doc| shape::estimate_cells(&doc).min(1 << 53) as f64)
+        .unwrap_or(0.0)
+}
+
+/// A link's scenario JSON, not yet validated, with the behaviour version of its model that made
+/// it and this program's: `{scenario, made_with, current}`. Nothing is built, so a large
+/// scenario's link can be read on the main thread and opened in the worker.
+#[wasm_bindgen]
+pub fn unpack_link(link_text: &str) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Unpacked {
+        scenario: String,
+        made_with: u32,
+        current: u32,
+    }
+    let (doc, made_with) = link::unpack(link_text).map_err(js_err)?;
+    let model = doc.get("model").and_then(Value::as_str).unwrap_or_default();
+    let current = models::entry(model).map_or(made_with, |e| e.model_version);
+    to_js(&Unpacked {
+        scenario: serde_json::to_string_pretty(&doc).map_err(js_err)?,
+        made_with,
+        current,
+    })
+}
+
+/// The share-link payload for scenario JSON that was validated before (the page's own scenario),
+/// without building its model again.
+#[wasm_bindgen]
+pub fn pack_link(json: &str) -> Result<String, JsError> {
+    serde_json::from_str::<Value>(json)
+        .map(link::pack)
+        .map_err(js_err)
+}
+
+/// Sets one dotted path of scenario JSON without validating the result: the page changes a large
+/// scenario this way and leaves its validation to the worker that opens it.
+#[wasm_bindgen]
+pub fn set_scenario_path(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
+    let value: Value =
+        serde_json::from_str(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
+    let mut doc: Value = serde_json::from_str(json).map_err(js_err)?;
+    kumiki_core::scenario::set_path(&mut doc, path, value).map_err(js_err)?;
+    serde_json::to_string_pretty(&doc).map_err(js_err)
+}
+
+/// A fresh seed from the system's entropy (`crypto.getRandomValues`), 0 to 2^53 − 1: the page's
+/// "New seed" writes it into the scenario, so the run replays from its link.
+#[wasm_bindgen]
+pub fn fresh_seed() -> Result<f64, JsError> {
+    kumiki_seed::fresh_seed()
+        .map(|seed| seed as f64)
+        .map_err(|e| JsError::new(&format!("no fresh seed could be drawn: {e}")))
 }
 
 /// Applies one dotted-path override to scenario JSON and returns the validated result.
@@ -223,6 +298,44 @@ pub fn shape_format(
 const KEYFRAME_BYTES: usize = 96 << 20;
 /// Steps between the first keyframes; the interval doubles as the run grows.
 const KEYFRAME_EVERY: u64 = 16;
+/// The share of stepping time keyframes may take. A small model in a large lattice copies more
+/// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
+const KEYFRAME_TIME_SHARE: f64 = 0.05;
+
+/// `performance.now()` of the page or worker, in milliseconds; `None` where there is none.
+fn clock() -> Option<js_sys::Function> {
+    let performance = js_sys::Reflect::get(&js_sys::global(), &"performance".into()).ok()?;
+    let now = js_sys::Reflect::get(&performance, &"now".into()).ok()?;
+    Some(now.dyn_into::<js_sys::Function>().ok()?.bind0(&performance))
+}
+
+/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
+struct KeyframeCost {
+    clock: Option<js_sys::Function>,
+    total: f64,
+    copying: f64,
+}
+
+impl KeyframeCost {
+    fn now(&self) -> f64 {
+        self.clock
+            .as_ref()
+            .and_then(|f| f.call0(&JsValue::NULL).ok())
+            .and_then(|v| v.as_f64())
+            .unwrap_or(0.0)
+    }
+
+    /// Whether keyframes took more than their share of the time measured; starts a new measure
+    /// when they did.
+    fn too_costly(&mut self) -> bool {
+        let costly = self.copying > KEYFRAME_TIME_SHARE * (self.total - self.copying).max(0.0)
+            && self.total > 20.0;
+        if costly {
+            (self.total, self.copying) = (0.0, 0.0);
+        }
+        costly
+    }
+}
 
 /// One running simulation, with the keyframes that let it go back.
 #[wasm_bindgen]
@@ -233,6 +346,9 @@ pub struct Sim {
     furthest: u64,
     /// The disturbances the scenario came with; a fork keeps them and drops later clicks.
     authored: Vec<Disturbance>,
+    /// Every step's metrics, for the live chart.
+    series: Series,
+    keyframe_cost: KeyframeCost,
 }
 
 #[wasm_bindgen]
@@ -246,20 +362,46 @@ impl Sim {
         // About 16 bytes of state a cell, and at least a few keyframes however large the lattice.
         let per_frame = 16 * (w as usize) * (h as usize) * (d.max(1) as usize) + 4096;
         let capacity = (KEYFRAME_BYTES / per_frame).clamp(4, 256);
+        let metrics = run.model().metrics();
+        let mut series = Series::new(&metrics, series::DEFAULT_CAPACITY);
+        series.record(run.steps(), &metrics);
         Ok(Sim {
             timeline: Timeline::new(&run, KEYFRAME_EVERY, capacity),
             run,
             furthest: 0,
             authored,
+            series,
+            keyframe_cost: KeyframeCost {
+                clock: clock(),
+                total: 0.0,
+                copying: 0.0,
+            },
         })
     }
 
-    /// Takes up to `n` steps, keeping keyframes; returns how many were taken.
+    /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
+    /// taken.
     pub fn advance(&mut self, n: u32) -> u32 {
         let mut taken = 0;
+        let start = self.keyframe_cost.now();
         while taken < n && self.run.step() {
-            self.timeline.record(&self.run);
+            // Only a step on the interval may keep a keyframe: time just those.
+            if self.run.steps() % self.timeline.keyframes().1 == 0 {
+                let t = self.keyframe_cost.now();
+                if self.timeline.record(&self.run) {
+                    self.keyframe_cost.copying += self.keyframe_cost.now() - t;
+                }
+            }
+            // Steps passed through again after going back are already recorded: skip their metrics.
+            let step = self.run.steps();
+            if self.series.last_step().is_none_or(|last| step > last) {
+                self.series.record(step, &self.run.model().metrics());
+            }
             taken += 1;
+        }
+        self.keyframe_cost.total += self.keyframe_cost.now() - start;
+        if self.keyframe_cost.too_costly() {
+            self.timeline.coarsen();
         }
         self.furthest = self.furthest.max(self.run.steps());
         taken
@@ -270,6 +412,19 @@ impl Sim {
     pub fn seek(&mut self, step: f64) {
         let step = (step.max(0.0) as u64).min(self.furthest);
         self.run = self.timeline.seek(step, self.run.scenario());
+    }
+
+    /// A metric's every-step record for the chart, merged into at most `points` points:
+    /// `[steps…, least…, greatest…]`, three runs of the same length.
+    pub fn chart(&self, metric: &str, points: u32) -> Float64Array {
+        let band = self.series.decimate(metric, points as usize);
+        let flat: Vec<f64> = [band.steps, band.min, band.max].concat();
+        Float64Array::from(flat.as_slice())
+    }
+
+    /// Steps per recorded bucket of the chart's series (1 until the record is full, then doubling).
+    pub fn chart_span(&self) -> f64 {
+        self.series.span() as f64
     }
 
     /// The furthest step reached, where the timeline ends.
@@ -370,6 +525,7 @@ impl Sim {
             self.run = fork;
         }
         self.timeline.truncate(now);
+        self.series.truncate(now);
         self.furthest = now;
         Ok(())
     }
@@ -431,6 +587,29 @@ pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, J
     models::query(model, name, &args)
         .map(|v| v.to_string())
         .map_err(js_err)
+}
+
+/// A bare run, without the keyframes and chart record a [`Sim`] keeps: the work `kumiki bench`
+/// times natively, so `npm run bench` compares like with like.
+#[wasm_bindgen]
+pub struct Stepper {
+    run: Run,
+}
+
+#[wasm_bindgen]
+impl Stepper {
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario_json: &str) -> Result<Stepper, JsError> {
+        let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
+        Ok(Stepper {
+            run: Run::new(scenario).map_err(js_err)?,
+        })
+    }
+
+    /// Takes up to `n` steps; returns how many were taken.
+    pub fn advance(&mut self, n: u32) -> u32 {
+        self.run.advance(u64::from(n)) as u32
+    }
 }
 
 /// An experiment parsed once, whose jobs a pool of workers shares out.

@@ -7,13 +7,14 @@
 
 use std::borrow::Cow;
 
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
-use crate::scenario::Scenario;
+use crate::limits::Limits;
 
 pub mod amas;
 pub mod chobie;
@@ -181,10 +182,11 @@ pub struct ModelEntry {
     /// presets change): links made before then still open, and the page says they were made with
     /// an earlier Kumiki. Links that carry no version were made with version 1.
     pub model_version: u32,
-    /// Builds the model from a scenario whose envelope is already checked.
-    pub build: fn(&Scenario) -> Result<Box<dyn Model>>,
-    /// The model's keys with every default written out (see [`normalized`]).
-    pub normalize: fn(&Scenario) -> Result<Map<String, Value>>,
+    /// Reads the model's keys of a scenario into its typed description.
+    pub parse: fn(Value) -> Result<ModelSpec>,
+    /// The JSON Schema of those keys (see `crate::schema`).
+    #[cfg(feature = "schema")]
+    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
 }
 
 /// Every model, in gallery order.
@@ -278,31 +280,123 @@ pub fn entry(name: &str) -> Result<&'static ModelEntry> {
     })
 }
 
-/// Builds a model and checks its scheduled actions.
-pub fn build(scenario: &Scenario) -> Result<Box<dyn Model>> {
-    let model = (entry(&scenario.model)?.build)(scenario)?;
-    for (i, d) in scenario.disturbances.iter().enumerate() {
-        model
-            .check_action(&d.action)
-            .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
+/// A model's typed scenario description: its keys read, every default filled in, and checked
+/// by [`Spec::validate`] before any model state is allocated.
+pub trait Spec: Serialize + DeserializeOwned + Clone + std::fmt::Debug + PartialEq {
+    /// What validation learns that building and action checks need (the lattice size, the
+    /// shapes read from their text), so neither reads or checks the description again.
+    type Checked;
+    /// Checks every field, naming the field and the rule, without building the model; every
+    /// size is computed from the text and held to `limits` before anything of that size is
+    /// allocated.
+    fn validate(&self, limits: &Limits) -> Result<Self::Checked>;
+    /// Checks the form of an action (its kind, its fields, cells inside the lattice), whatever
+    /// the state; the same check [`Model::check_action`] makes.
+    fn check_action(checked: &Self::Checked, action: &Action) -> Result<()>;
+    /// The model at step 0.
+    fn build(checked: Self::Checked, seed: u64) -> Box<dyn Model>;
+}
+
+/// The description of one of the models: the part of a scenario beyond its envelope.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ModelSpec {
+    Amas(amas::Spec),
+    Chobie(chobie::spec::Spec),
+    Cubes3d(cubes3d::Spec),
+    Fracta(fracta::Spec),
+}
+
+/// Calls `$f` with the variant's spec, whatever the model.
+macro_rules! each_spec {
+    ($spec:expr, $s:ident => $f:expr) => {
+        match $spec {
+            ModelSpec::Amas($s) => $f,
+            ModelSpec::Chobie($s) => $f,
+            ModelSpec::Cubes3d($s) => $f,
+            ModelSpec::Fracta($s) => $f,
+        }
+    };
+}
+
+impl ModelSpec {
+    /// Reads the keys of model `model`, naming unknown and invalid fields.
+    pub fn read(model: &str, body: Map<String, Value>) -> Result<ModelSpec> {
+        (entry(model)?.parse)(Value::Object(body))
     }
-    Ok(model)
+
+    /// The model's registered name.
+    pub fn model(&self) -> &'static str {
+        match self {
+            ModelSpec::Amas(_) => amas::ENTRY.name,
+            ModelSpec::Chobie(_) => chobie::ENTRY.name,
+            ModelSpec::Cubes3d(_) => cubes3d::ENTRY.name,
+            ModelSpec::Fracta(_) => fracta::ENTRY.name,
+        }
+    }
+
+    /// The keys written back with every default written out, so a scenario (and its link) states
+    /// all it depends on and replays the same even if a later version changes a default.
+    pub fn to_body(&self) -> Map<String, Value> {
+        match each_spec!(self, s => serde_json::to_value(s)) {
+            Ok(Value::Object(map)) => map,
+            _ => unreachable!("a model's description serialises to an object"),
+        }
+    }
+
+    /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
+    /// errors), without building the model.
+    pub fn validate<'a>(
+        &self,
+        limits: &Limits,
+        actions: impl IntoIterator<Item = &'a Action>,
+    ) -> Result<()> {
+        fn check<'a, S: Spec>(
+            s: &S,
+            limits: &Limits,
+            actions: impl IntoIterator<Item = &'a Action>,
+        ) -> Result<()> {
+            let checked = s.validate(limits)?;
+            for (i, action) in actions.into_iter().enumerate() {
+                S::check_action(&checked, action)
+                    .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
+            }
+            Ok(())
+        }
+        each_spec!(self, s => check(s, limits, actions))
+    }
+
+    /// The model at step 0, built from this description (checked within `limits`) and `seed`.
+    pub fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
+        fn build<S: Spec>(s: &S, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
+            let checked = s.validate(limits)?;
+            #[cfg(test)]
+            builds::count();
+            Ok(S::build(checked, seed))
+        }
+        each_spec!(self, s => build(s, seed, limits))
+    }
 }
 
-/// Reads a model's typed body, naming unknown and invalid fields.
-pub fn body<T: serde::de::DeserializeOwned>(scenario: &Scenario) -> Result<T> {
-    crate::error::from_value(Value::Object(scenario.body.clone()))
+/// Reads a model's typed description from its keys, naming unknown and invalid fields.
+pub fn parse<S: Spec>(body: Value, variant: fn(S) -> ModelSpec) -> Result<ModelSpec> {
+    crate::error::from_value(body).map(variant)
 }
 
-/// The body read as the model's typed description and written back: every parameter appears
-/// with its value, defaults included, so a scenario (and its link) states all it depends on and
-/// replays the same even if a later version changes a default.
-pub fn normalized<T: serde::de::DeserializeOwned + Serialize>(
-    scenario: &Scenario,
-) -> Result<Map<String, Value>> {
-    let spec: T = body(scenario)?;
-    match serde_json::to_value(spec) {
-        Ok(Value::Object(map)) => Ok(map),
-        _ => unreachable!("a model's description serialises to an object"),
+/// Models built on this thread, so a test can show that loading a scenario builds it once.
+#[cfg(test)]
+pub mod builds {
+    use std::cell::Cell;
+
+    thread_local! {
+        static BUILDS: Cell<u64> = const { Cell::new(0) };
+    }
+
+    pub(super) fn count() {
+        BUILDS.with(|b| b.set(b.get() + 1));
+    }
+
+    /// Models built on this thread so far.
+    pub fn so_far() -> u64 {
+        BUILDS.with(Cell::get)
     }
 }

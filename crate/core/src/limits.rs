@@ -1,0 +1,235 @@
+//! Every size a scenario may ask for, in one place, per model and lattice.
+//!
+//! Scenarios arrive from links anyone can send, so each size is computed from the text in checked
+//! 64-bit arithmetic and compared with these limits before anything of that size is allocated.
+//! [`Limits::PAGE`] fits what the page can draw and run responsively, and is what every
+//! scenario is read under unless a caller asks otherwise; [`Limits::LARGE`] is for the command
+//! line (`--allow-large`), where a run may take minutes and gigabytes. `docs/scenario-format.md`
+//! tables both.
+
+/// Limits on what a scenario may ask for. A scenario read under one set of limits keeps them, so
+/// its overrides and its run are checked the same way.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// The cells a shape text may span (rows padded to the widest), on any lattice.
+    pub shape_cells: u64,
+    pub amas: AmasLimits,
+    pub chobie: ChobieLimits,
+    pub cubes3d: Cubes3dLimits,
+    pub fracta: FractaLimits,
+}
+
+/// The square lattice of `amas`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AmasLimits {
+    /// The largest lattice side, in cells, supply rows included.
+    pub side: u32,
+    /// The most supply rows.
+    pub supply_rows: u32,
+    /// The most stage targets before the final one.
+    pub stages: usize,
+    /// The most cells of all stage targets together (lattice cells × targets).
+    pub stage_cells: u64,
+}
+
+/// The side view of `chobie`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ChobieLimits {
+    /// The largest world side, in cells (the world text plus `extend`).
+    pub side: u32,
+    /// The most robots a world may hold. The stress solve of every step costs about
+    /// robots × (3 × robots across the short side)² operations, so a square block of the page's
+    /// limit takes a fraction of a second per step.
+    pub robots: usize,
+    /// The largest goal, in cells.
+    pub goal: u32,
+}
+
+/// The cubic lattice of `cubes3d`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Cubes3dLimits {
+    /// The largest side of the space, in cells (margin and padding included).
+    pub side: u32,
+    /// The most cells the space may have.
+    pub cells: u64,
+    /// The most units a structure may have.
+    pub units: usize,
+    /// The most targets a scenario may switch between.
+    pub targets: usize,
+}
+
+/// The hex lattice of `fracta`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FractaLimits {
+    /// The largest lattice side, in cells, margin included.
+    pub side: u32,
+    /// The most units.
+    pub units: usize,
+    /// The widest margin around the start shape.
+    pub margin: u32,
+}
+
+impl Limits {
+    /// What the page can draw and run responsively: every link opens under these.
+    pub const PAGE: Limits = Limits {
+        shape_cells: 1 << 24,
+        amas: AmasLimits {
+            side: 2048,
+            supply_rows: 64,
+            stages: 64,
+            stage_cells: 1 << 26,
+        },
+        chobie: ChobieLimits {
+            side: 2048,
+            robots: 5_000,
+            goal: 100_000,
+        },
+        cubes3d: Cubes3dLimits {
+            side: 512,
+            cells: 1 << 22,
+            units: 100_000,
+            targets: 16,
+        },
+        fracta: FractaLimits {
+            side: 1024,
+            units: 20_000,
+            margin: 256,
+        },
+    };
+
+    /// For the command line (`--allow-large`): sixteen times the page's cells or more, still
+    /// within what one machine holds (a few gigabytes at most).
+    pub const LARGE: Limits = Limits {
+        shape_cells: 1 << 28,
+        amas: AmasLimits {
+            side: 8192,
+            supply_rows: 256,
+            stages: 256,
+            stage_cells: 1 << 28,
+        },
+        chobie: ChobieLimits {
+            side: 8192,
+            robots: 50_000,
+            goal: 1_000_000,
+        },
+        cubes3d: Cubes3dLimits {
+            side: 1024,
+            cells: 1 << 26,
+            units: 1_000_000,
+            targets: 64,
+        },
+        fracta: FractaLimits {
+            side: 4096,
+            units: 200_000,
+            margin: 1024,
+        },
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::presets;
+    use serde_json::{json, Value};
+
+    /// `preset` with `key` set to `value`, read under the page's limits and under the large
+    /// ones: the page's error, and whether the large limits accept it.
+    fn under_both(preset: &str, key: &str, value: Value) -> (String, bool) {
+        let mut doc = presets::scenario(preset).unwrap().to_value();
+        doc[key] = value;
+        let page = crate::Scenario::from_value_within(doc.clone(), &Limits::PAGE)
+            .expect_err("over the page's limit")
+            .to_string();
+        let large = crate::Scenario::from_value_within(doc, &Limits::LARGE);
+        (page, large.is_ok())
+    }
+
+    #[test]
+    fn an_amas_target_wider_than_the_page_allows_is_refused_by_size_and_limit() {
+        let wide = format!("{}\n", "#".repeat(3000));
+        let (page, large) = under_both("amas-L", "target", json!(wide));
+        assert_eq!(
+            page,
+            "target: 3000×2 cells (with the supply rows) exceeds the limit of 2048×2048"
+        );
+        assert!(large);
+    }
+
+    #[test]
+    fn a_chobie_world_wider_than_the_page_allows_is_refused_by_size_and_limit() {
+        let world = format!("{}\n{}\n", "#".repeat(3000), "=".repeat(3000));
+        let (page, large) = under_both("chobie-crawl3", "world", json!(world));
+        assert_eq!(
+            page,
+            "world: the world is 3000×2 cells (extend included); at most 2048 a side"
+        );
+        assert!(large);
+    }
+
+    #[test]
+    fn a_cubes3d_space_larger_than_the_page_allows_is_refused_by_size_and_limit() {
+        let mut doc = presets::scenario("cubes-box12-ladder").unwrap().to_value();
+        doc["shape"] = json!(format!("{}\n", "#".repeat(600)));
+        doc["targets"] = json!([{"shape": format!("{}\n", "#".repeat(600))}]);
+        let page = crate::Scenario::from_value_within(doc.clone(), &Limits::PAGE)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            page.starts_with("shape: the space the shapes need with margin")
+                && page.contains("(620×")
+                && page.ends_with("exceeds the limit of 512 per side and 4194304 cells"),
+            "{page}"
+        );
+        assert!(crate::Scenario::from_value_within(doc, &Limits::LARGE).is_ok());
+    }
+
+    #[test]
+    fn a_fracta_start_wider_than_the_page_allows_is_refused_by_size_and_limit() {
+        let row = "# ".repeat(1100);
+        let (page, large) = under_both("fracta-triangle10", "start", json!(row));
+        assert!(
+            page.starts_with("start: 11")
+                && page.ends_with("cells with the margin exceeds the limit of 1024×1024"),
+            "{page}"
+        );
+        assert!(large);
+    }
+
+    #[test]
+    fn a_shape_text_spanning_more_cells_than_allowed_is_refused_before_it_is_allocated() {
+        // One long row and many short ones describe a rectangle of 2^25 cells in 40 KB.
+        let text = format!("{}\n{}", "#".repeat(1 << 12), "#\n".repeat(1 << 13));
+        let page = crate::shape::parse_square_within(&text, &Limits::PAGE).unwrap_err();
+        assert_eq!(
+            page.to_string(),
+            "the shape spans 4096 × 8193 cells, more than the 16777216 a shape may have"
+        );
+        assert!(crate::shape::parse_square_within(&text, &Limits::LARGE).is_ok());
+    }
+
+    #[test]
+    fn a_scenario_keeps_its_limits_through_overrides() {
+        let large = presets::scenario("amas-L")
+            .unwrap()
+            .with_limits(&Limits::LARGE)
+            .unwrap();
+        let wide = json!(format!("{}\n", "#".repeat(3000)));
+        assert!(large.with_override("target", wide.clone()).is_ok());
+        let page = presets::scenario("amas-L").unwrap();
+        assert!(page.with_override("target", wide).is_err());
+    }
+
+    #[test]
+    fn large_allows_at_least_what_the_page_allows() {
+        let (p, l) = (Limits::PAGE, Limits::LARGE);
+        assert!(l.shape_cells >= p.shape_cells);
+        assert!(l.amas.side >= p.amas.side && l.amas.stage_cells >= p.amas.stage_cells);
+        assert!(l.amas.supply_rows >= p.amas.supply_rows && l.amas.stages >= p.amas.stages);
+        assert!(l.chobie.side >= p.chobie.side && l.chobie.robots >= p.chobie.robots);
+        assert!(l.chobie.goal >= p.chobie.goal);
+        assert!(l.cubes3d.side >= p.cubes3d.side && l.cubes3d.cells >= p.cubes3d.cells);
+        assert!(l.cubes3d.units >= p.cubes3d.units && l.cubes3d.targets >= p.cubes3d.targets);
+        assert!(l.fracta.side >= p.fracta.side && l.fracta.units >= p.fracta.units);
+        assert!(l.fracta.margin >= p.fracta.margin);
+    }
+}

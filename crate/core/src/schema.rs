@@ -1,0 +1,399 @@
+//! JSON Schemas of scenarios and experiments, published in `docs/schema/` (`kumiki schema`) so
+//! editors can check scenario files, and read by the page to build its parameter form.
+//!
+//! Each model's keys are derived (schemars) from the very types serde reads them into: their doc
+//! comments become descriptions, their enums `oneOf` lists of constants, and their ranges come
+//! from the same constants and [`Limits::PAGE`] that validation applies. The envelope and the
+//! experiment file are read by hand-written code (`scenario.rs`, `experiment.rs`), so their part
+//! is written here from the same constants; a test reads every key it names.
+
+use schemars::generate::SchemaSettings;
+use schemars::SchemaGenerator;
+use serde_json::{json, Map, Value};
+
+use crate::exercise::Exercise;
+use crate::experiment::MAX_JOBS;
+use crate::models::MODELS;
+use crate::presets;
+use crate::scenario::{FORMAT_VERSION, MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS, MAX_SEED, MAX_STEPS};
+
+/// Where the published schemas live, relative to the repository root.
+pub const DIR: &str = "docs/schema";
+/// The scenario schema's file name; the experiment schema refers to it by this name.
+pub const SCENARIO_FILE: &str = "scenario.schema.json";
+pub const EXPERIMENT_FILE: &str = "experiment.schema.json";
+
+/// The schema of a scenario document: one object per model (`oneOf`, told apart by `model`),
+/// each the envelope keys plus the model's own.
+pub fn scenario() -> Value {
+    let mut generator = SchemaSettings::draft2020_12().into_generator();
+    let exercise = generator.subschema_for::<Exercise>().to_value();
+    let specs: Vec<Value> = MODELS
+        .iter()
+        .map(|m| (m.schema)(&mut generator).to_value())
+        .collect();
+    let mut defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
+    let mut one_of = Vec::new();
+    for (entry, spec) in MODELS.iter().zip(specs) {
+        let name = def_name(&spec);
+        let Some(Value::Object(mut body)) = defs.remove(&name) else {
+            unreachable!("a model's description is an object schema named {name}")
+        };
+        let mut properties = envelope(entry.name, entry.title, entry.default_max_steps, &exercise);
+        if let Some(Value::Object(own)) = body.remove("properties") {
+            properties.extend(own);
+        }
+        let mut required = vec![json!("version"), json!("model")];
+        if let Some(Value::Array(own)) = body.remove("required") {
+            required.extend(own);
+        }
+        let id = format!("{}Scenario", capitalised(entry.name));
+        defs.insert(
+            id.clone(),
+            json!({
+                "title": entry.title,
+                "type": "object",
+                "properties": properties,
+                "required": required,
+                "additionalProperties": false,
+            }),
+        );
+        one_of.push(json!({ "$ref": format!("#/$defs/{id}") }));
+    }
+    json!({
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": SCENARIO_FILE,
+        "title": "Kumiki scenario",
+        "description": "One versioned JSON document that fully determines a run: the envelope keys, common to every model, and the model's own keys (docs/models/<model>.md). docs/scenario-format.md gives the size limits.",
+        "type": "object",
+        "oneOf": one_of,
+        "$defs": defs,
+    })
+}
+
+/// The envelope keys of model `model`'s scenarios.
+fn envelope(
+    model: &str,
+    title: &str,
+    default_max_steps: u64,
+    exercise: &Value,
+) -> Map<String, Value> {
+    let properties = json!({
+        "version": {
+            "description": "The scenario format version; older versions are migrated when read.",
+            "type": "integer", "minimum": 1, "maximum": FORMAT_VERSION,
+        },
+        "model": { "description": title, "const": model },
+        "name": {
+            "description": "The scenario's name, shown as its title.",
+            "type": "string", "maxLength": MAX_NAME_CHARS, "default": "",
+        },
+        "description": {
+            "description": "What the scenario shows.",
+            "type": "string", "maxLength": MAX_DESCRIPTION_CHARS, "default": "",
+        },
+        "seed": {
+            "description": "The seed of every random choice of the run.",
+            "type": "integer", "minimum": 0, "maximum": MAX_SEED, "default": 1,
+        },
+        "max_steps": {
+            "description": "The run stops after this many steps if its goal is not reached first.",
+            "type": "integer", "minimum": 1, "maximum": MAX_STEPS, "default": default_max_steps,
+        },
+        "disturbances": {
+            "description": "Actions applied during the run (recorded clicks included): `at` is the step after which it applies; the other keys are the model's action, given in its documentation.",
+            "type": "array",
+            "items": {
+                "type": "object",
+                "properties": {
+                    "at": { "type": "integer", "minimum": 0, "maximum": MAX_STEPS },
+                    "kind": { "type": "string" },
+                },
+                "required": ["at", "kind"],
+            },
+        },
+        "exercise": exercise,
+    });
+    match properties {
+        Value::Object(map) => map,
+        _ => unreachable!(),
+    }
+}
+
+/// The schema of an experiment file (docs/experiments.md).
+pub fn experiment() -> Value {
+    let presets: Vec<&str> = presets::names().collect();
+    json!({
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": EXPERIMENT_FILE,
+        "title": "Kumiki experiment",
+        "description": "Scenarios × a grid of overrides × seeds, one row per run (docs/experiments.md).",
+        "type": "object",
+        "properties": {
+            "version": { "description": "The experiment format version.", "const": 1 },
+            "name": { "description": "The experiment's name.", "type": "string", "minLength": 1 },
+            "title": { "type": "string" },
+            "description": { "type": "string" },
+            "scenarios": {
+                "description": "Preset names or whole scenarios.",
+                "type": "array",
+                "minItems": 1,
+                "items": {
+                    "oneOf": [
+                        { "description": "A built-in scenario.", "enum": presets },
+                        { "$ref": SCENARIO_FILE },
+                    ],
+                },
+            },
+            "grid": {
+                "description": "Dotted scenario paths and the values each takes; every combination runs.",
+                "type": "object",
+                "additionalProperties": { "type": "array", "minItems": 1 },
+            },
+            "set": {
+                "description": "Overrides applied to every run: dotted scenario paths and their values.",
+                "type": "object",
+            },
+            "seeds": {
+                "description": "A count N (seeds 1 to N) or a list of seeds.",
+                "oneOf": [
+                    { "type": "integer", "minimum": 1, "maximum": MAX_JOBS },
+                    {
+                        "type": "array",
+                        "minItems": 1,
+                        "items": { "type": "integer", "minimum": 0, "maximum": MAX_SEED },
+                    },
+                ],
+                "default": 1,
+            },
+            "trace": {
+                "description": "Metrics sampled every `every` steps during each run.",
+                "type": "object",
+                "properties": {
+                    "every": { "type": "integer", "minimum": 1, "default": 1 },
+                    "metrics": { "type": "array", "minItems": 1, "items": { "type": "string" } },
+                },
+                "required": ["metrics"],
+                "additionalProperties": false,
+            },
+            "plot": { "description": "How the page draws the rows; the core does not read it." },
+        },
+        "required": ["version", "name", "scenarios"],
+        "additionalProperties": false,
+    })
+}
+
+/// The name of the definition a `{"$ref": "#/$defs/NAME"}` schema points to.
+fn def_name(reference: &Value) -> String {
+    reference["$ref"]
+        .as_str()
+        .and_then(|r| r.strip_prefix("#/$defs/"))
+        .expect("a model's description is referenced, not inlined")
+        .to_string()
+}
+
+fn capitalised(name: &str) -> String {
+    let mut chars = name.chars();
+    chars
+        .next()
+        .map(|c| c.to_uppercase().chain(chars).collect())
+        .unwrap_or_default()
+}
+
+/// Where the TypeScript types generated from the scenario schema live, from the repository root.
+pub const TYPESCRIPT_FILE: &str = "web/scenario.gen.ts";
+
+/// The published files, as paths from the repository root, and their text: the schemas (pretty
+/// JSON with a final newline) and the TypeScript types of the scenario schema.
+pub fn files() -> Vec<(String, String)> {
+    let pretty = |v: &Value| serde_json::to_string_pretty(v).expect("a schema serialises") + "\n";
+    let scenario = scenario();
+    vec![
+        (format!("{DIR}/{SCENARIO_FILE}"), pretty(&scenario)),
+        (format!("{DIR}/{EXPERIMENT_FILE}"), pretty(&experiment())),
+        (TYPESCRIPT_FILE.to_string(), typescript(&scenario)),
+    ]
+}
+
+/// TypeScript types of the scenario schema: one declaration per definition, and `Scenario`, the
+/// union of the models' scenarios. They describe scenarios as the core writes them, every
+/// default filled in, so a key is optional only when the schema gives it no default.
+pub fn typescript(schema: &Value) -> String {
+    let mut out = String::from(
+        "// Generated by `kumiki schema` from docs/schema/scenario.schema.json: do not edit.\n",
+    );
+    for (name, def) in schema["$defs"].as_object().into_iter().flatten() {
+        out.push('\n');
+        out.push_str(&doc_comment(def, ""));
+        let declaration = match def.get("properties") {
+            Some(_) => format!("export interface {name} {}\n", ts_object(def, "")),
+            None => format!("export type {name} = {};\n", ts_type(def, "")),
+        };
+        out.push_str(&declaration);
+    }
+    out.push_str("\n/** A scenario of any model, told apart by `model`. */\n");
+    let all = ts_type(&json!({ "oneOf": schema["oneOf"] }), "");
+    out.push_str(&format!("export type Scenario = {all};\n"));
+    out
+}
+
+/// A `/** ... */` comment from a node's description, indented by `indent`.
+fn doc_comment(node: &Value, indent: &str) -> String {
+    let Some(text) = node["description"].as_str() else {
+        return String::new();
+    };
+    let text = text.replace("*/", "* /");
+    let lines: Vec<&str> = text.lines().collect();
+    match lines.as_slice() {
+        [one] => format!("{indent}/** {one} */\n"),
+        _ => {
+            let body: String = lines.iter().map(|l| format!("{indent} * {l}\n")).collect();
+            format!("{indent}/**\n{body}{indent} */\n")
+        }
+    }
+}
+
+/// An object type, its properties one a line.
+fn ts_object(node: &Value, indent: &str) -> String {
+    let inner = format!("{indent}  ");
+    let required: Vec<&str> = node["required"]
+        .as_array()
+        .map(|r| r.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
+    let mut out = String::from("{\n");
+    for (key, property) in node["properties"].as_object().into_iter().flatten() {
+        let optional = !required.contains(&key.as_str()) && property.get("default").is_none();
+        out.push_str(&doc_comment(property, &inner));
+        let mark = if optional { "?" } else { "" };
+        out.push_str(&format!(
+            "{inner}{key}{mark}: {};\n",
+            ts_type(property, &inner)
+        ));
+    }
+    out.push_str(indent);
+    out.push('}');
+    out
+}
+
+/// Alternatives joined by `|`, each once, in order.
+fn union(types: impl IntoIterator<Item = String>) -> String {
+    let mut seen: Vec<String> = Vec::new();
+    for t in types {
+        if !seen.contains(&t) {
+            seen.push(t);
+        }
+    }
+    seen.join(" | ")
+}
+
+/// The TypeScript type of a schema node.
+fn ts_type(node: &Value, indent: &str) -> String {
+    if let Some(reference) = node["$ref"].as_str() {
+        return reference.trim_start_matches("#/$defs/").to_string();
+    }
+    if let Some(constant) = node.get("const") {
+        return constant.to_string();
+    }
+    if let Some(values) = node["enum"].as_array() {
+        return union(values.iter().map(Value::to_string));
+    }
+    if let Some(options) = node["oneOf"].as_array() {
+        return union(options.iter().map(|o| ts_type(o, indent)));
+    }
+    let of_type = |t: &str| match t {
+        "string" => "string".to_string(),
+        "integer" | "number" => "number".to_string(),
+        "boolean" => "boolean".to_string(),
+        "null" => "null".to_string(),
+        "array" => match node.get("items").filter(|i| i.is_object()) {
+            Some(items) => {
+                let item = ts_type(items, indent);
+                match item.contains(' ') {
+                    true => format!("({item})[]"),
+                    false => format!("{item}[]"),
+                }
+            }
+            None => "unknown[]".to_string(),
+        },
+        "object" if node.get("properties").is_some() => ts_object(node, indent),
+        "object" => match node.get("additionalProperties").filter(|v| v.is_object()) {
+            Some(v) => format!("Record<string, {}>", ts_type(v, indent)),
+            None => "Record<string, unknown>".to_string(),
+        },
+        _ => "unknown".to_string(),
+    };
+    match &node["type"] {
+        Value::String(t) => of_type(t),
+        Value::Array(ts) => union(ts.iter().filter_map(Value::as_str).map(of_type)),
+        _ => "unknown".to_string(),
+    }
+}
+
+/// A generator for a model's entry: its description's schema, by reference.
+pub fn of<T: schemars::JsonSchema>(generator: &mut SchemaGenerator) -> schemars::Schema {
+    generator.subschema_for::<T>()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The published files are what this build derives (`kumiki schema` rewrites them).
+    #[test]
+    fn the_published_schemas_are_current() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        for (path, text) in files() {
+            let published = std::fs::read_to_string(root.join(&path)).unwrap_or_default();
+            assert!(
+                published == text,
+                "{path} is stale: run 'cargo run -p kumiki-cli -- schema' and commit it"
+            );
+        }
+    }
+
+    /// Every preset states only keys its model's schema names, and every key the schema
+    /// requires: a scenario the core accepts is one the schema accepts, key for key.
+    #[test]
+    fn every_preset_keeps_to_its_models_schema() {
+        let schema = scenario();
+        for name in presets::names() {
+            let doc = presets::scenario(name).unwrap().to_value();
+            let model = doc["model"].as_str().unwrap();
+            let def = &schema["$defs"][format!("{}Scenario", capitalised(model))];
+            let properties = def["properties"].as_object().unwrap();
+            for key in doc.as_object().unwrap().keys() {
+                assert!(
+                    properties.contains_key(key),
+                    "{name}: {key} is not in the schema"
+                );
+            }
+            for key in def["required"].as_array().unwrap() {
+                let key = key.as_str().unwrap();
+                assert!(doc.get(key).is_some(), "{name}: lacks the required {key}");
+            }
+            assert_eq!(properties["model"]["const"], model);
+        }
+    }
+
+    /// Enums are lists of constants and sizes carry the limits, so a form can offer a select
+    /// and bounds.
+    #[test]
+    fn choices_are_constants_and_sizes_carry_their_limits() {
+        let schema = scenario();
+        let consts: Vec<&str> = schema["$defs"]["Collision"]["oneOf"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["const"].as_str().unwrap())
+            .collect();
+        assert_eq!(consts, ["token", "relay", "blackboard"]);
+        let amas = &schema["$defs"]["AmasScenario"]["properties"];
+        assert_eq!(
+            amas["supply_rows"]["maximum"],
+            crate::Limits::PAGE.amas.supply_rows
+        );
+        assert_eq!(amas["name"]["maxLength"], MAX_NAME_CHARS);
+        assert_eq!(amas["max_steps"]["default"], 100_000);
+        assert!(amas["robots"]["description"].is_string());
+    }
+}
