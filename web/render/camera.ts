@@ -1,7 +1,9 @@
-// Cameras: a pan/zoom camera for the planar lattices and an orbit camera for the cubic one,
-// with the matrices the WebGL renderer needs and the picking both renderers share.
+// Cameras: a pan/zoom camera for the planar lattices and an orbit camera for the cubic one (the
+// lattice view's and the voxel editor's), with the matrices the WebGL renderer needs, the picking
+// both renderers share, and how gestures move either.
 import type { Layout } from '../types';
 import { type Bounds, cellAt, worldBounds } from './geometry';
+import type { DragKind, GestureHandlers, Point } from './gestures';
 
 export type Mat4 = Float32Array;
 
@@ -18,7 +20,15 @@ export function multiply(a: Mat4, b: Mat4): Mat4 {
   return out;
 }
 
-export class Camera2D {
+/** What gestures steer: both cameras pan by screen pixels and zoom about a screen point. */
+export interface ViewCamera {
+  width: number;
+  height: number;
+  pan(dx: number, dy: number): void;
+  zoom(factor: number, sx?: number, sy?: number): void;
+}
+
+export class Camera2D implements ViewCamera {
   readonly kind = '2d';
   cx = 0;
   cy = 0;
@@ -76,7 +86,7 @@ export interface Hit {
   front: number;
 }
 
-export class Camera3D {
+export class Camera3D implements ViewCamera {
   readonly kind = '3d';
   target: [number, number, number] = [0, 0, 0];
   yaw = Math.PI / 4;
@@ -149,6 +159,7 @@ export class Camera3D {
     for (let i = 0; i < 3; i++) this.target[i] += (-dx * right[i] + dy * up[i]) * k;
   }
 
+  /** Moves toward the target (factor above 1) or away; a dolly, so the screen point is not kept. */
   zoom(factor: number) {
     this.distance = Math.min(2000, Math.max(1.5, this.distance / factor));
   }
@@ -241,6 +252,30 @@ export class Camera3D {
 }
 
 export type Camera = Camera2D | Camera3D;
+
+/** Moves a camera by a drag: an orbit drag turns a 3-D camera; a planar one pans on either kind. */
+export function dragCamera(camera: Camera, dx: number, dy: number, kind: DragKind) {
+  if (kind === 'orbit' && camera.kind === '3d') camera.orbit(dx, dy);
+  else camera.pan(dx, dy);
+}
+
+/**
+ * The drag and zoom handlers that steer whichever camera `camera()` returns now (the view swaps
+ * cameras with the lattice), calling `changed` after each move.
+ */
+export function cameraGestures(camera: () => Camera, changed: () => void): Required<Pick<GestureHandlers, 'drag' | 'zoom'>> {
+  return {
+    drag(dx: number, dy: number, kind: DragKind) {
+      dragCamera(camera(), dx, dy, kind);
+      changed();
+    },
+    zoom(factor: number, centre: Point) {
+      const c: ViewCamera = camera();
+      c.zoom(factor, centre.x, centre.y);
+      changed();
+    },
+  };
+}
 
 export function fitCamera(camera: Camera, layout: Layout) {
   if (camera.kind === '2d') camera.fit(worldBounds(layout));
