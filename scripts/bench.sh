@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # npm run bench: every workload of tests/bench natively and in wasm (Node), the page in headless
 # Chromium (load to interactive, in-page run rates), and the gzipped wasm size. Medians; one run.
+# Then a short soak (20 000 steps of each model's largest preset; npm run soak runs 10^6).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --browser
 cargo build --release -p kumiki-cli --quiet
 bash scripts/build.sh >/dev/null
 node scripts/bench.mjs "$@"
+node scripts/soak.mjs --steps 20000

@@ -1,0 +1,99 @@
+// A large scenario opens in the simulation worker first: the page says so with a notice and a
+// busy bar, stays responsive while the worker builds it and while it draws it (no task on the main
+// thread of a second or more, a click answered at once), and the scenario then runs. One the
+// worker refuses leaves the scenario in view as it was.
+//
+// The main thread's tasks are measured with the Long Tasks API rather than by gaps between
+// animation frames: on a shared machine headless Chromium's compositor can skip frames for a
+// second while the page's own thread is idle, and that is not the page hanging.
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { describe, test } from 'node:test';
+import { deflateRawSync } from 'node:zlib';
+import { loadWasm, openPage, session, waitForSteps } from './harness.mjs';
+
+const wasm = loadWasm();
+const s = session();
+
+/** A share link for any scenario text, valid or not, made the way the page makes them. */
+const linkOf = (text) => `k1.${deflateRawSync(Buffer.from(text)).toString('base64url')}`;
+
+/** The page's largest AMAS: 2048 cells wide and, with its 8 supply rows, 2048 high. */
+function largestAmas(keys = {}) {
+  const bench = JSON.parse(readFileSync(new URL('../bench/amas-square1024.json', import.meta.url), 'utf8')).scenario;
+  return JSON.stringify({ ...bench, name: 'amas-2048', target: { rect: [2048, 2040] }, initial: { rect: [2048, 2000] }, ...keys });
+}
+
+/**
+ * Starts recording, in the page, the main thread's tasks longer than 50 ms and how long each click
+ * waited before its handlers ran; `done` returns them (ms).
+ */
+async function watchMainThread(page) {
+  await page.evaluate(() => {
+    const record = { tasks: [], clicks: [] };
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) record.tasks.push(e.duration);
+    }).observe({ type: 'longtask' });
+    document.addEventListener('click', (e) => record.clicks.push(performance.now() - e.timeStamp), { capture: true });
+    document.addEventListener('kumiki-test-done', () => (document.body.dataset.mainThread = JSON.stringify(record)));
+  });
+  return {
+    done: async () => {
+      await page.evaluate(() => document.dispatchEvent(new Event('kumiki-test-done')));
+      return JSON.parse(await page.evaluate(() => document.body.dataset.mainThread));
+    },
+  };
+}
+
+describe('large scenarios', () => {
+  test('the largest AMAS opens in the worker with a notice; the page answers meanwhile and it runs', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    const watch = await watchMainThread(page);
+    const link = wasm.encode_link(largestAmas());
+    await page.evaluate((l) => {
+      location.hash = l;
+    }, link);
+    await page.waitForSelector('#opening:not([hidden])', { timeout: 5000 });
+    assert.match(await page.textContent('#opening-text'), /^This scenario is large \(4,177,920 cells\); opening it…/);
+    assert.equal(await page.getAttribute('#opening .progress', 'role'), 'progressbar');
+    // A click is handled while the worker builds the run: another tab opens at once.
+    await page.click('#tab-about');
+    await page.waitForSelector('#tab-about[aria-selected="true"]');
+    assert.ok(await page.isVisible('#opening'), 'the click was answered while the scenario was still opening');
+    await page.waitForSelector('#opening', { state: 'hidden', timeout: 120000 });
+    // Its introduction comes once it has opened.
+    await page.waitForSelector('#intro[open]');
+    assert.equal(await page.textContent('#intro-title'), 'amas-2048');
+    await page.click('#intro button.primary');
+    await page.click('#tab-run');
+    await page.waitForFunction(() => document.querySelector('#scenario-name').textContent === 'amas-2048', null, { timeout: 30000 });
+    await page.click('#step');
+    await waitForSteps(page, 1, 60000);
+    const { tasks, clicks } = await watch.done();
+    const longest = Math.max(0, ...tasks);
+    assert.ok(longest < 1000, `the longest task on the main thread took ${longest.toFixed(0)} ms`);
+    assert.ok(clicks.length >= 3 && Math.max(...clicks) < 1000, `clicks waited ${clicks.map((c) => c.toFixed(0)).join(', ')} ms`);
+    assert.ok(await page.isHidden('#banner'), 'no message');
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('a large scenario the worker refuses leaves the scenario in view and says why', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    const before = await page.textContent('#state-hash');
+    const name = await page.textContent('#scenario-name');
+    await page.evaluate((l) => {
+      location.hash = l;
+    }, linkOf(largestAmas({ supply_rows: 1 })));
+    await page.waitForSelector('#banner:not([hidden])', { timeout: 60000 });
+    assert.match(await page.textContent('#banner-text'), /^This scenario cannot run: robots: 4096 robots do not fit/);
+    assert.ok(await page.isHidden('#opening'), 'the notice is gone');
+    assert.equal(await page.textContent('#state-hash'), before, 'the scenario in view is kept');
+    assert.equal(await page.textContent('#scenario-name'), name);
+    assert.ok(await page.isHidden('#intro'), 'a scenario that did not open is not introduced');
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+});

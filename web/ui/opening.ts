@@ -1,0 +1,85 @@
+// Large scenarios open in the simulation worker first. Validating a scenario builds its model,
+// which for a 2048 × 2048 lattice takes seconds; on the main thread that would freeze the page.
+// A scenario whose shapes span more than LARGE_CELLS cells (read from its text, nothing built) is
+// therefore sent straight to the worker, which validates it while it builds its run, and the page
+// shows a notice with an indeterminate bar and a way to stop until the worker answers. Its changes
+// (a new seed, a field) are made without validation and validated by the worker in turn.
+import { byId } from './dom';
+import * as core from '../wasm';
+
+/**
+ * Above this many cells the main thread does not build a scenario. Building costs about 0.2 µs a
+ * cell natively and about twice that in wasm: 2^18 cells stay well under 0.1 s on the main thread
+ * of a busy machine; the largest (2048 × 2048, 16 times more) take seconds.
+ */
+export const LARGE_CELLS = 1 << 18;
+
+export const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
+
+/** One dotted-path change: validated at once for a small scenario, by the worker for a large one. */
+export function change(json: string, path: string, valueJson: string): string {
+  return isLarge(json) ? core.setPath(json, path, valueJson) : core.override(json, path, valueJson);
+}
+
+/** The notice shown while the worker opens a large scenario, and what to do once it has. */
+export class LargeOpening {
+  private pending: ((json: string) => void) | null = null;
+  private started = 0;
+  private timer: ReturnType<typeof setInterval> | undefined;
+  private readonly box = byId('opening');
+  private readonly text = byId('opening-text');
+  private cells = 0;
+
+  /** `stop` ends the opening (the worker is restarted with the last good scenario). */
+  constructor(stop: () => void) {
+    byId('opening-stop').addEventListener('click', () => {
+      this.failed();
+      stop();
+    });
+  }
+
+  /** True while the worker is opening a large scenario. */
+  get active(): boolean {
+    return this.pending !== null;
+  }
+
+  /**
+   * Starts opening `json` in the worker when it is large: shows the notice and keeps `opened`
+   * for when the worker has loaded it (it gets the worker's canonical JSON). False for a scenario
+   * the main thread may validate itself.
+   */
+  begin(json: string, opened: (json: string) => void): boolean {
+    this.cells = core.estimateCells(json);
+    if (this.cells <= LARGE_CELLS) return false;
+    this.pending = opened;
+    this.started = performance.now();
+    this.show();
+    clearInterval(this.timer);
+    this.timer = setInterval(() => this.show(), 1000);
+    this.box.hidden = false;
+    return true;
+  }
+
+  private show() {
+    const seconds = Math.floor((performance.now() - this.started) / 1000);
+    this.text.textContent = `This scenario is large (${this.cells.toLocaleString('en-US')} cells); opening it…${seconds ? ` ${seconds} s` : ''}`;
+  }
+
+  /** The worker loaded it: runs what was kept for then, and hides the notice. */
+  loaded(json: string) {
+    const opened = this.pending;
+    this.end();
+    opened?.(json);
+  }
+
+  /** The worker refused it or was stopped: the scenario in view stays. */
+  failed() {
+    this.end();
+  }
+
+  private end() {
+    this.pending = null;
+    clearInterval(this.timer);
+    this.box.hidden = true;
+  }
+}
