@@ -1,5 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { type Plugin, defineConfig } from 'vite';
+import { pwa } from './vite.pwa.ts';
 
 // One Content-Security-Policy: the page's meta tag. Wherever Kumiki serves the page it also sends
 // it as a header, with what a meta tag cannot carry: frame-ancestors. Kumiki is meant to be
@@ -30,7 +31,7 @@ export default defineConfig({
   root: 'static',
   base: './',
   publicDir: false,
-  plugins: [headersFile()],
+  plugins: [headersFile(), pwa()],
   build: {
     outDir: '../dist',
     emptyOutDir: true,

@@ -6,6 +6,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
 
+step "gate: no merge-conflict markers in tracked files"
+if git grep -nE '^(<{7}|>{7})( |$)' -- . ':!package-lock.json'; then
+  echo "merge-conflict markers above" >&2
+  exit 1
+fi
+
 step "gate: cargo fmt --check"
 cargo fmt --all -- --check
 
@@ -31,6 +37,9 @@ step "wasm tests (wasm-bindgen-test in headless Node)"
 # Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test -p kumiki-wasm --target wasm32-unknown-unknown
+
+step "the JSON Schemas in docs/schema are current (kumiki schema --check)"
+cargo run --release --quiet -p kumiki-cli -- schema --check
 
 step "the reproduction report is current (kumiki reproduce --check)"
 cargo run --release --quiet -p kumiki-cli -- reproduce --check

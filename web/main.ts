@@ -6,17 +6,31 @@ import { View } from './render/view';
 import { SimClient } from './sim/client';
 import { History, loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
 import type { Frame, Layout, Metrics } from './types';
+import { Announcer, type Disturbance } from './ui/announce';
 import { MetricChart } from './ui/chart';
+import { KeyCursor } from './ui/cursor';
 import { byId, clear, displayText, download, el, formatNumber, typingIn } from './ui/dom';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { renderMarkdown } from './ui/markdown';
+import { Embed, embedRequested } from './ui/embed';
+import { registerOffline } from './ui/offline';
+import { change, LargeOpening } from './ui/opening';
 import { renderParams } from './ui/params';
+import { setupRecordDialog } from './ui/record';
 import { Probe, reachOf, type Facts } from './ui/probe';
+import { STRUCTURE_FACTS, StructureViews } from './ui/structure';
+import type { Exercise } from './scenario.gen';
 import * as core from './wasm';
 
 const SPEEDS = [1, 3, 10, 30, 100, 300, 1000, 10000, Infinity];
 const DEFAULT_PRESET = 'amas-L';
+
+/** In a course page's iframe (?embed): the view, the run controls and the exercise panel only. */
+const embedded = embedRequested();
+if (embedded) document.body.dataset.embed = 'true';
+/** The postMessage API, in embed mode. */
+let embed: Embed | null = null;
 
 const prefs = loadPrefs();
 const persistPrefs = () => savePrefs(prefs);
@@ -64,17 +78,32 @@ byId('banner-close').addEventListener('click', dismiss);
 
 // ---- simulation -------------------------------------------------------------------------------
 
+/** Called once with the next frame from the worker that the view draws (the recorder waits on them). */
+const drawnWaiters: ((frame: Frame) => void)[] = [];
+
 const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('annotations'), byId('canvas-wrap'), {
   click: (cell, hit) => void clickCell(cell, hit),
   hover: (cell) => showHover(cell),
   drawn: () => {
     document.body.dataset.frames = String(framesDrawn);
     sim.ack();
+    if (lastFrame) for (const waiter of drawnWaiters.splice(0)) waiter(lastFrame);
   },
 });
 
+/** Steps the run and resolves once the frame `count` steps on (or the run's last) has been drawn. */
+function stepAndDraw(count: number): Promise<{ steps: number; finished: boolean }> {
+  const target = (lastFrame?.steps ?? 0) + count;
+  return new Promise((resolve) => {
+    const wait = (frame: Frame) => (frame.steps >= target || frame.finished ? resolve({ steps: frame.steps, finished: frame.finished }) : drawnWaiters.push(wait));
+    drawnWaiters.push(wait);
+    sim.step(count);
+  });
+}
+
 const sim = new SimClient({
   loaded(newLayout, json) {
+    large.loaded(json);
     // A scenario opened or the run was reset: an earlier message no longer applies.
     if (!keepBanner) dismiss();
     keepBanner = false;
@@ -83,11 +112,17 @@ const sim = new SimClient({
     layout = newLayout;
     scenario = json;
     view.setLayout(newLayout);
-    if (shapeChanged) view.fit();
+    if (shapeChanged) {
+      view.fit();
+      keyCursor.hide();
+    }
     clearSelection();
     renderRunPanel();
     renderScenarioPanel();
-    chart.reset(prefs.chartMetric);
+    chartMetric(prefs.chartMetric);
+    structure.loaded();
+    const doc = JSON.parse(json) as { name?: string; disturbances?: Disturbance[] };
+    announcer.loaded(displayText(doc.name ?? '', 100) || 'The scenario', doc.disturbances ?? []);
   },
   frame(frame) {
     if (opening !== null && loadedOpening) {
@@ -101,7 +136,10 @@ const sim = new SimClient({
     framesDrawn++;
     view.setFrame(frame);
     showFrame(frame);
+    announcer.frame(frame, playing, chartSelect.value, cellText);
     refreshProbes();
+    structure.frame(frame.steps);
+    embed?.frame(frame);
   },
   playing(on) {
     playing = on;
@@ -117,10 +155,15 @@ const sim = new SimClient({
     scenario = json;
     updateUndo();
     saveScenario(json);
+    announcer.disturbed((JSON.parse(json) as { disturbances?: Disturbance[] }).disturbances ?? [], cellText);
     renderDisturbanceNote();
     syncJsonEditor();
   },
   error(message, context) {
+    if (context === 'load' && large.active) {
+      large.failed();
+      if (!scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+    }
     if (context === 'apply') report(`That did not work: ${message}`);
     else if (context === 'load') report(`This scenario cannot run: ${message}`);
     else report(message);
@@ -130,8 +173,12 @@ const sim = new SimClient({
     out.textContent = met ? `Goal met at step ${steps.toLocaleString('en-US')}: ${because}.` : `Not met yet (step ${steps.toLocaleString('en-US')}): ${because}.`;
     out.classList.toggle('met', met);
     out.classList.toggle('unmet', !met);
+    announcer.say(met ? `Goal met: ${because}.` : `Goal not met yet: ${because}.`);
+    embed?.goal(met, because, steps);
   },
   stalled(ms) {
+    // The opening notice says what the worker is busy with and offers its own way to stop.
+    if (large.active && ms > 0) return;
     if (ms === 0) {
       if (stallShown) {
         dismiss();
@@ -148,6 +195,7 @@ const sim = new SimClient({
     });
   },
   panic(message) {
+    large.failed();
     keepBanner = true;
     const model = layout ? String((JSON.parse(scenario) as { model?: string }).model ?? 'the model') : 'the model';
     const bug = [
@@ -162,6 +210,12 @@ const sim = new SimClient({
     });
   },
 });
+const structure = new StructureViews(view, (cell) => sim.inspect(cell));
+
+const large = new LargeOpening(() => {
+  sim.recover();
+  if (!scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+});
 
 /** A link to the scenario in view, or its JSON when it cannot be encoded. */
 function scenarioLink(): string {
@@ -174,6 +228,16 @@ function scenarioLink(): string {
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false } = {}): boolean {
+  const opened = (normal: string) => {
+    if (record && scenario && normal !== scenario) history.push(scenario);
+    if (location.hash) history_replace('');
+    linkNotice.hidden = true;
+    updateUndo();
+  };
+  if (large.begin(json, opened)) {
+    open(json);
+    return true;
+  }
   let normal: string;
   try {
     normal = core.normalize(json);
@@ -203,6 +267,8 @@ function open(json: string) {
 
 /** Whoever opens a shared link sees its name and description first. */
 function introduce(json: string) {
+  // An embedding course page introduces the scenario itself.
+  if (embedded) return;
   const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
   byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
   byId('intro-model').textContent = String(doc.model ?? '');
@@ -264,22 +330,21 @@ seedInput.addEventListener('change', () => {
   }
   setSeed(v);
 });
-byId('new-seed').addEventListener('click', () => {
-  const words = new Uint32Array(2);
-  crypto.getRandomValues(words);
-  setSeed((words[0] & 0x1fffff) * 2 ** 32 + words[1]);
-});
+byId('new-seed').addEventListener('click', () => setSeed(core.freshSeed()));
 
 // ---- frames -----------------------------------------------------------------------------------
 
 const chart = new MetricChart(byId('metric-chart'));
 const chartSelect = byId<HTMLSelectElement>('chart-metric');
+/** Charts `metric`: the worker sends its record of every step with each frame. */
+function chartMetric(metric: string) {
+  chart.reset(metric);
+  sim.setChart(metric || null, chart.points);
+}
 chartSelect.addEventListener('change', () => {
   prefs.chartMetric = chartSelect.value;
   persistPrefs();
-  chart.reset(chartSelect.value);
-  if (lastFrame) chart.push(lastFrame.steps, Number(lastFrame.metrics[chartSelect.value] ?? NaN));
-  chart.render();
+  chartMetric(chartSelect.value);
 });
 
 function showFrame(frame: Frame) {
@@ -295,14 +360,12 @@ function showFrame(frame: Frame) {
   }
   timeline.setAttribute('aria-valuetext', `step ${frame.steps} of ${frame.furthest}`);
   byId('timeline-out').textContent = `${frame.steps.toLocaleString('en-US')} / ${frame.furthest.toLocaleString('en-US')}`;
-  chart.truncate(frame.furthest);
   const bar = byId('run-progress');
   const pct = frame.completed ? 100 : Math.min(100, (100 * frame.steps) / Math.max(1, frame.maxSteps));
   (bar.firstElementChild as HTMLElement).style.width = `${pct}%`;
   bar.setAttribute('aria-valuenow', pct.toFixed(0));
   renderMetrics(frame.metrics);
-  const metric = chartSelect.value;
-  if (metric && typeof frame.metrics[metric] === 'number') chart.push(frame.steps, frame.metrics[metric] as number);
+  if (frame.chart) chart.set(frame.chart);
   chart.render();
   byId('diag-rate').textContent = frame.stepsPerSecond ? `${formatNumber(frame.stepsPerSecond)} steps/s` : 'paused';
   const range = view.overlayRange;
@@ -334,7 +397,7 @@ function renderMetrics(metrics: Metrics) {
     chartSelect.value = want;
     if (want !== prefs.chartMetric) {
       prefs.chartMetric = want;
-      chart.reset(want);
+      chartMetric(want);
     }
   }
   for (const [name, node] of metricNodes) node.textContent = formatNumber(metrics[name]);
@@ -397,6 +460,17 @@ function renderRunPanel() {
     });
     tools.append(b);
   }
+  // A number in a tool's action (a load's force, say) can be set before clicking; the value
+  // typed is what the recorded action carries.
+  const values = byId('tool-values');
+  clear(values);
+  for (const t of layout.tools) {
+    for (const [key, value] of Object.entries(t.action)) {
+      if (typeof value !== 'number') continue;
+      const input = el('input', { type: 'number', step: 'any', value: String(value), id: `tool-${t.name}-${key}`, 'data-tool': t.name, 'data-key': key, 'aria-label': `${t.label}: ${key}` });
+      values.append(el('label', { class: 'row' }, `${t.label}: ${key} `, input));
+    }
+  }
   renderDisturbanceNote();
 
   const legend = byId('legend');
@@ -413,6 +487,15 @@ function renderRunPanel() {
     i.style.border = `2px solid ${e.color}`;
     legend.append(el('span', {}, i, e.name));
   }
+}
+
+/** The numbers typed next to a tool, by action key. */
+function toolValues(name: string): Record<string, number> {
+  const out: Record<string, number> = {};
+  for (const input of byId('tool-values').querySelectorAll<HTMLInputElement>('input')) {
+    if (input.dataset.tool === name && input.dataset.key && input.value !== '') out[input.dataset.key] = Number(input.value);
+  }
+  return out;
 }
 
 function renderDisturbanceNote() {
@@ -438,7 +521,7 @@ async function clickCell(cell: number, hit: Hit | null) {
   if (t) {
     // In 3-D an added unit goes on the clicked face, in the empty cell in front of it.
     const target = t.action.kind === 'add' && hit && hit.front >= 0 ? hit.front : cell;
-    sim.apply({ ...t.action, cells: [target] });
+    sim.apply({ ...t.action, ...toolValues(t.name), cells: [target] });
     return;
   }
   const facts = await sim.inspect(cell);
@@ -446,6 +529,7 @@ async function clickCell(cell: number, hit: Hit | null) {
 }
 
 const inspector = byId('inspector');
+const cellText = (cell: number) => `cell ${coords(cell)}`;
 function cellName(cell: number): string {
   if (!layout || !lastFrame) return '';
   const code = lastFrame.cells[cell];
@@ -521,6 +605,7 @@ function clearSelection() {
 function showInspector(cell: number, facts: Record<string, unknown>) {
   const dl = el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
   for (const [k, v] of Object.entries(facts)) {
+    if (STRUCTURE_FACTS.includes(k)) continue;
     dl.append(el('dt', { text: k.replace(/_/g, ' ') }), el('dd', { text: typeof v === 'object' ? JSON.stringify(v) : formatNumber(v) }));
   }
   inspector.hidden = false;
@@ -537,6 +622,29 @@ function showInspector(cell: number, facts: Record<string, unknown>) {
   view.request();
 }
 
+// ---- the run in words, and the keyboard cursor -------------------------------------------------
+
+const announcer = new Announcer(byId('run-live'));
+const keyCursor = new KeyCursor(byId('canvas-wrap'), {
+  layout: () => layout,
+  cells: () => lastFrame?.cells ?? null,
+  show(cell) {
+    view.marks.cursor = cell >= 0 ? { cell, kind: 'cursor' } : null;
+    view.request();
+    byId('view').dataset.cursor = String(cell);
+    if (cell >= 0) showHover(cell);
+  },
+  click: (cell) => void clickCell(cell, null),
+  announce(cell) {
+    if (cell < 0) {
+      announcer.say('Cursor hidden; the arrows step the run again.');
+      return;
+    }
+    const label = layout?.tools.find((t) => t.name === tool)?.label ?? 'Inspect';
+    announcer.say(`Cursor at ${cellText(cell)}, ${cellName(cell)}. Enter: ${label}.`);
+  },
+});
+
 // ---- scenario panel ---------------------------------------------------------------------------
 
 const jsonEditor = byId<HTMLTextAreaElement>('scenario-json');
@@ -550,7 +658,7 @@ function syncJsonEditor() {
 /** Changes one top-level key through the core; returns the problem, or null when applied. */
 function applyChange(key: string, valueJson: string, onError?: (problem: string) => void): string | null {
   try {
-    const next = core.override(scenario, key, valueJson);
+    const next = change(scenario, key, valueJson);
     load(next);
     return null;
   } catch (e) {
@@ -558,14 +666,6 @@ function applyChange(key: string, valueJson: string, onError?: (problem: string)
     onError?.(problem);
     return problem;
   }
-}
-
-interface Exercise {
-  title: string;
-  instructions: string;
-  locked: Record<string, unknown>;
-  goal: string;
-  hints: string[];
 }
 
 /** Hints revealed so far, and the exercise they belong to. */
@@ -682,7 +782,7 @@ function renderScenarioPanel() {
   const spec = modelEditors[model];
   const exercise = doc.exercise as Exercise | undefined;
   renderExercise(exercise);
-  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value), spec?.owns, new Set(Object.keys(exercise?.locked ?? {})));
+  renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => applyChange(key, value), spec?.owns, new Set(Object.keys(exercise?.locked ?? {})), core.modelSchema(model));
   jsonDirty = false;
   syncJsonEditor();
   jsonError.textContent = '';
@@ -703,7 +803,7 @@ function renderScenarioPanel() {
         change: (changes) => {
           let next = scenario;
           try {
-            for (const [k, v] of Object.entries(changes)) next = core.override(next, k, JSON.stringify(v));
+            for (const [k, v] of Object.entries(changes)) next = change(next, k, JSON.stringify(v));
           } catch (e) {
             return core.message(e);
           }
@@ -795,16 +895,24 @@ function openHash(): boolean {
   const hash = location.hash.slice(1);
   if (!hash) return false;
   try {
-    const json = core.decodeLink(hash);
+    const unpacked = core.unpackLink(hash);
+    const previous = scenario;
+    const remember = (json: string) => {
+      if (previous && json !== previous) history.push(previous);
+      updateUndo();
+      introduce(json);
+    };
+    // A large scenario is validated by the worker as it opens; a small one here, at once.
+    if (!large.begin(unpacked.scenario, remember)) {
+      const json = core.normalize(unpacked.scenario);
+      remember(json);
+      scenario = json;
+    }
     // A link made with another behaviour of its model opens, but its run may not be its maker's.
-    const { made_with, current } = core.linkVersions(hash);
+    const { made_with, current } = unpacked;
     linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
     linkNotice.hidden = made_with === current;
-    if (scenario && json !== scenario) history.push(scenario);
-    scenario = json;
-    open(json);
-    updateUndo();
-    introduce(json);
+    open(large.active ? unpacked.scenario : scenario);
     dismiss();
     return true;
   } catch (e) {
@@ -917,12 +1025,58 @@ byId('simulate-crash').addEventListener('click', () => sim.crash());
 // ---- start ------------------------------------------------------------------------------------
 
 async function start() {
+  registerOffline((reload) => {
+    keepBanner = true;
+    report('A new version of Kumiki is ready.', { label: 'Reload', run: reload });
+  });
   await core.loadCore();
   await useRenderer();
   byId('diag-version').textContent = core.version();
-  setupGallery(core.presets(), (name) => load(core.presetJson(name)));
+  setupGallery(
+    core.presets(),
+    core.lessons(),
+    (name) => load(core.presetJson(name)),
+    // A lesson opens on the run tab, where its exercise panel is.
+    (name) => load(core.lessonJson(name)) && selectTab('run'),
+  );
   setupExperiments(prefs, persistPrefs, report);
+  setupRecordDialog({
+    describe: () => {
+      const doc = JSON.parse(scenario) as { name?: string; seed?: number };
+      return { name: String(doc.name || 'scenario'), seed: Number(doc.seed ?? 0), steps: lastFrame?.steps ?? 0 };
+    },
+    pause: () => sim.pause(),
+    advance: stepAndDraw,
+    setScale: (scale) => view.setCaptureScale(scale),
+    captureFrame: () => view.captureFrame(),
+  });
   selectTab(tabs.includes(prefs.tab) ? prefs.tab : 'run');
+  if (embedded) {
+    embed = new Embed(
+      {
+        load: (payload) => {
+          try {
+            const json = core.unpackLink(payload).scenario;
+            if (load(json, { quiet: true })) return null;
+            // Only a scenario small enough to check here fails at once: say why.
+            core.normalize(json);
+            return 'This scenario cannot run.';
+          } catch (e) {
+            return core.message(e);
+          }
+        },
+        play: () => sim.play(),
+        pause: () => sim.pause(),
+        step: (count) => sim.step(count),
+        reset,
+        check: () => sim.check(),
+      },
+      core.version(),
+    );
+    // An embedded page shows its link or the default scenario, never what this browser last edited.
+    if (!openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false });
+    return;
+  }
   const unfinished = openingScenario();
   if (unfinished !== null) {
     // The page was closed or stopped while a scenario was opening: it may be what stopped it.

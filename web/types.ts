@@ -46,6 +46,19 @@ export interface PresetInfo {
   description: string;
 }
 
+/** A built-in lesson (kumiki_core::lessons::LessonInfo). */
+export interface LessonInfo {
+  name: string;
+  model: string;
+  /** The model's paper. */
+  paper: string;
+  /** The paper's section and figures the lesson is about. */
+  section: string;
+  /** The exercise's title. */
+  title: string;
+  description: string;
+}
+
 /**
  * What a 3-D view draws beyond the cells (kumiki_core::models::Scene): a target ghost, the light
  * direction, and a ground plane under layer `ground`. Bonds come with each frame.
@@ -54,6 +67,18 @@ export interface SceneInfo {
   ghost?: number[];
   light?: [number, number, number];
   ground?: number;
+}
+
+/** A metric's every-step record, merged for drawing (kumiki_core::series::Band). */
+export interface ChartBand {
+  metric: string;
+  /** The first step of each point's range. */
+  steps: Float64Array;
+  /** The least and the greatest value over each point's steps. */
+  min: Float64Array;
+  max: Float64Array;
+  /** Steps per recorded bucket: 1 until the record is full, then doubling. */
+  span: number;
 }
 
 /** One frame of a running simulation, as the worker sends it. */
@@ -75,6 +100,8 @@ export interface Frame {
   stepsPerSecond: number;
   /** The model's scene when it changed since the last frame (always in the first after a load), else null. */
   scene: SceneInfo | null;
+  /** The charted metric's record, when the page asked for one. */
+  chart: ChartBand | null;
 }
 
 export interface ExperimentInfo {

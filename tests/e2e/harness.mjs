@@ -18,6 +18,7 @@ const TYPES = {
   '.svg': 'image/svg+xml',
   '.json': 'application/json',
   '.png': 'image/png',
+  '.webmanifest': 'application/manifest+json',
 };
 
 /** The headers a static host sends with every file, from the build's dist/_headers. */
@@ -32,9 +33,10 @@ function hostHeaders() {
 
 /**
  * Serves dist/ at `prefix` (e.g. '/' or '/classes/kumiki/') with the headers of dist/_headers,
- * as a static host would. Resolves to { url, close }.
+ * as a static host would. Resolves to { url, close }. `rewrite(path, body)` may change a file as
+ * it is served (a new deployment), or return null to drop the connection (the network is down).
  */
-export function serve(prefix = '/') {
+export function serve(prefix = '/', { rewrite = (_path, body) => body } = {}) {
   const headers = hostHeaders();
   const server = createServer(async (req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
@@ -47,8 +49,13 @@ export function serve(prefix = '/') {
     const file = join(DIST, rel);
     try {
       if (!(await stat(file)).isFile()) throw new Error('not a file');
+      const body = rewrite(rel, await readFile(file));
+      if (body === null) {
+        req.socket.destroy();
+        return;
+      }
       res.writeHead(200, { ...headers, 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' });
-      res.end(await readFile(file));
+      res.end(body);
     } catch {
       res.writeHead(404).end('not found');
     }

@@ -158,6 +158,21 @@ describe('the page', () => {
     await context.close();
   });
 
+  test('the form offers every choice of the schema as a select, with bounds and help text', async () => {
+    const { page, context } = await openPage(s.browser, s.server.url);
+    await page.click('#tab-scenario');
+    assert.equal(await page.$eval('#param-collision', (e) => e.tagName), 'SELECT');
+    const options = await page.$$eval('#param-collision option', (os) => os.map((o) => o.textContent));
+    assert.deepEqual(options, ['token', 'relay', 'blackboard']);
+    assert.equal(await page.$eval('#param-field', (e) => e.tagName), 'SELECT');
+    assert.equal(await page.getAttribute('#param-supply_rows', 'max'), '64');
+    assert.match(await page.textContent('#param-collision-help'), /relay: /);
+    await page.selectOption('#param-collision', '"relay"');
+    await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"collision": "relay"'));
+    assert.equal(await page.textContent('#param-collision-error'), '');
+    await context.close();
+  });
+
   test('edits survive a reload, and undo brings the previous scenario back', async () => {
     const { page, context } = await openPage(s.browser, s.server.url);
     await page.fill('#seed', '777');

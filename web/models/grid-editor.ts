@@ -1,7 +1,9 @@
 // A shape editor for the square and hex lattices: paint or erase cells by dragging (mouse, pen or
-// touch), move a cursor with the arrow keys and toggle with Space, resize, trim, undo and redo,
-// and edit the same shape as text. Shapes are read and written by the core's own rules.
+// one finger; the gestures come from render/gestures.ts), move a cursor with the arrow keys and
+// toggle with Space, resize, trim, undo and redo, and edit the same shape as text. Shapes are read
+// and written by the core's own rules.
 import { HEX_RADIUS, HEX_ROW, cellAt, cellCentre, hexCorners } from '../render/geometry';
+import { bindGestures, type Point } from '../render/gestures';
 import { History } from '../store';
 import { clear, el } from '../ui/dom';
 import { formatShape, message, parseShape, type Shape } from '../wasm';
@@ -47,6 +49,7 @@ export class GridEditor {
   private readonly undoButton: HTMLButtonElement;
   private readonly redoButton: HTMLButtonElement;
   private readonly resizeObserver: ResizeObserver;
+  private gestures: { destroy(): void } | null = null;
   private scale = 10;
   private readonly maxSide: number;
 
@@ -122,6 +125,7 @@ export class GridEditor {
 
   destroy() {
     this.resizeObserver.disconnect();
+    this.gestures?.destroy();
     clear(this.root);
   }
 
@@ -335,10 +339,9 @@ export class GridEditor {
     }
   }
 
-  private cellUnder(e: PointerEvent): number {
-    const r = this.canvas.getBoundingClientRect();
+  private cellAt(at: Point): number {
     const { w, h } = this.shape;
-    return cellAt({ lattice: this.opts.lattice, dims: [w, h, 1] } as never, (e.clientX - r.left) / this.scale, (e.clientY - r.top) / this.scale);
+    return cellAt({ lattice: this.opts.lattice, dims: [w, h, 1] } as never, at.x / this.scale, at.y / this.scale);
   }
 
   private paintCell(i: number, erase: boolean) {
@@ -353,35 +356,38 @@ export class GridEditor {
     }
   }
 
+  /** Ends a paint stroke: one undo step for all of it, applied once. */
+  private endStroke() {
+    if (!this.stroke) return;
+    const changed = this.stroke.changed;
+    this.stroke = null;
+    this.sync();
+    if (changed) this.push();
+  }
+
   private bind() {
     const c = this.canvas;
-    c.addEventListener('contextmenu', (e) => e.preventDefault());
-    c.addEventListener('pointerdown', (e) => {
-      c.setPointerCapture(e.pointerId);
-      c.focus();
-      const i = this.cellUnder(e);
-      this.stroke = { erase: this.tool === 'erase' || e.button === 2 || e.shiftKey, last: i, changed: false };
-      if (i >= 0) this.cursor = i;
-      this.paintCell(i, this.stroke.erase);
-      this.draw();
+    this.gestures = bindGestures(c, {
+      press: (at, button, mods, pointers) => {
+        c.focus();
+        // A second finger is a pinch, not painting: the stroke so far is kept and ends here.
+        if (pointers > 1) return this.endStroke();
+        const i = this.cellAt(at);
+        this.stroke = { erase: this.tool === 'erase' || button === 2 || mods.shiftKey, last: i, changed: false };
+        if (i >= 0) this.cursor = i;
+        this.paintCell(i, this.stroke.erase);
+        this.draw();
+      },
+      drag: (_dx, _dy, _kind, at) => {
+        if (!this.stroke) return;
+        const i = this.cellAt(at);
+        if (i === this.stroke.last) return;
+        this.stroke.last = i;
+        this.paintCell(i, this.stroke.erase);
+        this.draw();
+      },
+      release: () => this.endStroke(),
     });
-    c.addEventListener('pointermove', (e) => {
-      if (!this.stroke) return;
-      const i = this.cellUnder(e);
-      if (i === this.stroke.last) return;
-      this.stroke.last = i;
-      this.paintCell(i, this.stroke.erase);
-      this.draw();
-    });
-    const end = () => {
-      if (!this.stroke) return;
-      const changed = this.stroke.changed;
-      this.stroke = null;
-      this.sync();
-      if (changed) this.push();
-    };
-    c.addEventListener('pointerup', end);
-    c.addEventListener('pointercancel', end);
     c.addEventListener('focus', () => this.draw());
     c.addEventListener('blur', () => this.draw());
     c.addEventListener('keydown', (e) => {

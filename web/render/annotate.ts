@@ -1,6 +1,6 @@
 // The annotation layer, drawn with Canvas 2D over either renderer: events of the last step,
-// gradient arrows, cell labels, the hovered cell and highlighted cells. Only what is visible and
-// large enough to read is drawn.
+// gradient arrows, cell labels, the hovered cell, highlighted cells and the keyboard cursor. Only
+// what is visible and large enough to read is drawn.
 import type { Camera2D, Camera3D } from './camera';
 import { HEX_RADIUS, cellCentre, hexCorners, neighbours } from './geometry';
 import type { Scene } from './renderer';
@@ -14,8 +14,13 @@ export interface Marks {
   highlightValues?: number[];
   /** The cell picked with the inspector, outlined. */
   selected?: number;
-  /** An editing cursor in 3-D: where a unit would be added or removed, or the keyboard cursor. */
+  /** An editing cursor in 3-D (where a unit would be added or removed), or the keyboard cursor. */
   cursor?: { cell: number; kind: 'add' | 'remove' | 'cursor' } | null;
+  /** One slot's signals: pairs (cell, lit faces as a mask of lattice directions); a sender
+   * with no face bit (a signal along a route or a line) is ringed. */
+  signals?: number[];
+  /** Units drawn displaced over the view: triples (cell, dx, dy) in cells, y down. */
+  displaced?: number[];
   /** 3-D view options (default on). */
   ghost?: boolean;
   bonds?: boolean;
@@ -138,17 +143,65 @@ export function annotate(ctx: CanvasRenderingContext2D, dpr: number, scene: Scen
     }
   }
 
+  const displaced = marks.displaced;
+  if (displaced?.length && layout.lattice === 'square') {
+    // The deflected shape: each unit's square moved by its (scaled) displacement.
+    ctx.fillStyle = 'rgba(43,149,214,0.28)';
+    ctx.strokeStyle = 'rgba(16,107,163,0.9)';
+    ctx.lineWidth = 1;
+    const side = cam.scale * 0.9;
+    for (let k = 0; k + 2 < displaced.length; k += 3) {
+      const i = displaced[k];
+      const [wx, wy] = cellCentre(layout.lattice, i % w, Math.floor(i / w));
+      const [sx, sy] = cam.toScreen(wx + displaced[k + 1], wy + displaced[k + 2]);
+      ctx.fillRect(sx - side / 2, sy - side / 2, side, side);
+      ctx.strokeRect(sx - side / 2, sy - side / 2, side, side);
+    }
+  }
+
+  const signals = marks.signals;
+  if (signals?.length) {
+    ctx.strokeStyle = 'rgba(240,180,41,0.95)';
+    ctx.fillStyle = 'rgba(240,180,41,0.95)';
+    ctx.lineWidth = Math.max(1.5, cam.scale * 0.08);
+    const radius = Math.max(3, cam.scale * 0.3);
+    for (let k = 0; k + 1 < signals.length; k += 2) {
+      const i = signals[k];
+      const faces = signals[k + 1];
+      const from = centre(i);
+      if (!faces) {
+        ctx.beginPath();
+        ctx.arc(from[0], from[1], radius, 0, Math.PI * 2);
+        ctx.stroke();
+        continue;
+      }
+      const around = neighbours(layout, i, true);
+      for (let d = 0; d < around.length; d++) {
+        if (!(faces & (1 << d)) || around[d] < 0) continue;
+        // An arrow from the sender's centre toward the face it lights.
+        const to = centre(around[d]);
+        arrow(ctx, [(from[0] * 2 + to[0]) / 3, (from[1] * 2 + to[1]) / 3], to, cam.scale);
+      }
+    }
+  }
+
   for (const i of marks.highlight) outline(ctx, scene, cam, i, 'rgba(240,180,41,0.95)');
   if (marks.hover >= 0) outline(ctx, scene, cam, marks.hover, 'rgba(255,255,255,0.9)');
+  // The keyboard cursor: dark and light, so it shows on any cell colour.
+  const cursor = marks.cursor;
+  if (cursor && cursor.kind === 'cursor' && cursor.cell >= 0) {
+    outline(ctx, scene, cam, cursor.cell, 'rgba(0,0,0,0.9)', 5);
+    outline(ctx, scene, cam, cursor.cell, '#ffd166', 2.5);
+  }
 }
 
-function outline(ctx: CanvasRenderingContext2D, scene: Scene, cam: Camera2D, i: number, color: string) {
+function outline(ctx: CanvasRenderingContext2D, scene: Scene, cam: Camera2D, i: number, color: string, width = 2) {
   const { layout } = scene;
   const w = layout.dims[0];
   const [wx, wy] = cellCentre(layout.lattice, i % w, Math.floor(i / w));
   const [sx, sy] = cam.toScreen(wx, wy);
   ctx.strokeStyle = color;
-  ctx.lineWidth = 2;
+  ctx.lineWidth = width;
   ctx.beginPath();
   if (layout.lattice === 'hex') {
     const c = hexCorners(sx, sy, HEX_RADIUS * cam.scale);

@@ -1,10 +1,12 @@
-// The lattice view: owns the canvases, the renderer and the camera; turns pointer, wheel, pinch
-// and keyboard input into camera moves and cell clicks; draws at most once per animation frame.
+// The lattice view: owns the canvases, the renderer and the camera; turns gestures (pointer,
+// wheel, pinch: see gestures.ts) and keyboard input into camera moves and cell clicks; draws at
+// most once per animation frame.
 import type { Frame, Layout, SceneInfo } from '../types';
 import { annotate, type Marks } from './annotate';
-import { Camera2D, Camera3D, type Camera, type Hit, fitCamera, occupiedBox } from './camera';
+import { Camera2D, Camera3D, type Camera, type Hit, cameraGestures, fitCamera, occupiedBox } from './camera';
 import { lampPlacement } from './cubic-scene';
 import { type Bounds, HEX_RADIUS, cellCentre } from './geometry';
+import { bindGestures } from './gestures';
 import { range } from './palette';
 import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
 
@@ -30,10 +32,9 @@ export class View {
   private cssWidth = 1;
   private cssHeight = 1;
   private dpr = 1;
-  private readonly pointers = new Map<number, { x: number; y: number }>();
-  private dragMoved = 0;
-  private pinch = 0;
-  private pinchCentre: { x: number; y: number } | null = null;
+  /** Drawing-buffer multiple used while recording at 2×; 1 otherwise. */
+  private captureScale = 1;
+  private gestures: { destroy(): void } | null = null;
   readonly marks: Marks = { arrows: true, labels: true, hover: -1, highlight: [], selected: -1, ghost: true, bonds: true };
   private readonly annotations: CanvasRenderingContext2D;
 
@@ -150,6 +151,33 @@ export class View {
     });
   }
 
+  /**
+   * Renders the drawing buffers at `scale` times their usual resolution (a recording at 2×), or
+   * back at 1. The canvases keep their size on the page.
+   */
+  setCaptureScale(scale: number) {
+    if (scale === this.captureScale) return;
+    this.captureScale = scale;
+    this.resize();
+  }
+
+  /**
+   * The view as a picture: the lattice and its annotations drawn now, at the drawing buffer's
+   * resolution, composited into one bitmap. Drawing just before copying makes the copy independent
+   * of when the browser last presented the canvas.
+   */
+  captureFrame(): Promise<ImageBitmap> {
+    if (!(this.renderer && this.layout && this.frame)) return Promise.reject(new Error('nothing is drawn yet'));
+    const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
+    this.renderer.draw(scene);
+    annotate(this.annotations, this.dpr, scene, this.marks);
+    const out = new OffscreenCanvas(this.canvas.width, this.canvas.height);
+    const ctx = out.getContext('2d')!;
+    ctx.drawImage(this.canvas, 0, 0);
+    ctx.drawImage(this.annotations.canvas, 0, 0, out.width, out.height);
+    return Promise.resolve(out.transferToImageBitmap());
+  }
+
   private draw() {
     if (this.renderer && this.layout && this.frame) {
       const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
@@ -171,7 +199,7 @@ export class View {
     const rect = this.wrap.getBoundingClientRect();
     this.cssWidth = Math.max(1, rect.width);
     this.cssHeight = Math.max(1, rect.height);
-    this.dpr = Math.min(2, window.devicePixelRatio || 1);
+    this.dpr = Math.min(2, window.devicePixelRatio || 1) * this.captureScale;
     const c = this.camera;
     const hadSize = c.width > 1;
     const [wx, wy] = c.kind === '2d' && hadSize ? c.toWorld(c.width / 2, c.height / 2) : [0, 0];
@@ -198,80 +226,29 @@ export class View {
   }
 
   private bind(canvas: HTMLCanvasElement) {
-    const local = (e: PointerEvent | WheelEvent) => {
-      const r = canvas.getBoundingClientRect();
-      return { x: e.clientX - r.left, y: e.clientY - r.top };
-    };
-    canvas.addEventListener('pointerdown', (e) => {
-      canvas.setPointerCapture(e.pointerId);
-      this.pointers.set(e.pointerId, local(e));
-      this.dragMoved = 0;
-      this.pinch = this.pinchDistance();
-      this.pinchCentre = this.pinchMiddle();
-    });
-    canvas.addEventListener('pointermove', (e) => {
-      const p = local(e);
-      const prev = this.pointers.get(e.pointerId);
-      if (!prev) {
-        const { cell } = this.pick(p.x, p.y);
+    this.gestures?.destroy();
+    this.gestures = bindGestures(canvas, {
+      ...cameraGestures(() => this.camera, () => this.request()),
+      tap: (at) => {
+        const { cell, hit } = this.pick(at.x, at.y);
+        this.on.click(cell, hit);
+      },
+      hover: (at) => {
+        const { cell } = this.pick(at.x, at.y);
         if (cell !== this.marks.hover) {
           this.marks.hover = cell;
           this.on.hover(cell);
           this.request();
         }
-        return;
-      }
-      this.pointers.set(e.pointerId, p);
-      if (this.pointers.size === 2) {
-        // Two fingers: the spread zooms, the midpoint pans.
-        const d = this.pinchDistance();
-        const mid = this.pinchMiddle();
-        if (this.pinch > 0 && d > 0) this.camera.zoom(d / this.pinch);
-        if (this.pinchCentre && mid) this.camera.pan(mid.x - this.pinchCentre.x, mid.y - this.pinchCentre.y);
-        this.pinch = d;
-        this.pinchCentre = mid;
-        this.dragMoved += 10;
-      } else {
-        const dx = p.x - prev.x;
-        const dy = p.y - prev.y;
-        this.dragMoved += Math.abs(dx) + Math.abs(dy);
-        if (this.camera.kind === '3d' && !e.shiftKey && e.buttons !== 2 && e.buttons !== 4) this.camera.orbit(dx, dy);
-        else this.camera.pan(dx, dy);
-      }
-      this.request();
-    });
-    const end = (e: PointerEvent) => {
-      const p = this.pointers.get(e.pointerId);
-      this.pointers.delete(e.pointerId);
-      if (e.type === 'pointerup' && p && this.dragMoved < 6 && this.pointers.size === 0) {
-        const { cell, hit } = this.pick(p.x, p.y);
-        this.on.click(cell, hit);
-      }
-      this.pinch = this.pinchDistance();
-      this.pinchCentre = this.pinchMiddle();
-    };
-    canvas.addEventListener('pointerup', end);
-    canvas.addEventListener('pointercancel', end);
-    canvas.addEventListener('pointerleave', () => {
-      if (this.marks.hover !== -1) {
-        this.marks.hover = -1;
-        this.on.hover(-1);
-        this.request();
-      }
-    });
-    canvas.addEventListener(
-      'wheel',
-      (e) => {
-        e.preventDefault();
-        const p = local(e);
-        const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
-        if (this.camera.kind === '2d') this.camera.zoom(factor, p.x, p.y);
-        else this.camera.zoom(factor);
-        this.request();
       },
-      { passive: false },
-    );
-    canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+      leave: () => {
+        if (this.marks.hover !== -1) {
+          this.marks.hover = -1;
+          this.on.hover(-1);
+          this.request();
+        }
+      },
+    });
     // Keyboard: Shift+arrows orbit a 3-D view, Alt+arrows pan (plain arrows stay the page's).
     canvas.addEventListener('keydown', (e) => {
       const dir = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key];
@@ -282,18 +259,6 @@ export class View {
       else this.camera.pan(-dir[0] * 40, -dir[1] * 40);
       this.request();
     });
-  }
-
-  private pinchMiddle(): { x: number; y: number } | null {
-    if (this.pointers.size !== 2) return null;
-    const [a, b] = [...this.pointers.values()];
-    return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
-  }
-
-  private pinchDistance(): number {
-    if (this.pointers.size !== 2) return 0;
-    const [a, b] = [...this.pointers.values()];
-    return Math.hypot(a.x - b.x, a.y - b.y);
   }
 }
 

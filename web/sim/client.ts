@@ -27,6 +27,7 @@ export class SimClient {
   private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
   private speed = 30;
   private overlay: string | null = null;
+  private chart: { metric: string | null; points: number } = { metric: null, points: 400 };
   private pingId = 0;
   /** When the oldest unanswered ping was sent; null when every ping has been answered. */
   private unanswered: number | null = null;
@@ -60,6 +61,7 @@ export class SimClient {
     this.worker.onerror = (e) => this.on.error(`the simulation worker failed: ${e.message}`, 'step');
     this.send({ type: 'speed', stepsPerSecond: this.speed });
     this.send({ type: 'overlay', field: this.overlay });
+    this.send({ type: 'chart', ...this.chart });
   }
 
   private send(msg: ToWorker) {
@@ -152,6 +154,11 @@ export class SimClient {
   setOverlay(field: string | null) {
     this.overlay = field;
     this.send({ type: 'overlay', field });
+  }
+  /** Which metric the chart shows, and about how many points it draws: frames carry its record. */
+  setChart(metric: string | null, points: number) {
+    this.chart = { metric, points };
+    this.send({ type: 'chart', metric, points });
   }
   apply(action: Record<string, unknown>) {
     this.send({ type: 'apply', action: JSON.stringify(action) });

@@ -10,6 +10,7 @@ export type ToWorker =
   | { type: 'check' }
   | { type: 'speed'; stepsPerSecond: number }
   | { type: 'overlay'; field: string | null }
+  | { type: 'chart'; metric: string | null; points: number }
   | { type: 'apply'; action: string }
   | { type: 'inspect'; cell: number; id: number }
   | { type: 'ack' }

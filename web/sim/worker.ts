@@ -3,7 +3,7 @@
 // fast simulation never floods the page. Timing here paces the run; it never enters the model.
 import init, { Sim, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
 import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
-import type { Frame, Metrics, SceneInfo } from '../types';
+import type { ChartBand, Frame, Metrics, SceneInfo } from '../types';
 import type { FromWorker, ToWorker } from './protocol';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -21,6 +21,9 @@ let hasBonds = false;
 let playing = false;
 let stepsPerSecond = 30;
 let overlay: string | null = null;
+/** The metric the page charts, and about how many points it draws. */
+let chartMetric: string | null = null;
+let chartPoints = 400;
 let awaitingAck = false;
 let dirty = false;
 let lastHashAt = 0;
@@ -98,10 +101,12 @@ function sendFrame(force = false) {
       bonds: hasBonds ? s.bonds() : null,
       stepsPerSecond: playing ? measuredRate() : 0,
       scene: sceneChanged ? scene : null,
+      chart: chartMetric ? chartBand(s, chartMetric) : null,
     };
   });
   if (!frame) return;
   const transfer: Transferable[] = [frame.cells.buffer, frame.agents.buffer, frame.events.buffer];
+  if (frame.chart) transfer.push(frame.chart.steps.buffer, frame.chart.min.buffer, frame.chart.max.buffer);
   if (frame.field) transfer.push(frame.field.data.buffer);
   if (frame.bonds) transfer.push(frame.bonds.buffer);
   awaitingAck = true;
@@ -111,6 +116,13 @@ function sendFrame(force = false) {
     goalJudged = true;
     judge(s);
   } else if (!frame.finished) goalJudged = false;
+}
+
+/** The charted metric's record of every step so far, merged to about one point per pixel. */
+function chartBand(s: Sim, metric: string): ChartBand {
+  const flat = s.chart(metric, chartPoints);
+  const n = flat.length / 3;
+  return { metric, steps: flat.slice(0, n), min: flat.slice(n, 2 * n), max: flat.slice(2 * n), span: s.chart_span() };
 }
 
 /** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
@@ -229,6 +241,12 @@ function handle(msg: ToWorker) {
       return;
     case 'overlay':
       overlay = msg.field;
+      dirty = true;
+      schedule();
+      return;
+    case 'chart':
+      chartMetric = msg.metric;
+      chartPoints = Math.max(1, Math.min(4096, Math.round(msg.points)));
       dirty = true;
       schedule();
       return;

@@ -1,13 +1,16 @@
-// A live line chart of one metric against step, drawn with uPlot.
+// A live chart of one metric against step, drawn with uPlot. The worker records every step's
+// metrics (kumiki_core::series) and sends the charted one merged into about one point per pixel:
+// per point, the least and greatest value over its steps, drawn as a band, so a one-step dip
+// still shows however fast the run went.
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
+import type { ChartBand } from '../types';
 
-const MAX_POINTS = 4000;
+const COLOR = '#2b6cb0';
 
 export class MetricChart {
   private plot: uPlot | null = null;
-  private xs: number[] = [];
-  private ys: number[] = [];
+  private band: ChartBand | null = null;
   private label = '';
   private dirty = false;
 
@@ -15,44 +18,47 @@ export class MetricChart {
     new ResizeObserver(() => this.resize()).observe(root);
   }
 
+  /** Points worth asking the worker for: about one per pixel of the plot. */
+  get points(): number {
+    return Math.max(100, Math.round(this.root.clientWidth || 400));
+  }
+
   reset(label: string) {
     this.label = label;
-    this.xs = [];
-    this.ys = [];
+    this.band = null;
     this.plot?.destroy();
     this.plot = null;
     this.dirty = true;
+    this.describe();
   }
 
-  push(step: number, value: number) {
-    const last = this.xs.length - 1;
-    if (last >= 0 && step <= this.xs[last]) {
-      if (step === this.xs[last]) this.ys[last] = value;
-      return;
-    }
-    this.xs.push(step);
-    this.ys.push(value);
-    if (this.xs.length > MAX_POINTS) {
-      // Halve the resolution of the older half, keep the newest points.
-      this.xs = this.xs.filter((_, i) => i % 2 === 0 || i > MAX_POINTS / 2);
-      this.ys = this.ys.filter((_, i) => i % 2 === 0 || i > MAX_POINTS / 2);
-    }
+  /** The recorded band of the charted metric, as the worker sent it. */
+  set(band: ChartBand) {
+    if (band.metric !== this.label) return;
+    this.band = band;
     this.dirty = true;
+    this.describe();
   }
 
-  /** Forgets the points after `step`: the run forked there. */
-  truncate(step: number) {
-    const keep = this.xs.findIndex((x) => x > step);
-    if (keep < 0) return;
-    this.xs = this.xs.slice(0, keep);
-    this.ys = this.ys.slice(0, keep);
-    this.dirty = true;
+  /** What the chart holds, on the element: tests and assistive tools read it without the canvas. */
+  private describe() {
+    const d = this.root.dataset;
+    const b = this.band;
+    d.metric = this.label;
+    d.points = String(b?.steps.length ?? 0);
+    d.span = String(b?.span ?? 1);
+    const finite = (xs: Float64Array | undefined) => [...(xs ?? [])].filter(Number.isFinite);
+    const lows = finite(b?.min);
+    const highs = finite(b?.max);
+    d.min = lows.length ? String(Math.min(...lows)) : '';
+    d.max = highs.length ? String(Math.max(...highs)) : '';
   }
 
   render() {
     if (!this.dirty || !this.root.isConnected || this.root.offsetParent === null) return;
     this.dirty = false;
-    const data: uPlot.AlignedData = [this.xs, this.ys];
+    const b = this.band;
+    const data: uPlot.AlignedData = b ? [Array.from(b.steps), Array.from(b.max), Array.from(b.min)] : [[], [], []];
     if (!this.plot) {
       this.plot = new uPlot(
         {
@@ -62,7 +68,8 @@ export class MetricChart {
           cursor: { drag: { x: false, y: false } },
           scales: { x: { time: false } },
           axes: [{ label: 'step', size: 36 }, { size: 56 }],
-          series: [{}, { label: this.label, stroke: '#2b6cb0', width: 2 }],
+          series: [{}, { label: `${this.label} (greatest)`, stroke: COLOR, width: 2 }, { label: `${this.label} (least)`, stroke: COLOR, width: 2 }],
+          bands: [{ series: [1, 2], fill: 'rgba(43, 108, 176, 0.3)' }],
         },
         data,
         this.root,

@@ -25,9 +25,9 @@ export function clear(node: Element) {
   while (node.firstChild) node.firstChild.remove();
 }
 
-/** Offers text as a file download. */
-export function download(name: string, text: string, type: string) {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+/** Offers text (or bytes) as a file download. */
+export function download(name: string, data: BlobPart, type: string) {
+  const url = URL.createObjectURL(new Blob([data], { type }));
   const a = el('a', { href: url, download: name });
   document.body.append(a);
   a.click();

@@ -28,19 +28,26 @@ impl Timeline {
     }
 
     /// Call after each step: keeps a keyframe when the run stands on a multiple of the interval
-    /// past the last keyframe.
-    pub fn record(&mut self, run: &Run) {
+    /// past the last keyframe, and says whether it did.
+    pub fn record(&mut self, run: &Run) -> bool {
         let step = run.steps();
         let last = self.frames.last().map_or(0, Run::steps);
         if step <= last || step % self.every != 0 {
-            return;
+            return false;
         }
         self.frames.push(run.snapshot());
         if self.frames.len() > self.capacity {
-            self.every *= 2;
-            let every = self.every;
-            self.frames.retain(|f| f.steps() % every == 0);
+            self.coarsen();
         }
+        true
+    }
+
+    /// Doubles the interval and drops the keyframes off it. Called when the timeline is full, and
+    /// by a caller that finds keyframes cost too much next to the steps between them.
+    pub fn coarsen(&mut self) {
+        self.every *= 2;
+        let every = self.every;
+        self.frames.retain(|f| f.steps() % every == 0);
     }
 
     /// The run at `step`, replayed from the latest keyframe at or before it under `scenario`
@@ -123,6 +130,21 @@ mod tests {
         let steps: Vec<u64> = timeline.frames.iter().map(Run::steps).collect();
         assert_eq!(steps[0], 0);
         assert!(steps.iter().all(|s| s % every == 0), "{steps:?}");
+    }
+
+    #[test]
+    fn coarsening_keeps_the_start_and_the_new_multiples_and_seeks_alike() {
+        let (end, mut timeline, hashes) = recorded("amas-L", 200, 64);
+        let (before, every) = timeline.keyframes();
+        timeline.coarsen();
+        let (after, doubled) = timeline.keyframes();
+        assert_eq!(doubled, every * 2);
+        assert!(after < before && after >= before / 2, "{before} -> {after}");
+        let steps: Vec<u64> = timeline.frames.iter().map(Run::steps).collect();
+        assert_eq!(steps[0], 0);
+        assert!(steps.iter().all(|s| s % doubled == 0), "{steps:?}");
+        let r = timeline.seek(end.steps() - 1, end.scenario());
+        assert_eq!(r.state_hash(), hashes[end.steps() as usize - 1]);
     }
 
     #[test]

@@ -1,0 +1,228 @@
+//! Built-in lessons: classroom exercises tied to the papers, one JSON file each under `lessons/`,
+//! registered by file name like the presets.
+//!
+//! A lesson is a scenario with an `exercise` section. Its description starts with
+//! `Lesson (SECTION): ` where SECTION names the paper's section and figures it is about, so the
+//! gallery and `kumiki lessons` can show it; a test holds every lesson to that form.
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::models;
+use crate::presets::{lookup, LESSON_FILES};
+use crate::scenario::Scenario;
+
+/// Names of the built-in lessons, sorted.
+pub fn names() -> impl Iterator<Item = &'static str> {
+    LESSON_FILES.iter().map(|(name, _)| *name)
+}
+
+/// The JSON text of a lesson.
+pub fn json(name: &str) -> Result<&'static str> {
+    lookup(LESSON_FILES, "lesson", name)
+}
+
+pub fn scenario(name: &str) -> Result<Scenario> {
+    Scenario::from_json(json(name)?).map_err(|e| match e {
+        Error::Field { path, reason } => {
+            Error::field(path, format!("{reason} (in lesson '{name}')"))
+        }
+        other => other,
+    })
+}
+
+/// What a list of lessons shows of one.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LessonInfo {
+    pub name: &'static str,
+    pub model: String,
+    /// The model's paper, as its registry entry titles it.
+    pub paper: String,
+    /// The paper's section and figures the lesson is about ("section 3.2.5, figure 4").
+    pub section: String,
+    /// The exercise's title.
+    pub title: String,
+    pub description: String,
+}
+
+/// Every lesson, in name order.
+pub fn list() -> Result<Vec<LessonInfo>> {
+    names()
+        .map(|name| {
+            let s = scenario(name)?;
+            let title = s
+                .exercise
+                .as_ref()
+                .map(|e| e.title.clone())
+                .ok_or_else(|| {
+                    Error::field("exercise", format!("lesson '{name}' has no exercise"))
+                })?;
+            Ok(LessonInfo {
+                name,
+                paper: models::entry(s.model())?.title.to_string(),
+                section: section(&s.description).unwrap_or_default().to_string(),
+                model: s.model().to_string(),
+                title,
+                description: s.description,
+            })
+        })
+        .collect()
+}
+
+/// The SECTION of a description that starts `Lesson (SECTION): `.
+fn section(description: &str) -> Option<&str> {
+    let rest = description.strip_prefix("Lesson (")?;
+    let end = rest.find("): ")?;
+    Some(&rest[..end])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exercise::grade;
+    use serde_json::{json, Value};
+
+    /// The edit each lesson is designed to be solved by: a student who makes it meets the goal.
+    fn solution(name: &str) -> Vec<(&'static str, Value)> {
+        match name {
+            "lesson-amas-robots" => vec![("robots", json!(5))],
+            "lesson-amas-collisions" => vec![("collision", json!("relay"))],
+            "lesson-fracta-irritation" => vec![("I_th", json!(10.0))],
+            // The triangle with its spare, as fracta-repair starts.
+            "lesson-fracta-spare" => {
+                vec![("start", json!(". # # .\n . # # .\n. # # #\n # # # #\n"))]
+            }
+            "lesson-cubes-selection" => vec![("selection", json!("mrf"))],
+            "lesson-cubes-movable" => vec![("movable", json!(["C1", "C21", "C31"]))],
+            "lesson-cubes-cooling" => vec![("c", json!(10.0))],
+            "lesson-chobie-forms" => vec![("method", json!("cautious"))],
+            "lesson-chobie-bridge" => vec![("adaptation", json!(true))],
+            "lesson-chobie-leader" => vec![("leader", json!("temporary"))],
+            other => {
+                panic!("lesson {other} has no solution in this test: add the edit that solves it")
+            }
+        }
+    }
+
+    #[test]
+    fn every_lesson_is_an_exercise_named_after_its_file_and_citing_its_section() {
+        assert!(names().count() >= 8, "at least eight lessons");
+        for info in list().unwrap() {
+            let s = scenario(info.name).unwrap();
+            assert_eq!(
+                s.name, info.name,
+                "lesson file {0}.json must carry \"name\": \"{0}\"",
+                info.name
+            );
+            assert!(
+                info.name.starts_with("lesson-"),
+                "{}: lesson names start with 'lesson-'",
+                info.name
+            );
+            assert!(
+                !info.section.is_empty(),
+                "{}: the description starts 'Lesson (SECTION): '",
+                info.name
+            );
+            let exercise = s.exercise.unwrap();
+            assert!(
+                exercise.instructions.contains("section"),
+                "{}: the instructions cite the paper's section",
+                info.name
+            );
+            assert!(
+                !exercise.locked.is_empty(),
+                "{}: a lesson locks what it is not about",
+                info.name
+            );
+            assert!(
+                !crate::presets::names().any(|p| p == info.name),
+                "{} is also a preset",
+                info.name
+            );
+        }
+    }
+
+    #[test]
+    fn the_lessons_cover_every_model() {
+        let lessons = list().unwrap();
+        for m in models::MODELS {
+            assert!(
+                lessons.iter().filter(|l| l.model == m.name).count() >= 2,
+                "model {} needs at least two lessons",
+                m.name
+            );
+        }
+    }
+
+    #[test]
+    fn every_lesson_fails_as_given_and_is_met_by_its_solution() {
+        for name in names() {
+            let lesson = scenario(name).unwrap();
+            let given = grade(&lesson, None).unwrap();
+            assert!(
+                !given.met,
+                "{name}: the goal is met before any edit ({})",
+                given.because
+            );
+            assert!(
+                given.locked_edited.is_empty(),
+                "{name}: the unedited lesson breaks its own locks: {:?}",
+                given.locked_edited
+            );
+            let edits: Vec<(String, Value)> = solution(name)
+                .into_iter()
+                .map(|(p, v)| (p.to_string(), v))
+                .collect();
+            let solved = lesson.with_overrides(&edits).unwrap();
+            let graded = grade(&solved, Some(&lesson)).unwrap();
+            assert!(
+                graded.met,
+                "{name}: the intended solution does not meet the goal: {}",
+                graded.because
+            );
+            assert_eq!(
+                graded.changed,
+                edits.iter().map(|(p, _)| p.clone()).collect::<Vec<_>>(),
+                "{name}"
+            );
+        }
+    }
+
+    /// docs/teaching.md lists every lesson, as the files say, and nothing else.
+    #[test]
+    fn the_teachers_guide_lists_the_lessons_as_they_are() {
+        let guide = include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../docs/teaching.md"
+        ));
+        let rows: Vec<&str> = guide
+            .lines()
+            .filter(|l| l.starts_with("| `lesson-"))
+            .collect();
+        let want: Vec<String> = list()
+            .unwrap()
+            .into_iter()
+            .map(|l| {
+                let goal = scenario(l.name).unwrap().exercise.unwrap().goal;
+                format!(
+                    "| `{}` | {} | {} | {} | `{goal}` |",
+                    l.name, l.model, l.section, l.title
+                )
+            })
+            .collect();
+        assert_eq!(
+            rows, want,
+            "the lessons table in docs/teaching.md is not the lesson files'"
+        );
+    }
+
+    #[test]
+    fn section_is_read_from_the_description() {
+        assert_eq!(
+            section("Lesson (section 3.3, figure 5): the triangle"),
+            Some("section 3.3, figure 5")
+        );
+        assert_eq!(section("The triangle (section 3.3): no"), None);
+    }
+}

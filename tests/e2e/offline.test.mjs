@@ -1,0 +1,126 @@
+// Offline use: the built site is an installable app (a manifest with icons) whose service worker
+// keeps the page, its code and its wasm. After one visit the page opens and runs with the network
+// off; a new deployment installs beside the running version, is offered ("A new version of Kumiki
+// is ready"), and takes over when accepted.
+import assert from 'node:assert/strict';
+import { after, before, describe, test } from 'node:test';
+import { launch, loadWasm, serve, stepCount, waitForSteps } from './harness.mjs';
+
+const wasm = loadWasm();
+/** What the test host serves: the build as it is, a newer build, or nothing (the network is down). */
+let host = 'up';
+let server;
+let browser;
+before(async () => {
+  server = await serve('/', {
+    rewrite: (path, body) => {
+      if (host === 'down') return null;
+      // A new deployment: the same files under a new service-worker version.
+      if (host === 'newer' && path === 'sw.js') return Buffer.from(body.toString().replace(/\\"version\\":\\"([0-9a-f]+)\\"/, '\\"version\\":\\"$1-next\\"'));
+      return body;
+    },
+  });
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+/** A first visit: the page opens and its service worker has kept the build and taken control. */
+async function visit() {
+  host = 'up';
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await page.goto(server.url);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30000 });
+  return { context, page, problems };
+}
+
+const cached = (page) =>
+  page.evaluate(async () => {
+    const out = {};
+    for (const name of await caches.keys()) out[name] = (await (await caches.open(name)).keys()).map((r) => new URL(r.url).pathname);
+    return out;
+  });
+
+describe('offline', () => {
+  test('the manifest names the app and its icons, and every icon is served', async () => {
+    const manifest = await (await fetch(`${server.url}manifest.webmanifest`)).json();
+    assert.equal(manifest.short_name, 'Kumiki');
+    assert.equal(manifest.start_url, './');
+    assert.equal(manifest.display, 'standalone');
+    const sizes = manifest.icons.map((i) => i.sizes);
+    assert.ok(sizes.includes('192x192') && sizes.includes('512x512'));
+    assert.ok(manifest.icons.some((i) => i.purpose === 'maskable'));
+    for (const icon of manifest.icons) {
+      const res = await fetch(new URL(icon.src, server.url));
+      assert.equal(res.status, 200, icon.src);
+      const bytes = Buffer.from(await res.arrayBuffer());
+      assert.equal(bytes.toString('latin1', 1, 4), 'PNG');
+      assert.equal(`${bytes.readUInt32BE(16)}x${bytes.readUInt32BE(20)}`, icon.sizes);
+    }
+    const page = await (await fetch(server.url)).text();
+    assert.match(page, /<link rel="manifest" href="\.\/manifest\.webmanifest">/);
+  });
+
+  test('after one visit the page opens and runs a preset with the network off', async () => {
+    const { context, page, problems } = await visit();
+    const kept = Object.values(await cached(page)).flat();
+    assert.ok(kept.some((p) => p.endsWith('.wasm')), 'the wasm is kept');
+    assert.ok(kept.includes('/'), 'the page is kept');
+    assert.ok(kept.includes('/manifest.webmanifest'));
+
+    host = 'down';
+    await context.setOffline(true);
+    await page.reload();
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    await page.click('#play');
+    await waitForSteps(page, 20);
+    await page.click('#play');
+    assert.ok((await stepCount(page)) >= 20);
+
+    // Another preset, through a link and with ?embed: the same kept page, the 3-D renderer.
+    const link = wasm.encode_link(wasm.preset_json('cubes-cube8-ladder'));
+    await page.goto(`${server.url}?embed#${link}`);
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+    assert.equal(await page.textContent('#state-hash'), (() => {
+      const sim = new wasm.Sim(wasm.decode_link(link));
+      const hash = sim.hash();
+      sim.free();
+      return hash;
+    })());
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('a new deployment is offered, and reloading puts it in charge', async () => {
+    const { context, page, problems } = await visit();
+    const [before] = Object.keys(await cached(page));
+    assert.match(before, /^kumiki-[0-9a-f]{16}$/);
+    assert.equal(await page.isVisible('#banner'), false, 'no notice on the first visit');
+
+    host = 'newer';
+    await page.evaluate(() => navigator.serviceWorker.getRegistration().then((r) => r.update()));
+    await page.waitForSelector('#banner:not([hidden])', { timeout: 30000 });
+    assert.equal(await page.textContent('#banner-text'), 'A new version of Kumiki is ready.');
+    assert.equal(await page.textContent('#banner-action'), 'Reload');
+    await page.evaluate(() => {
+      window.beforeUpdate = true;
+    });
+    await Promise.all([page.waitForEvent('load', { timeout: 30000 }), page.click('#banner-action')]);
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+    assert.equal(await page.evaluate(() => window.beforeUpdate), undefined, 'the page reloaded');
+    assert.deepEqual(Object.keys(await cached(page)), [`${before}-next`], 'the new version replaced the old one');
+    assert.equal(await page.isVisible('#banner'), false);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+});
