@@ -52,7 +52,17 @@ describe('embed events', () => {
     const posted: { type: string; step?: number }[] = [];
     const parent = { postMessage: (m: { type: string; step?: number }) => posted.push(m) } as unknown as Window;
     const loads: string[] = [];
-    const host = { load: (p: string) => (loads.push(p), null), play() {}, pause() {}, step() {}, reset() {}, check() {} };
+    const host = {
+      load: (p: string) => {
+        loads.push(p);
+        return null;
+      },
+      play() {},
+      pause() {},
+      step() {},
+      reset() {},
+      check() {},
+    };
     const embed = new Embed(host, 'test', parent);
     const command = (data: unknown) => {
       for (const f of listeners) f({ source: parent, data } as unknown as MessageEvent);
