@@ -27,6 +27,11 @@ export async function benchPage(pageSpecs, linkFor) {
       const page = await context.newPage();
       await page.goto(`${server.url}#${linkFor(spec)}`);
       await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
+      // A shared link opens with its introduction, which would take the click on Play.
+      if (await page.isVisible('#intro')) {
+        await page.click('#intro button.primary');
+        await page.waitForSelector('#intro', { state: 'hidden' });
+      }
       await page.$eval('#speed', (s) => {
         s.value = '8';
         s.dispatchEvent(new Event('input'));

@@ -41,7 +41,10 @@ for (const { spec, native, wasm: w } of rows) {
 
 const wasmBytes = readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`);
 const gzKb = gzipSync(wasmBytes, { level: 9 }).length / 1024;
-console.log(`\nwasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (budget 300 KB)`);
+// The budget is the one the renderer issue sets, renderer included.
+const budgetKb = 350;
+const verdict = gzKb <= budgetKb ? 'within' : `${(gzKb - budgetKb).toFixed(1)} KB over`;
+console.log(`\nwasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (budget ${budgetKb} KB: ${verdict})`);
 
 const { benchPage } = await import('./bench-page.mjs');
 wasm.initSync({ module: wasmBytes });
