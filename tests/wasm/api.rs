@@ -70,6 +70,10 @@ fn cubes_scene_and_queries_in_wasm() {
     let mut sim = Sim::new(&preset_json("cubes-light").unwrap()).unwrap();
     assert_eq!(sim.advance(5), 5);
     assert!(sim.scene().is_ok());
+    // The first frame carries the scene; later ones only when it changed (light and ground stay).
+    assert!(!sim.scene_if_changed().unwrap().is_null());
+    sim.advance(3);
+    assert!(sim.scene_if_changed().unwrap().is_null());
     assert!(sim.field("difference").is_some());
     let out = model_query(
         "cubes3d",

@@ -32,8 +32,6 @@ let lastTick = 0;
 let msPerStep = 1;
 let rateWindow: { t: number; steps: number }[] = [];
 let tickScheduled = false;
-/** The scene last sent, as JSON, so frames carry it only when it changed. */
-let lastScene = '';
 /** The run's end was judged by its exercise's goal (once per end reached). */
 let goalJudged = false;
 /** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
@@ -82,10 +80,7 @@ function sendFrame(force = false) {
     const withHash = !playing || now - lastHashAt >= HASH_EVERY_MS;
     if (withHash) lastHashAt = now;
     const data = overlay ? s.field(overlay) : undefined;
-    const scene = s.scene() as SceneInfo;
-    const sceneJson = JSON.stringify(scene);
-    const sceneChanged = sceneJson !== lastScene;
-    lastScene = sceneJson;
+    const scene = s.scene_if_changed() as SceneInfo | null;
     return {
       steps: s.steps(),
       furthest: s.furthest(),
@@ -100,7 +95,7 @@ function sendFrame(force = false) {
       events: s.events(),
       bonds: hasBonds ? s.bonds() : null,
       stepsPerSecond: playing ? measuredRate() : 0,
-      scene: sceneChanged ? scene : null,
+      scene,
       chart: chartMetric ? chartBand(s, chartMetric) : null,
     };
   });
@@ -206,7 +201,6 @@ function handle(msg: ToWorker) {
       post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
       post({ type: 'playing', playing: false });
       awaitingAck = false;
-      lastScene = '';
       sendFrame(true);
       return;
     }

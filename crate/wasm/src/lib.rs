@@ -6,6 +6,7 @@ use std::sync::Mutex;
 
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
+use kumiki_core::models::Scene;
 use kumiki_core::scenario::Disturbance;
 use kumiki_core::series::{self, Series};
 use kumiki_core::timeline::Timeline;
@@ -349,6 +350,8 @@ pub struct Sim {
     /// Every step's metrics, for the live chart.
     series: Series,
     keyframe_cost: KeyframeCost,
+    /// The scene [`Sim::scene_if_changed`] last gave, so a frame carries it only when it changed.
+    last_scene: Option<Scene>,
 }
 
 #[wasm_bindgen]
@@ -376,6 +379,7 @@ impl Sim {
                 total: 0.0,
                 copying: 0.0,
             },
+            last_scene: None,
         })
     }
 
@@ -545,6 +549,19 @@ impl Sim {
     /// the ghost follows the current target.
     pub fn scene(&self) -> Result<JsValue, JsError> {
         to_js(&self.run.model().scene())
+    }
+
+    /// [`Sim::scene`] when it differs from what this call last returned (always on the first
+    /// call), else null: the worker's frames carry the scene only when it changed, without
+    /// serialising it every frame to find out.
+    pub fn scene_if_changed(&mut self) -> Result<JsValue, JsError> {
+        let scene = self.run.model().scene();
+        if self.last_scene.as_ref() == Some(&scene) {
+            return Ok(JsValue::NULL);
+        }
+        let value = to_js(&scene)?;
+        self.last_scene = Some(scene);
+        Ok(value)
     }
 
     /// The scenario as it now stands, with clicked disturbances recorded.
