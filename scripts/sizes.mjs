@@ -2,8 +2,8 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
+import { WASM_BUDGET_KB, budgetVerdict } from './budget.mjs';
 
-const BUDGET_KB = 300;
 const dir = new URL('../dist/assets/', import.meta.url).pathname;
 let wasmKb = 0;
 let jsKb = 0;
@@ -17,5 +17,5 @@ for (const f of readdirSync(dir).sort()) {
   lines.push(`  ${f.padEnd(40)} ${(raw.length / 1024).toFixed(1).padStart(8)} KB  ${kb.toFixed(1).padStart(7)} KB gzipped`);
 }
 console.log(`dist/assets:\n${lines.join('\n')}`);
-console.log(`wasm ${wasmKb.toFixed(1)} KB gzipped (budget ${BUDGET_KB} KB), JavaScript ${jsKb.toFixed(1)} KB gzipped`);
+console.log(`wasm ${wasmKb.toFixed(1)} KB gzipped (budget ${WASM_BUDGET_KB} KB: ${budgetVerdict(wasmKb)}), JavaScript ${jsKb.toFixed(1)} KB gzipped`);
 if (process.argv.includes('--json')) console.log(JSON.stringify({ wasm_gzip_kb: wasmKb, js_gzip_kb: jsKb }));
