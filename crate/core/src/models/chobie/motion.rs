@@ -135,7 +135,7 @@ impl Body {
 
     /// Every robot reachable from robot 0 over faces, as a mask; with `moved`, the positions
     /// after a move (robot → new cell) are used.
-    fn connected_with(&self, pos: &[(i32, i32)], occ: &dyn Fn(i32, i32) -> u32) -> bool {
+    fn connected_with(&self, pos: &[(i32, i32)], occ: impl Fn(i32, i32) -> u32) -> bool {
         if pos.is_empty() {
             return true;
         }
@@ -159,7 +159,7 @@ impl Body {
 
     /// One piece, resting on the terrain.
     pub fn sound(&self) -> bool {
-        self.connected_with(&self.pos, &|x, y| self.robot_at(x, y))
+        self.connected_with(&self.pos, |x, y| self.robot_at(x, y))
             && (0..self.len() as u32).any(|r| self.grounded(r))
     }
 
@@ -263,7 +263,7 @@ impl Body {
         }
         let pos: Vec<(i32, i32)> = (0..self.len() as u32).map(new_pos).collect();
         let grounded = pos.iter().any(|&(x, y)| self.ground_at(x, y + 1));
-        if !grounded || !self.connected_with(&pos, &at) {
+        if !grounded || !self.connected_with(&pos, at) {
             return Err(Refusal::Disconnected);
         }
         Ok(moving)
