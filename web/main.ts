@@ -2,6 +2,7 @@
 import { modelEditors, type MountedEditor } from './models/index';
 import { renderReproduction } from './ui/reproduction';
 import type { Hit } from './render/camera';
+import { cellCoords, sameLattice } from './render/geometry';
 import { View } from './render/view';
 import { SimClient } from './sim/client';
 import { History, loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
@@ -108,7 +109,7 @@ const sim = new SimClient({
     if (!keepBanner) dismiss();
     keepBanner = false;
     loadedOpening = opening !== null;
-    const shapeChanged = !layout || layout.lattice !== newLayout.lattice || layout.dims.join() !== newLayout.dims.join();
+    const shapeChanged = !sameLattice(layout, newLayout);
     layout = newLayout;
     scenario = json;
     view.setLayout(newLayout);
@@ -441,7 +442,7 @@ showBonds.addEventListener('change', () => {
 
 function renderRunPanel() {
   if (!layout) return;
-  byId('view3d-options').hidden = layout.lattice !== 'cubic';
+  byId('view3d-options').hidden = !view.is3d;
   clear(overlay);
   overlay.append(el('option', { value: '', text: 'none' }));
   for (const f of layout.fields) overlay.append(el('option', { value: f.name, text: f.label }));
@@ -511,7 +512,7 @@ function renderDisturbanceNote() {
 async function clickCell(cell: number, hit: Hit | null) {
   if (!layout) return;
   if (cell < 0) {
-    if (layout.lattice === 'cubic' && tool === 'inspect') {
+    if (view.is3d && tool === 'inspect') {
       clearSelection();
       showReach();
     }
@@ -536,12 +537,7 @@ function cellName(cell: number): string {
   return layout.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
 }
 function coords(cell: number): string {
-  if (!layout) return '';
-  const [w, h] = layout.dims;
-  const x = cell % w;
-  const y = Math.floor(cell / w) % h;
-  const z = Math.floor(cell / (w * h));
-  return layout.lattice === 'cubic' ? `(${x}, ${y}, ${z})` : `(${x}, ${y})`;
+  return layout ? cellCoords(layout, cell) : '';
 }
 function showHover(cell: number) {
   if (cell < 0) {
@@ -550,7 +546,7 @@ function showHover(cell: number) {
     inspector.hidden = false;
     inspector.replaceChildren(el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) })));
   }
-  if (layout?.lattice === 'cubic') hoverProbe.request(cell);
+  if (view.is3d) hoverProbe.request(cell);
 }
 
 // In 3-D the unit under the pointer (else the selected one) shows where it could move: the worker
@@ -591,7 +587,7 @@ function showHoverFacts(cell: number, facts: Facts) {
   inspector.replaceChildren(dl);
 }
 function refreshProbes() {
-  if (layout?.lattice !== 'cubic') return;
+  if (!view.is3d) return;
   if (view.marks.hover >= 0) hoverProbe.request(view.marks.hover);
   if ((view.marks.selected ?? -1) >= 0) selectProbe.request(view.marks.selected ?? -1);
 }
@@ -611,7 +607,7 @@ function showInspector(cell: number, facts: Record<string, unknown>) {
   inspector.hidden = false;
   inspector.replaceChildren(dl);
   const reach = reachOf(facts);
-  if (layout?.lattice === 'cubic') {
+  if (view.is3d) {
     view.marks.selected = facts.unit === true ? cell : -1;
     selectReach = reach;
     showReach();
