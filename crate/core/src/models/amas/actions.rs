@@ -30,10 +30,19 @@ pub struct Checked {
     cells: Vec<u32>,
 }
 
+/// An action as written: its kind, and which cells (a count drawn at random, or a list).
+#[derive(Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+enum Raw {
+    Remove(Which),
+    Break(Which),
+    Dismantle(Which),
+    Extend(Which),
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Raw {
-    kind: String,
+struct Which {
     #[serde(default)]
     count: Option<u32>,
     #[serde(default)]
@@ -145,20 +154,13 @@ impl Amas {
 /// `cells_in_lattice` cells. Whether the cells suit the action depends on the state when it is
 /// applied (see [`Amas::check`]).
 pub(super) fn parse(action: &Action, cells_in_lattice: usize) -> Result<Checked> {
-    let raw: Raw = crate::error::from_value(Value::Object(action.clone()))?;
-    let kind = match raw.kind.as_str() {
-        "remove" => Kind::Remove,
-        "break" => Kind::Break,
-        "dismantle" => Kind::Dismantle,
-        "extend" => Kind::Extend,
-        other => {
-            return Err(Error::field(
-                "kind",
-                format!("unknown disturbance '{other}'; known: remove, break, dismantle, extend"),
-            ))
-        }
+    let (kind, which) = match crate::error::from_value(Value::Object(action.clone()))? {
+        Raw::Remove(w) => (Kind::Remove, w),
+        Raw::Break(w) => (Kind::Break, w),
+        Raw::Dismantle(w) => (Kind::Dismantle, w),
+        Raw::Extend(w) => (Kind::Extend, w),
     };
-    match (raw.count, raw.cells) {
+    match (which.count, which.cells) {
         (Some(count), None) => Ok(Checked {
             kind,
             count: Some(count),

@@ -25,27 +25,23 @@ pub(super) enum Fault {
 /// numbered in reading order of the start shape); `{"kind": "fault", "cells": [i]}` of the unit
 /// on lattice cell i (the click tool).
 #[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct FaultAction {
-    pub(super) kind: String,
-    #[serde(default)]
-    pub(super) cells: Option<Vec<u64>>,
-    #[serde(default)]
-    pub(super) unit: Option<u64>,
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+pub(super) enum FaultAction {
+    Fault {
+        #[serde(default)]
+        cells: Option<Vec<u64>>,
+        #[serde(default)]
+        unit: Option<u64>,
+    },
 }
 
 /// Reads a fault action. Only what holds at any step is checked here (the kind, cells inside
 /// the lattice, an existing unit number), since a scheduled fault is checked against the
 /// starting state; whether a working unit is there is checked when it is applied.
 pub(super) fn parse_fault(action: &Action, cells_in_lattice: usize, units: usize) -> Result<Fault> {
-    let a: FaultAction = crate::error::from_value(Value::Object(action.clone()))?;
-    if a.kind != "fault" {
-        return Err(Error::field(
-            "kind",
-            format!("unknown disturbance '{}'; known: fault", a.kind),
-        ));
-    }
-    match (a.cells, a.unit) {
+    let FaultAction::Fault { cells, unit } =
+        crate::error::from_value(Value::Object(action.clone()))?;
+    match (cells, unit) {
         (Some(cells), None) => {
             if cells.is_empty() {
                 return Err(Error::field("cells", "name at least one cell"));
