@@ -8,6 +8,7 @@
 //! Each takes `"count": N` (N cells drawn at random among those that qualify; fewer if fewer
 //! qualify) or `"cells": [i, ...]` (those cells, each of which must qualify).
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -31,18 +32,26 @@ pub struct Checked {
 }
 
 /// An action as written: its kind, and which cells (a count drawn at random, or a list).
-#[derive(Deserialize)]
+#[derive(Deserialize, JsonSchema)]
 #[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
-enum Raw {
+#[schemars(rename = "AmasDisturbance")]
+pub(super) enum Raw {
+    /// Built modules disappear (section 5.4); their neighbours become growth front.
     Remove(Which),
+    /// Communication breakdown (5.5): the module no longer updates the field or talks to robots.
     Break(Which),
+    /// The module leaves the target and is to be removed (6.2).
     Dismantle(Which),
+    /// An empty cell next to the structure or the target joins the target.
     Extend(Which),
 }
 
-#[derive(Deserialize)]
+/// Which cells an action takes: `count` of those that qualify, drawn at random, or the `cells`
+/// listed (each must qualify).
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-struct Which {
+#[schemars(rename = "AmasCells")]
+pub(super) struct Which {
     #[serde(default)]
     count: Option<u32>,
     #[serde(default)]

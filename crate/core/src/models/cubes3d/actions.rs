@@ -1,5 +1,6 @@
 //! Disturbances and clicks: removing, adding and holding units, and switching the target.
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -10,22 +11,27 @@ use crate::models::Action;
 /// A disturbance or click: `{"kind": "remove" | "add" | "hold", "cells": [i]}` removes a unit
 /// (if the rest stays connected), adds one next to the structure, or toggles whether a unit is
 /// held in place; `{"kind": "switch"}` moves to the next target now.
-#[derive(Deserialize)]
+#[derive(Deserialize, JsonSchema)]
 #[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
-enum ActionSpec {
+#[schemars(rename = "Cubes3dDisturbance")]
+pub(super) enum ActionSpec {
+    /// Removes the unit in the one cell listed, if the rest stays connected.
     Remove {
         #[serde(default)]
         cells: Vec<u32>,
     },
+    /// Adds a unit in the one empty cell listed, next to the structure.
     Add {
         #[serde(default)]
         cells: Vec<u32>,
     },
+    /// Toggles whether the unit in the one cell listed is held in place.
     Hold {
         #[serde(default)]
         cells: Vec<u32>,
     },
-    /// A click of the switch tool names the clicked cell too; it is not used.
+    /// Moves to the next target now. A click of the switch tool names the clicked cell too; it
+    /// is not used.
     Switch {
         #[serde(default)]
         cells: Vec<u32>,

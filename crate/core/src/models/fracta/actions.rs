@@ -1,6 +1,7 @@
 //! Faults as actions (section 4): reading and checking them.
 
 use super::*;
+use schemars::JsonSchema;
 
 impl Fracta {
     /// The working unit on a cell named by an action.
@@ -24,9 +25,12 @@ pub(super) enum Fault {
 /// A fault (section 4): `{"kind": "fault", "unit": 3}` cuts the power of unit 3 (units are
 /// numbered in reading order of the start shape); `{"kind": "fault", "cells": [i]}` of the unit
 /// on lattice cell i (the click tool).
-#[derive(Deserialize)]
+#[derive(Deserialize, JsonSchema)]
 #[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(rename = "FractaDisturbance")]
 pub(super) enum FaultAction {
+    /// Cuts the power of a unit, named by `unit` (its number in reading order of the start
+    /// shape) or by the lattice cell it is on (`cells`).
     Fault {
         #[serde(default)]
         cells: Option<Vec<u64>>,

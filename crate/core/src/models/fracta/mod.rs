@@ -58,6 +58,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: |body| models::parse(body, ModelSpec::Fracta),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
+    #[cfg(feature = "schema")]
+    disturbance: crate::schema::of::<actions::FaultAction>,
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see
