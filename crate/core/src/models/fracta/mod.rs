@@ -33,10 +33,12 @@ use crate::shape;
 
 mod actions;
 mod commit;
+mod derive;
 mod diffuse;
 mod faults;
 pub mod goal;
 mod init;
+mod links;
 pub mod paper;
 mod plan;
 pub mod queries;

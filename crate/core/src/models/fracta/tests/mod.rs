@@ -1,6 +1,7 @@
 use std::collections::BTreeSet;
 
-use super::goal::{derive, realisable, Statement};
+use super::derive::{derive, realisable};
+use super::goal::Statement;
 use super::types::{canonical, images, reflect, rotate, CLASSES};
 use super::*;
 use crate::lattice::Coord;
