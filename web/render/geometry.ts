@@ -18,6 +18,21 @@ export function cellCentre(lattice: Layout['lattice'], x: number, y: number): [n
   return [x + 0.5, y + 0.5];
 }
 
+/** The lattice has depth: a 3-D view, where a selected unit stays selected and shows its reach. */
+export const is3d = (layout: Layout): boolean => layout.lattice === 'cubic';
+
+/** Both layouts are the same lattice of the same size (the camera and the cursor can stay). */
+export const sameLattice = (a: Layout | null, b: Layout): boolean => !!a && a.lattice === b.lattice && a.dims.join() === b.dims.join();
+
+/** A cell's coordinates as the page writes them: (x, y), and (x, y, z) in 3-D. */
+export function cellCoords(layout: Layout, cell: number): string {
+  const [w, h] = layout.dims;
+  const x = cell % w;
+  const y = Math.floor(cell / w) % h;
+  const z = Math.floor(cell / (w * h));
+  return is3d(layout) ? `(${x}, ${y}, ${z})` : `(${x}, ${y})`;
+}
+
 export function worldBounds(layout: Layout): Bounds {
   const [w, h] = layout.dims;
   if (layout.lattice === 'hex') return { x0: 0, y0: 0, x1: w + 0.5, y1: (h - 1) * HEX_ROW + 2 * HEX_RADIUS };

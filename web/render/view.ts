@@ -5,7 +5,7 @@ import type { Frame, Layout, SceneInfo } from '../types';
 import { annotate, type Marks } from './annotate';
 import { Camera2D, Camera3D, type Camera, type Hit, cameraGestures, fitCamera, occupiedBox } from './camera';
 import { lampPlacement } from './cubic-scene';
-import { type Bounds, HEX_RADIUS, cellCentre } from './geometry';
+import { type Bounds, HEX_RADIUS, cellCentre, is3d, sameLattice } from './geometry';
 import { bindGestures } from './gestures';
 import { range } from './palette';
 import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
@@ -49,6 +49,11 @@ export class View {
     this.bind(canvas);
   }
 
+  /** The lattice in view has depth (see geometry's is3d); false before the first layout. */
+  get is3d(): boolean {
+    return !!this.layout && is3d(this.layout);
+  }
+
   get rendererKind(): RendererKind | null {
     return this.renderer?.kind ?? null;
   }
@@ -69,12 +74,12 @@ export class View {
   }
 
   setLayout(layout: Layout) {
-    const sameShape = this.layout && this.layout.lattice === layout.lattice && this.layout.dims.join() === layout.dims.join();
+    const sameShape = sameLattice(this.layout, layout);
     this.layout = layout;
     this.frame = null;
     this.world = null;
     if (!sameShape) {
-      this.camera = layout.lattice === 'cubic' ? new Camera3D() : new Camera2D();
+      this.camera = is3d(layout) ? new Camera3D() : new Camera2D();
       this.sizeCamera();
       fitCamera(this.camera, layout);
       this.fitPending = true;

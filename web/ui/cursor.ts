@@ -3,6 +3,7 @@
 // Space applies the selected tool there, through the same path as a pointer click, and Escape
 // (or C again) hides it. While the cursor is hidden the arrows keep their meaning (step, step
 // back), and Shift/Alt+arrows still turn and pan the view.
+import { is3d } from '../render/geometry';
 import type { Layout } from '../types';
 
 export interface CursorHooks {
@@ -73,7 +74,7 @@ export class KeyCursor {
       return true;
     }
     const move = MOVES[key];
-    if (!move || (move[2] !== 0 && layout.lattice !== 'cubic')) return false;
+    if (!move || (move[2] !== 0 && !is3d(layout))) return false;
     const [w, h, d] = layout.dims;
     const x = (this.cell % w) + move[0];
     const y = (Math.floor(this.cell / w) % h) + move[1];

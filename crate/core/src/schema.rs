@@ -28,18 +28,28 @@ pub const EXPERIMENT_FILE: &str = "experiment.schema.json";
 pub fn scenario() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     let exercise = generator.subschema_for::<Exercise>().to_value();
-    let specs: Vec<Value> = MODELS
+    let specs: Vec<(Value, Value)> = MODELS
         .iter()
-        .map(|m| (m.schema)(&mut generator).to_value())
+        .map(|m| {
+            let spec = (m.schema)(&mut generator).to_value();
+            (spec, (m.disturbance)(&mut generator).to_value())
+        })
         .collect();
     let mut defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
     let mut one_of = Vec::new();
-    for (entry, spec) in MODELS.iter().zip(specs) {
+    for (entry, (spec, disturbance)) in MODELS.iter().zip(specs) {
+        scheduled(&mut defs, &def_name(&disturbance));
         let name = def_name(&spec);
         let Some(Value::Object(mut body)) = defs.remove(&name) else {
             unreachable!("a model's description is an object schema named {name}")
         };
-        let mut properties = envelope(entry.name, entry.title, entry.default_max_steps, &exercise);
+        let mut properties = envelope(
+            entry.name,
+            entry.title,
+            entry.default_max_steps,
+            &exercise,
+            &disturbance,
+        );
         if let Some(Value::Object(own)) = body.remove("properties") {
             properties.extend(own);
         }
@@ -77,6 +87,7 @@ fn envelope(
     title: &str,
     default_max_steps: u64,
     exercise: &Value,
+    disturbance: &Value,
 ) -> Map<String, Value> {
     let properties = json!({
         "version": {
@@ -103,14 +114,7 @@ fn envelope(
         "disturbances": {
             "description": "Actions applied during the run (recorded clicks included): `at` is the step after which it applies; the other keys are the model's action, given in its documentation.",
             "type": "array",
-            "items": {
-                "type": "object",
-                "properties": {
-                    "at": { "type": "integer", "minimum": 0, "maximum": MAX_STEPS },
-                    "kind": { "type": "string" },
-                },
-                "required": ["at", "kind"],
-            },
+            "items": disturbance,
         },
         "exercise": exercise,
     });
@@ -181,6 +185,35 @@ pub fn experiment() -> Value {
         "required": ["version", "name", "scenarios"],
         "additionalProperties": false,
     })
+}
+
+/// Makes the definition `name` of a model's action (a tagged enum: `oneOf` one object per kind)
+/// that of a scheduled action: each kind gains `at`, the step after which it applies. Its other
+/// keys lose their defaults: an action is kept as written, never filled in.
+fn scheduled(defs: &mut Map<String, Value>, name: &str) {
+    let Some(Value::Array(kinds)) = defs.get_mut(name).and_then(|d| d.get_mut("oneOf")) else {
+        unreachable!("a model's action {name} is an enum tagged by kind")
+    };
+    for kind in kinds {
+        let Some(Value::Object(properties)) = kind.get_mut("properties") else {
+            unreachable!("each kind of {name} is an object")
+        };
+        for property in properties.values_mut() {
+            if let Value::Object(p) = property {
+                p.remove("default");
+            }
+        }
+        properties.insert(
+            "at".into(),
+            json!({
+                "description": "The step after which it applies.",
+                "type": "integer", "minimum": 0, "maximum": MAX_STEPS,
+            }),
+        );
+        if let Some(Value::Array(required)) = kind.get_mut("required") {
+            required.insert(0, json!("at"));
+        }
+    }
 }
 
 /// The name of the definition a `{"$ref": "#/$defs/NAME"}` schema points to.
@@ -372,6 +405,54 @@ mod tests {
                 assert!(doc.get(key).is_some(), "{name}: lacks the required {key}");
             }
             assert_eq!(properties["model"]["const"], model);
+        }
+    }
+
+    /// Every scheduled disturbance of a preset or lesson is one of its model's kinds, with only
+    /// that kind's keys, and the schema names the same kinds the model reads.
+    #[test]
+    fn disturbances_keep_to_their_models_kinds() {
+        let schema = scenario();
+        let mut seen = 0;
+        let docs = presets::names()
+            .map(|n| presets::scenario(n).unwrap())
+            .chain(crate::lessons::names().map(|n| crate::lessons::scenario(n).unwrap()));
+        for s in docs {
+            let doc = s.to_value();
+            let model = doc["model"].as_str().unwrap();
+            let def = &schema["$defs"][format!("{}Disturbance", capitalised(model))];
+            for d in doc["disturbances"].as_array().into_iter().flatten() {
+                let kind = def["oneOf"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .find(|k| k["properties"]["kind"]["const"] == d["kind"])
+                    .unwrap_or_else(|| panic!("{model}: kind {} is not in the schema", d["kind"]));
+                for key in d.as_object().unwrap().keys() {
+                    assert!(kind["properties"].get(key).is_some(), "{model}: {key}");
+                }
+                assert!(kind["additionalProperties"] == false);
+                seen += 1;
+            }
+        }
+        assert!(seen > 0, "no preset or lesson schedules a disturbance");
+        // A kind the schema offers is one the model reads: each kind's minimal action is refused,
+        // if at all, for what it lacks or for the state, never as an unknown kind.
+        for entry in MODELS {
+            let def = &schema["$defs"][format!("{}Disturbance", capitalised(entry.name))];
+            for kind in def["oneOf"].as_array().unwrap() {
+                let name = kind["properties"]["kind"]["const"].as_str().unwrap();
+                let preset = presets::names()
+                    .map(|n| presets::scenario(n).unwrap())
+                    .find(|s| s.to_value()["model"] == entry.name)
+                    .unwrap();
+                let mut doc = preset.to_value();
+                doc["disturbances"] = json!([{ "at": 1, "kind": name }]);
+                if let Err(e) = crate::scenario::Scenario::from_value(doc) {
+                    let e = e.to_string();
+                    assert!(!e.contains("not a choice"), "{}: {name}: {e}", entry.name);
+                }
+            }
         }
     }
 

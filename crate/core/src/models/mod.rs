@@ -187,6 +187,9 @@ pub struct ModelEntry {
     /// The JSON Schema of those keys (see `crate::schema`).
     #[cfg(feature = "schema")]
     pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    /// The JSON Schema of one of its actions (a disturbance without its `at`).
+    #[cfg(feature = "schema")]
+    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
 }
 
 /// Every model, in gallery order.

@@ -8,6 +8,7 @@
 //! Each takes `"count": N` (N cells drawn at random among those that qualify; fewer if fewer
 //! qualify) or `"cells": [i, ...]` (those cells, each of which must qualify).
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -30,10 +31,27 @@ pub struct Checked {
     cells: Vec<u32>,
 }
 
-#[derive(Deserialize)]
+/// An action as written: its kind, and which cells (a count drawn at random, or a list).
+#[derive(Deserialize, JsonSchema)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(rename = "AmasDisturbance")]
+pub(super) enum Raw {
+    /// Built modules disappear (section 5.4); their neighbours become growth front.
+    Remove(Which),
+    /// Communication breakdown (5.5): the module no longer updates the field or talks to robots.
+    Break(Which),
+    /// The module leaves the target and is to be removed (6.2).
+    Dismantle(Which),
+    /// An empty cell next to the structure or the target joins the target.
+    Extend(Which),
+}
+
+/// Which cells an action takes: `count` of those that qualify, drawn at random, or the `cells`
+/// listed (each must qualify).
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-struct Raw {
-    kind: String,
+#[schemars(rename = "AmasCells")]
+pub(super) struct Which {
     #[serde(default)]
     count: Option<u32>,
     #[serde(default)]
@@ -145,20 +163,13 @@ impl Amas {
 /// `cells_in_lattice` cells. Whether the cells suit the action depends on the state when it is
 /// applied (see [`Amas::check`]).
 pub(super) fn parse(action: &Action, cells_in_lattice: usize) -> Result<Checked> {
-    let raw: Raw = crate::error::from_value(Value::Object(action.clone()))?;
-    let kind = match raw.kind.as_str() {
-        "remove" => Kind::Remove,
-        "break" => Kind::Break,
-        "dismantle" => Kind::Dismantle,
-        "extend" => Kind::Extend,
-        other => {
-            return Err(Error::field(
-                "kind",
-                format!("unknown disturbance '{other}'; known: remove, break, dismantle, extend"),
-            ))
-        }
+    let (kind, which) = match crate::error::from_value(Value::Object(action.clone()))? {
+        Raw::Remove(w) => (Kind::Remove, w),
+        Raw::Break(w) => (Kind::Break, w),
+        Raw::Dismantle(w) => (Kind::Dismantle, w),
+        Raw::Extend(w) => (Kind::Extend, w),
     };
-    match (raw.count, raw.cells) {
+    match (which.count, which.cells) {
         (Some(count), None) => Ok(Checked {
             kind,
             count: Some(count),

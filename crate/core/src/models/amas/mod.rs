@@ -36,6 +36,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: |body| models::parse(body, ModelSpec::Amas),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
+    #[cfg(feature = "schema")]
+    disturbance: crate::schema::of::<actions::Raw>,
 };
 
 const NONE: u32 = u32::MAX;

@@ -8,6 +8,7 @@
 //!
 //! A load stays with its robot as the robot moves.
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 
 use super::motion::NONE;
@@ -18,11 +19,16 @@ use crate::models::Action;
 /// The largest load, newtons.
 pub const MAX_FORCE: f64 = 1e6;
 
-#[derive(Deserialize)]
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields, tag = "kind", rename_all = "lowercase")]
-enum LoadAction {
+#[schemars(rename = "ChobieDisturbance")]
+pub(super) enum LoadAction {
+    /// Puts a downward load of `force` newtons on the robot at each cell (0 takes it off).
     Load { cells: Vec<u64>, force: f64 },
+    /// Takes the loads off the robots at those cells.
     Unload { cells: Vec<u64> },
+    /// Moves a load in two clicks: the first on a loaded robot lifts its load, the next on any
+    /// robot puts it down there.
     Move { cells: Vec<u64> },
 }
 

@@ -41,6 +41,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: |body| models::parse(body, ModelSpec::Chobie),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<spec::Spec>,
+    #[cfg(feature = "schema")]
+    disturbance: crate::schema::of::<actions::LoadAction>,
 };
 
 /// The checked parameters a run uses.

@@ -1,5 +1,6 @@
 //! Disturbances and clicks: removing, adding and holding units, and switching the target.
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -10,31 +11,57 @@ use crate::models::Action;
 /// A disturbance or click: `{"kind": "remove" | "add" | "hold", "cells": [i]}` removes a unit
 /// (if the rest stays connected), adds one next to the structure, or toggles whether a unit is
 /// held in place; `{"kind": "switch"}` moves to the next target now.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ActionSpec {
-    kind: String,
-    #[serde(default)]
+#[derive(Deserialize, JsonSchema)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(rename = "Cubes3dDisturbance")]
+pub(super) enum ActionSpec {
+    /// Removes the unit in the one cell listed, if the rest stays connected.
+    Remove {
+        #[serde(default)]
+        cells: Vec<u32>,
+    },
+    /// Adds a unit in the one empty cell listed, next to the structure.
+    Add {
+        #[serde(default)]
+        cells: Vec<u32>,
+    },
+    /// Toggles whether the unit in the one cell listed is held in place.
+    Hold {
+        #[serde(default)]
+        cells: Vec<u32>,
+    },
+    /// Moves to the next target now. A click of the switch tool names the clicked cell too; it
+    /// is not used.
+    Switch {
+        #[serde(default)]
+        cells: Vec<u32>,
+    },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Op {
+    Remove,
+    Add,
+    Hold,
+    Switch,
+}
+
+struct Parsed {
+    op: Op,
     cells: Vec<u32>,
 }
 
-fn parse_action(action: &Action) -> Result<ActionSpec> {
-    let a: ActionSpec = crate::error::from_value(Value::Object(action.clone()))?;
-    match a.kind.as_str() {
-        "remove" | "add" | "hold" => {
-            if a.cells.len() != 1 {
-                return Err(Error::field("cells", "give exactly one cell, like [42]"));
-            }
-        }
-        "switch" => {}
-        other => {
-            return Err(Error::field(
-                "kind",
-                format!("unknown action '{other}'; known: remove, add, hold, switch"),
-            ))
-        }
+fn parse_action(action: &Action) -> Result<Parsed> {
+    let (op, cells) = match crate::error::from_value(Value::Object(action.clone()))? {
+        ActionSpec::Remove { cells } => (Op::Remove, cells),
+        ActionSpec::Add { cells } => (Op::Add, cells),
+        ActionSpec::Hold { cells } => (Op::Hold, cells),
+        ActionSpec::Switch { cells } => (Op::Switch, cells),
+    };
+    if op != Op::Switch && cells.len() != 1 {
+        return Err(Error::field("cells", "give exactly one cell, like [42]"));
     }
-    Ok(a)
+    Ok(Parsed { op, cells })
 }
 
 /// The form of an action in a space of `cells` cells with `targets` targets, whatever the state.
@@ -46,7 +73,7 @@ pub(super) fn check_form(action: &Action, cells: usize, targets: usize) -> Resul
             format!("cell {c} is outside the lattice"),
         ));
     }
-    if a.kind == "switch" && targets < 2 {
+    if a.op == Op::Switch && targets < 2 {
         return Err(Error::field("kind", "switch needs two or more targets"));
     }
     Ok(())
@@ -60,29 +87,27 @@ impl Cubes {
     pub(super) fn perform(&mut self, action: &Action) -> Result<()> {
         self.check(action)?;
         let a = parse_action(action)?;
-        match a.kind.as_str() {
-            "switch" => {
+        let c = a.cells.first().map(|&c| c as usize);
+        match (a.op, c) {
+            (Op::Switch, _) => {
                 let next = (self.main_target() + 1) % self.targets.len();
                 for k in 0..self.units.len() {
                     self.switch_unit(self.units[k] as usize, next);
                 }
                 Ok(())
             }
-            kind => {
-                let c = a.cells[0] as usize;
-                match kind {
-                    "remove" => self.remove_unit(c),
-                    "add" => self.add_unit(c),
-                    _ => {
-                        if !self.st.occupied(c) {
-                            return Err(Error::field("cells", format!("cell {c} holds no unit")));
-                        }
-                        self.flags[c] ^= HELD_USER;
-                        self.refresh(c);
-                        Ok(())
-                    }
+            (Op::Remove, Some(c)) => self.remove_unit(c),
+            (Op::Add, Some(c)) => self.add_unit(c),
+            (Op::Hold, Some(c)) => {
+                if !self.st.occupied(c) {
+                    return Err(Error::field("cells", format!("cell {c} holds no unit")));
                 }
+                self.flags[c] ^= HELD_USER;
+                self.refresh(c);
+                Ok(())
             }
+            // parse_action has refused this already: every kind but switch names one cell.
+            (_, None) => Err(Error::field("cells", "give exactly one cell, like [42]")),
         }
     }
 

@@ -57,6 +57,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: |body| models::parse(body, ModelSpec::Cubes3d),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
+    #[cfg(feature = "schema")]
+    disturbance: crate::schema::of::<actions::ActionSpec>,
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

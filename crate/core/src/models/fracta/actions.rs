@@ -1,6 +1,7 @@
 //! Faults as actions (section 4): reading and checking them.
 
 use super::*;
+use schemars::JsonSchema;
 
 impl Fracta {
     /// The working unit on a cell named by an action.
@@ -24,28 +25,27 @@ pub(super) enum Fault {
 /// A fault (section 4): `{"kind": "fault", "unit": 3}` cuts the power of unit 3 (units are
 /// numbered in reading order of the start shape); `{"kind": "fault", "cells": [i]}` of the unit
 /// on lattice cell i (the click tool).
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct FaultAction {
-    pub(super) kind: String,
-    #[serde(default)]
-    pub(super) cells: Option<Vec<u64>>,
-    #[serde(default)]
-    pub(super) unit: Option<u64>,
+#[derive(Deserialize, JsonSchema)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(rename = "FractaDisturbance")]
+pub(super) enum FaultAction {
+    /// Cuts the power of a unit, named by `unit` (its number in reading order of the start
+    /// shape) or by the lattice cell it is on (`cells`).
+    Fault {
+        #[serde(default)]
+        cells: Option<Vec<u64>>,
+        #[serde(default)]
+        unit: Option<u64>,
+    },
 }
 
 /// Reads a fault action. Only what holds at any step is checked here (the kind, cells inside
 /// the lattice, an existing unit number), since a scheduled fault is checked against the
 /// starting state; whether a working unit is there is checked when it is applied.
 pub(super) fn parse_fault(action: &Action, cells_in_lattice: usize, units: usize) -> Result<Fault> {
-    let a: FaultAction = crate::error::from_value(Value::Object(action.clone()))?;
-    if a.kind != "fault" {
-        return Err(Error::field(
-            "kind",
-            format!("unknown disturbance '{}'; known: fault", a.kind),
-        ));
-    }
-    match (a.cells, a.unit) {
+    let FaultAction::Fault { cells, unit } =
+        crate::error::from_value(Value::Object(action.clone()))?;
+    match (cells, unit) {
         (Some(cells), None) => {
             if cells.is_empty() {
                 return Err(Error::field("cells", "name at least one cell"));

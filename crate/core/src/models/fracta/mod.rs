@@ -33,10 +33,12 @@ use crate::shape;
 
 mod actions;
 mod commit;
+mod derive;
 mod diffuse;
 mod faults;
 pub mod goal;
 mod init;
+mod links;
 pub mod paper;
 mod plan;
 pub mod queries;
@@ -58,6 +60,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: |body| models::parse(body, ModelSpec::Fracta),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
+    #[cfg(feature = "schema")]
+    disturbance: crate::schema::of::<actions::FaultAction>,
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see

@@ -24,7 +24,7 @@ pub fn derive(args: &Value) -> Result<Value> {
         })?;
         shapes.push(g);
     }
-    let goal = goal::derive(&shapes).map_err(|e| Error::field("shape", e))?;
+    let goal = derive::derive(&shapes).map_err(|e| Error::field("shape", e))?;
     Ok(json!({ "goal": goal.text() }))
 }
 

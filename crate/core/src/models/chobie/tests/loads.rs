@@ -1,0 +1,128 @@
+//! Loads, the move tool, the slot trace and the switch to adaptation under overload.
+
+use super::*;
+
+#[test]
+fn loads_are_checked_and_stay_with_their_robot() {
+    let mut m = model(
+        "....\n###.\n=...\n",
+        json!({"task": "bridge", "construction": false}),
+    );
+    let load = |cells: serde_json::Value, force: f64| {
+        json!({"kind": "load", "cells": cells, "force": force})
+            .as_object()
+            .unwrap()
+            .clone()
+    };
+    assert!(m
+        .check_action(&load(json!([6]), -1.0))
+        .unwrap_err()
+        .to_string()
+        .starts_with("force:"));
+    // The form is checked whatever the state (a recorded click must read as valid from step
+    // 0); the cell is checked when the action is applied.
+    assert!(m.check_action(&load(json!([0]), 10.0)).is_ok());
+    assert_eq!(
+        m.apply(&load(json!([0]), 10.0)).unwrap_err().to_string(),
+        "cells[0]: cell 0 holds no robot"
+    );
+    let before = m.peak();
+    m.apply(&load(json!([6]), 50.0)).unwrap();
+    assert!(m.peak() > before);
+    m.apply(&load(json!([6]), 0.0)).unwrap();
+    assert!((m.peak() - before).abs() < 1e-9 * before);
+}
+
+#[test]
+fn the_move_tool_lifts_a_load_and_puts_it_down_and_unload_takes_it_off() {
+    let mut m = model(
+        "....\n###.\n=...\n",
+        json!({"task": "bridge", "construction": false}),
+    );
+    let act = |v: serde_json::Value| v.as_object().unwrap().clone();
+    let bare = m.peak();
+    m.apply(&act(json!({"kind": "load", "cells": [5], "force": 40.0})))
+        .unwrap();
+    let near = m.peak();
+    assert_eq!(
+        m.apply(&act(json!({"kind": "move", "cells": [6]})))
+            .unwrap_err()
+            .to_string(),
+        "cells[0]: the robot at cell 6 carries no load to move"
+    );
+    m.apply(&act(json!({"kind": "move", "cells": [5]})))
+        .unwrap();
+    assert_eq!(m.held, 40.0);
+    assert!((m.peak() - bare).abs() < 1e-9 * bare);
+    m.apply(&act(json!({"kind": "move", "cells": [6]})))
+        .unwrap();
+    assert_eq!((m.held, m.loads[1], m.loads[2]), (0.0, 0.0, 40.0));
+    // Further out on the cantilever, the same load stresses the root more.
+    assert!(m.peak() > near);
+    m.apply(&act(json!({"kind": "unload", "cells": [6]})))
+        .unwrap();
+    assert!((m.peak() - bare).abs() < 1e-9 * bare);
+}
+
+#[test]
+fn the_slot_trace_names_every_slot_and_its_senders() {
+    let preset = crate::presets::scenario("chobie-crawl5").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    step_checked(&mut m);
+    let trace = &m.last.trace;
+    assert_eq!(
+        trace.iter().map(|s| s.count).sum::<u64>(),
+        m.last.slots,
+        "one entry per slot"
+    );
+    let meanings: Vec<&str> = trace.iter().map(|s| s.meaning).collect();
+    assert_eq!(meanings[0], election::RULE_1);
+    assert_eq!(meanings[1], election::RULE_2);
+    for word in ["announcement", "route", "drive", "direction", "completion"] {
+        assert!(
+            meanings.iter().any(|m| m.contains(word)),
+            "{word} in {meanings:?}"
+        );
+    }
+    // Rule 1: every robot lights each face it shares; rule 2: only the robots with no
+    // vertical neighbour send, and only left or right.
+    assert_eq!(trace[0].senders.len(), m.body.len());
+    assert!(trace[1]
+        .senders
+        .iter()
+        .all(|&(_, faces)| faces != 0 && faces & (1 << UP | 1 << DOWN) == 0));
+    let messages: u64 = trace
+        .iter()
+        .flat_map(|s| &s.senders)
+        .map(|&(_, f)| f.count_ones() as u64)
+        .sum();
+    assert!(messages <= m.last.messages);
+}
+
+#[test]
+fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_root() {
+    let preset = crate::presets::scenario("chobie-bridge").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    let mut modes = Vec::new();
+    for _ in 0..30 {
+        step_checked(&mut m);
+        modes.push(m.mode);
+    }
+    let first = modes
+        .iter()
+        .position(|&x| x == Mode::Adaptation)
+        .expect("an overload");
+    let back = modes[first..]
+        .iter()
+        .position(|&x| x == Mode::Construction)
+        .expect("back to construction");
+    // Between the two, the reserves moved right (leader 2) and the overload went away.
+    assert!(back > 1);
+    assert!(m.totals.adaptations >= 1);
+    let mut without = Chobie::new(&preset).unwrap();
+    without.p.adaptation = false;
+    for _ in 0..30 {
+        step_checked(&mut without);
+    }
+    assert!(m.worst < without.worst);
+}

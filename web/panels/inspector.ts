@@ -1,0 +1,165 @@
+// The inspector: what a click on the lattice does (inspect a cell or apply the selected tool), the
+// facts of the cell under the pointer or the keyboard cursor, and, in 3-D, where the unit under
+// the pointer (else the selected one) could move.
+import type { Hit } from '../render/camera';
+import { cellCoords } from '../render/geometry';
+import type { Announcer } from '../ui/announce';
+import { KeyCursor } from '../ui/cursor';
+import { byId, el, formatNumber } from '../ui/dom';
+import { type Facts, Probe, reachOf } from '../ui/probe';
+import { STRUCTURE_FACTS } from '../ui/structure';
+import type { Page } from './page';
+import type { RunPanel } from './run';
+
+export interface Inspector {
+  /** A click (or Enter on the keyboard cursor) on `cell`; -1 is a click beside the structure. */
+  click(cell: number, hit: Hit | null): Promise<void>;
+  /** The pointer is over `cell` (-1: over none). */
+  hover(cell: number): void;
+  /** A cell as the page names it in words: "cell (x, y)". */
+  cellText(cell: number): string;
+}
+
+export function setupInspector(page: Page, run: RunPanel, announcer: Announcer): Inspector {
+  const { session, sim, view } = page;
+  const inspector = byId('inspector');
+
+  const coords = (cell: number): string => (session.layout ? cellCoords(session.layout, cell) : '');
+  const cellText = (cell: number) => `cell ${coords(cell)}`;
+  function cellName(cell: number): string {
+    const { layout, frame } = session;
+    if (!layout || !frame) return '';
+    const code = frame.cells[cell];
+    return layout.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
+  }
+  const cellFacts = (cell: number) => el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
+
+  async function click(cell: number, hit: Hit | null) {
+    const layout = session.layout;
+    if (!layout) return;
+    if (cell < 0) {
+      if (view.is3d && run.tool === 'inspect') {
+        clearSelection();
+        showReach();
+      }
+      return;
+    }
+    const t = layout.tools.find((x) => x.name === run.tool);
+    if (t) {
+      // In 3-D an added unit goes on the clicked face, in the empty cell in front of it.
+      const target = t.action.kind === 'add' && hit && hit.front >= 0 ? hit.front : cell;
+      sim.apply({ ...t.action, ...run.toolValues(t.name), cells: [target] });
+      return;
+    }
+    const facts = await sim.inspect(cell);
+    showInspector(cell, facts);
+  }
+
+  function hover(cell: number) {
+    if (cell < 0) {
+      inspector.hidden = true;
+    } else {
+      inspector.hidden = false;
+      inspector.replaceChildren(cellFacts(cell));
+    }
+    if (view.is3d) hoverProbe.request(cell);
+  }
+
+  // In 3-D the unit under the pointer (else the selected one) shows where it could move: the
+  // worker is asked, throttled, and its answer drawn as highlighted cells with the difference at
+  // each.
+  let hoverReach: ReturnType<typeof reachOf> = null;
+  let selectReach: ReturnType<typeof reachOf> = null;
+  const hoverProbe = new Probe(
+    (cell) => sim.inspect(cell),
+    (cell, facts) => {
+      if (cell !== view.marks.hover) return;
+      hoverReach = reachOf(facts);
+      if (facts && cell >= 0) showHoverFacts(cell, facts);
+      showReach();
+    },
+  );
+  const selectProbe = new Probe(
+    (cell) => sim.inspect(cell),
+    (cell, facts) => {
+      if (cell !== view.marks.selected) return;
+      // The selected unit moved away: the selection ends with it.
+      if (facts && facts.unit !== true) view.marks.selected = -1;
+      selectReach = reachOf(facts);
+      showReach();
+    },
+  );
+  function showReach() {
+    const reach = hoverReach ?? selectReach;
+    view.marks.highlight = reach?.cells ?? [];
+    view.marks.highlightValues = reach?.values ?? [];
+    view.request();
+  }
+  function showHoverFacts(cell: number, facts: Facts) {
+    const dl = cellFacts(cell);
+    if (typeof facts.type_list === 'string') dl.append(el('dt', { text: 'type-list' }), el('dd', { text: facts.type_list }));
+    if (typeof facts.difference === 'number') dl.append(el('dt', { text: 'difference' }), el('dd', { text: formatNumber(facts.difference) }));
+    if (Array.isArray(facts.reachable)) dl.append(el('dt', { text: 'reachable' }), el('dd', { text: facts.movable === false ? 'cannot move' : `${facts.reachable.length} position${facts.reachable.length === 1 ? '' : 's'}` }));
+    inspector.hidden = false;
+    inspector.replaceChildren(dl);
+  }
+  function refreshProbes() {
+    if (!view.is3d) return;
+    if (view.marks.hover >= 0) hoverProbe.request(view.marks.hover);
+    if ((view.marks.selected ?? -1) >= 0) selectProbe.request(view.marks.selected ?? -1);
+  }
+  function clearSelection() {
+    view.marks.selected = -1;
+    view.marks.highlight = [];
+    view.marks.highlightValues = [];
+    hoverReach = null;
+    selectReach = null;
+  }
+  function showInspector(cell: number, facts: Record<string, unknown>) {
+    const dl = cellFacts(cell);
+    for (const [k, v] of Object.entries(facts)) {
+      if (STRUCTURE_FACTS.includes(k)) continue;
+      dl.append(el('dt', { text: k.replace(/_/g, ' ') }), el('dd', { text: typeof v === 'object' ? JSON.stringify(v) : formatNumber(v) }));
+    }
+    inspector.hidden = false;
+    inspector.replaceChildren(dl);
+    const reach = reachOf(facts);
+    if (view.is3d) {
+      view.marks.selected = facts.unit === true ? cell : -1;
+      selectReach = reach;
+      showReach();
+      return;
+    }
+    const list = facts.reachable;
+    view.marks.highlight = Array.isArray(list) ? (list.filter((x) => typeof x === 'number') as number[]) : [];
+    view.request();
+  }
+
+  // The keyboard way to click: a cursor cell moved with the arrows.
+  const keyCursor = new KeyCursor(byId('canvas-wrap'), {
+    layout: () => session.layout,
+    cells: () => session.frame?.cells ?? null,
+    show(cell) {
+      view.marks.cursor = cell >= 0 ? { cell, kind: 'cursor' } : null;
+      view.request();
+      byId('view').dataset.cursor = String(cell);
+      if (cell >= 0) hover(cell);
+    },
+    click: (cell) => void click(cell, null),
+    announce(cell) {
+      if (cell < 0) {
+        announcer.say('Cursor hidden; the arrows step the run again.');
+        return;
+      }
+      announcer.say(`Cursor at ${cellText(cell)}, ${cellName(cell)}. Enter: ${run.toolLabel()}.`);
+    },
+  });
+
+  session.on('loaded', ({ shapeChanged }) => {
+    if (shapeChanged) keyCursor.hide();
+    clearSelection();
+  });
+  session.on('frame', refreshProbes);
+
+  return { click, hover, cellText };
+}

@@ -1,0 +1,27 @@
+// What every panel is given: the session, the worker, the view, the banner, the preferences, and
+// the one way to open a scenario. Panels talk to each other through these, not directly.
+import type { View } from '../render/view';
+import type { Session } from '../session';
+import type { SimClient } from '../sim/client';
+import type { Prefs } from '../store';
+import type { Banner } from '../ui/banner';
+
+export interface LoadOptions {
+  /** The scenario replaced can be brought back by undo (default true). */
+  record?: boolean;
+  /** A scenario that cannot run is refused without a message (default false). */
+  quiet?: boolean;
+}
+
+export interface Page {
+  session: Session;
+  sim: SimClient;
+  view: View;
+  banner: Banner;
+  prefs: Prefs;
+  persistPrefs(): void;
+  /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
+  load(json: string, options?: LoadOptions): boolean;
+  /** Changes one top-level key through the core; returns the problem, or null when applied. */
+  applyChange(key: string, valueJson: string, onError?: (problem: string) => void): string | null;
+}

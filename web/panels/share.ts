@@ -1,0 +1,114 @@
+// Sharing: the link button, opening the link in the address bar (with its introduction and the
+// notice when it was made with another version of its model), and the link in a bug report.
+import { byId, displayText } from '../ui/dom';
+import type { LargeOpening } from '../ui/opening';
+import * as core from '../wasm';
+import type { Page } from './page';
+
+export interface SharePanel {
+  /** Opens the scenario of the link in the address bar; false when there is none or it is bad. */
+  openHash(): boolean;
+  /** The scenario in view replaced the link's: the address bar and the notice let it go. */
+  leaveLink(): void;
+  /** A link to the scenario in view, or its JSON when it cannot be encoded. */
+  scenarioLink(): string;
+}
+
+export interface ShareDeps {
+  large: LargeOpening;
+  /** Starts the worker on a scenario text. */
+  open(json: string): void;
+  /** In a course page's iframe the course introduces the scenario itself. */
+  embedded: boolean;
+}
+
+export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps): SharePanel {
+  const { session, banner } = page;
+  const linkNotice = byId('link-notice');
+
+  function replaceHash(hash: string) {
+    const url = `${location.pathname}${location.search}${hash ? `#${hash}` : ''}`;
+    window.history.replaceState(null, '', url);
+  }
+
+  function scenarioLink(): string {
+    try {
+      return `${location.origin}${location.pathname}#${core.encodeLink(session.scenario)}`;
+    } catch {
+      return session.scenario;
+    }
+  }
+
+  /** Whoever opens a shared link sees its name and description first. */
+  function introduce(json: string) {
+    if (embedded) return;
+    const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
+    byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
+    byId('intro-model').textContent = String(doc.model ?? '');
+    byId('intro-description').textContent = displayText(doc.description ?? '', 4000, true) || 'It comes with no description.';
+    const dialog = byId<HTMLDialogElement>('intro');
+    if (!dialog.open) dialog.showModal();
+  }
+
+  byId('copy-link').addEventListener('click', async () => {
+    let payload: string;
+    try {
+      payload = core.encodeLink(session.scenario);
+    } catch (e) {
+      banner.report(`No link can be made: ${core.message(e)}`);
+      return;
+    }
+    const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
+    replaceHash(payload);
+    const button = byId('copy-link');
+    try {
+      await navigator.clipboard.writeText(url);
+      button.textContent = 'Link copied';
+    } catch {
+      button.textContent = 'Link in address bar';
+    }
+    button.dataset.link = url;
+    setTimeout(() => (button.textContent = 'Copy link'), 2000);
+  });
+
+  function openHash(): boolean {
+    const hash = location.hash.slice(1);
+    if (!hash) return false;
+    try {
+      const unpacked = core.unpackLink(hash);
+      const previous = session.scenario;
+      const remember = (json: string) => {
+        session.remember(previous, json);
+        introduce(json);
+      };
+      // A large scenario is validated by the worker as it opens; a small one here, at once.
+      if (!large.begin(unpacked.scenario, remember)) {
+        const json = core.normalize(unpacked.scenario);
+        remember(json);
+        session.scenario = json;
+      }
+      // A link made with another behaviour of its model opens, but its run may not be its maker's.
+      const { made_with, current } = unpacked;
+      linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+      linkNotice.hidden = made_with === current;
+      open(large.active ? unpacked.scenario : session.scenario);
+      banner.dismiss();
+      return true;
+    } catch (e) {
+      banner.report(`This link could not be opened, so your last scenario is shown instead.\n${core.message(e)}`);
+      return false;
+    }
+  }
+  window.addEventListener('hashchange', () => {
+    if (location.hash.length > 1 && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
+  });
+
+  return {
+    openHash,
+    leaveLink() {
+      if (location.hash) replaceHash('');
+      linkNotice.hidden = true;
+    },
+    scenarioLink,
+  };
+}
