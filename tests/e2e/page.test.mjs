@@ -232,28 +232,34 @@ describe('the page', () => {
       s.value = '8';
       s.dispatchEvent(new Event('input'));
     });
+    // The longest gap between 10 ms timers over `ms`: how long the main thread was kept busy.
+    const worstGap = (ms) =>
+      page.evaluate(
+        (span) =>
+          new Promise((resolve) => {
+            let worst = 0;
+            let last = performance.now();
+            const end = last + span;
+            const tick = () => {
+              const now = performance.now();
+              worst = Math.max(worst, now - last);
+              last = now;
+              if (now < end) setTimeout(tick, 10);
+              else resolve(worst);
+            };
+            setTimeout(tick, 10);
+          }),
+        ms,
+      );
+    // Paused, the gaps show what the machine itself adds (other processes on a shared machine).
+    const idle = await worstGap(1000);
     await page.click('#play');
     await waitForSteps(page, 3, 30000);
     // While it plays, the main thread answers timers promptly.
-    const worst = await page.evaluate(
-      () =>
-        new Promise((resolve) => {
-          let worstGap = 0;
-          let last = performance.now();
-          const end = last + 2000;
-          const tick = () => {
-            const now = performance.now();
-            worstGap = Math.max(worstGap, now - last);
-            last = now;
-            if (now < end) setTimeout(tick, 10);
-            else resolve(worstGap);
-          };
-          setTimeout(tick, 10);
-        }),
-    );
+    const worst = await worstGap(2000);
     const later = await stepCount(page);
     assert.ok(later > 3, 'the run kept going');
-    assert.ok(worst < 250, `the main thread stalled for ${worst.toFixed(0)} ms`);
+    assert.ok(worst < 250 + idle, `the main thread stalled for ${worst.toFixed(0)} ms (${idle.toFixed(0)} ms while paused)`);
     await page.click('#play');
     await context.close();
   });
