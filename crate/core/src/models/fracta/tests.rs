@@ -8,19 +8,6 @@ use crate::run::Run;
 use crate::scenario::Scenario;
 use proptest::prelude::*;
 
-impl Fracta {
-    /// The model of a test scenario, built the way a run builds it.
-    fn new(s: &Scenario) -> crate::Result<Fracta> {
-        let crate::models::ModelSpec::Fracta(spec) = &s.spec else {
-            panic!("not a fracta scenario");
-        };
-        Ok(Fracta::from_checked(
-            crate::models::Spec::validate(spec, s.limits)?,
-            s.seed,
-        ))
-    }
-}
-
 const TRIANGLE: &str = ". . # .\n . # # .\n. # # #\n # # # #\n";
 const TRIANGLE_GOAL: &str = "o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n";
 
@@ -468,7 +455,7 @@ fn a_completed_goal_has_zero_difference_and_stays_still() {
         ),
     ] {
         let s = scenario(start, goal, 3, json!({}));
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         assert!(m.completed());
         assert!(m.working.iter().all(|&u| m.diff[u as usize] == 0));
         let cells: Vec<u32> = m.units.iter().map(|u| u.cell).collect();
@@ -487,7 +474,7 @@ fn the_two_line_start_assembles_the_triangle_with_its_spare() {
     for seed in 1..=6 {
         let mut s = presets::scenario("fracta-triangle10").unwrap();
         s.seed = seed;
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         assert!(!m.completed());
         let mut moves = 0;
         while m.steps < 3000 && !m.completed() {
@@ -518,7 +505,7 @@ fn the_two_line_start_assembles_the_triangle_with_its_spare() {
 #[test]
 fn a_fault_is_cut_off_and_the_triangle_repaired() {
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     assert!(m.completed());
     let fault = s.disturbances[0].clone();
     assert_eq!(fault.at, 10);
@@ -559,7 +546,7 @@ fn a_fault_that_splits_the_system_strands_the_smaller_part() {
         1,
         json!({"disturbances": [{"at": 0, "kind": "fault", "unit": 1}]}),
     );
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.step();
     // Unit 1 held unit 0 to the rest: 0 is stranded, 2, 3, 4 and 5 carry on.
@@ -674,7 +661,7 @@ fn queries_derive_and_check_goals() {
 
 #[test]
 fn layout_cells_fields_and_bonds_agree() {
-    let mut m = Fracta::new(&presets::scenario("fracta-triangle10").unwrap()).unwrap();
+    let mut m = Fracta::of_scenario(&presets::scenario("fracta-triangle10").unwrap()).unwrap();
     for _ in 0..20 {
         m.step();
     }
@@ -749,7 +736,7 @@ proptest! {
             "disturbances": [{"at": fault_at, "kind": "fault", "unit": fault_unit % units}]
         }));
         let Ok(s) = s else { return Ok(()); };
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         check_invariants(&m);
         for _ in 0..200 {
             if m.steps == fault_at {
@@ -810,12 +797,12 @@ fn shape_up_to_symmetry(m: &Fracta) -> Vec<(i32, i32)> {
 #[test]
 fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
     // The goal shape: the start of fracta-repair, the triangle with its spare.
-    let goal = Fracta::new(&presets::scenario("fracta-repair").unwrap()).unwrap();
+    let goal = Fracta::of_scenario(&presets::scenario("fracta-repair").unwrap()).unwrap();
     let want = shape_up_to_symmetry(&goal);
     for seed in 1..=300 {
         let mut s = presets::scenario("fracta-triangle10").unwrap();
         s.seed = seed;
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         while m.steps < 3000 && !m.completed() {
             m.step();
         }
@@ -831,7 +818,7 @@ fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
                 .with_override("no_holes", json!(false))
                 .unwrap();
             s.seed = seed;
-            let mut m = Fracta::new(&s).unwrap();
+            let mut m = Fracta::of_scenario(&s).unwrap();
             while m.steps < 3000 && !m.completed() {
                 m.step();
             }
@@ -848,7 +835,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
     let start = ". # . #\n # . # .\n. # # .\n";
     for (no_holes, closes) in [(true, false), (false, true)] {
         let s = scenario(start, TRIANGLE_GOAL, 1, json!({ "no_holes": no_holes }));
-        let m = Fracta::new(&s).unwrap();
+        let m = Fracta::of_scenario(&s).unwrap();
         assert_eq!(surrounded(&m), 0);
         let mut can_close = false;
         for &u in &m.working {
@@ -856,7 +843,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
             for pivot in 0..6 {
                 for turn in Turn::BOTH {
                     if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
-                        let mut after = Fracta::new(&s).unwrap();
+                        let mut after = Fracta::of_scenario(&s).unwrap();
                         after.occ[cell as usize] = NO_UNIT;
                         after.occ[to as usize] = u;
                         can_close |= surrounded(&after) > 0;
@@ -872,7 +859,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
 fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
     let mut s = presets::scenario("fracta-triangle10").unwrap();
     s.seed = 2;
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     assert!(m.p.avoid_e);
     let mut legal = 0;
     for _ in 0..200 {
@@ -897,7 +884,7 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
         .unwrap()
         .with_override("avoid_e", json!(true))
         .unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.p.avoid_e = false;
     let ends_as_e = m.working.iter().all(|&u| {
         let cell = m.units[u as usize].cell;
@@ -914,7 +901,7 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
 #[test]
 fn a_cut_off_restarts_equation_2_from_the_differences() {
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.cut_off_faulty();
     assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
@@ -939,7 +926,7 @@ fn a_cut_off_leaves_the_description_with_one_spare_fewer() {
     // The paper's repair: after the cut-off only the triangle's own statements are left, and
     // the 10 units rebuild exactly the triangle.
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.step();
     assert_eq!(
@@ -951,16 +938,16 @@ fn a_cut_off_leaves_the_description_with_one_spare_fewer() {
         m.step();
     }
     assert!(m.completed());
-    let triangle = Fracta::new(&scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}))).unwrap();
+    let triangle = Fracta::of_scenario(&scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}))).unwrap();
     assert_eq!(shape_up_to_symmetry(&m), shape_up_to_symmetry(&triangle));
 }
 
 #[test]
 fn holes_count_the_cells_a_ring_encloses() {
     let ring = scenario(". # # .\n # . # .\n. # # .\n", TRIANGLE_GOAL, 1, json!({}));
-    assert_eq!(Fracta::new(&ring).unwrap().holes(), 1);
+    assert_eq!(Fracta::of_scenario(&ring).unwrap().holes(), 1);
     let full = scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}));
-    assert_eq!(Fracta::new(&full).unwrap().holes(), 0);
+    assert_eq!(Fracta::of_scenario(&full).unwrap().holes(), 0);
 }
 
 /// The plain definition `holes` must agree with: empty cells that no path of empty cells joins
@@ -990,17 +977,17 @@ fn holes_over_the_whole_lattice(m: &Fracta) -> u64 {
 #[test]
 fn holes_searched_in_the_units_box_equal_holes_over_the_whole_lattice() {
     let edge = scenario(". # #\n # . #\n. # #\n", TRIANGLE_GOAL, 1, json!({}));
-    let m = Fracta::new(&edge).unwrap();
+    let m = Fracta::of_scenario(&edge).unwrap();
     assert_eq!((m.holes(), holes_over_the_whole_lattice(&m)), (1, 1));
     let mut compared = 0;
     let mut with_holes = 0;
     for seed in 1..=40 {
-        let mut s = presets::scenario("fracta-triangle10")
+        let mut s = presets::scenario("fracta-triangle10-3spares")
             .unwrap()
             .with_override("no_holes", json!(false))
             .unwrap();
         s.seed = seed;
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         while m.steps < 600 && !m.completed() {
             m.step();
             let holes = m.holes();
@@ -1020,63 +1007,106 @@ fn holes_searched_in_the_units_box_equal_holes_over_the_whole_lattice() {
     );
 }
 
-/// The fewest motions (one unit's motion each, in turn) that take the 10 units left after a
-/// fault on `unit` of fracta-repair to the triangle, searched breadth first up to `limit`.
-fn fewest_motions(unit: u64, limit: usize) -> Option<usize> {
-    let mut s = presets::scenario("fracta-repair").unwrap();
-    s.disturbances[0].action.insert("unit".into(), json!(unit));
-    let mut m = Fracta::new(&s).unwrap();
-    m.apply(&s.disturbances[0].action).unwrap();
-    m.cut_off_faulty();
-    let key = |m: &Fracta| {
-        let mut cells: Vec<u32> = m
-            .working
-            .iter()
-            .map(|&u| m.units[u as usize].cell)
-            .collect();
-        cells.sort_unstable();
-        cells
-    };
-    let mut seen = BTreeSet::from([key(&m)]);
-    let mut layer = vec![m];
-    for depth in 0..=limit {
-        if layer.iter().any(Fracta::completed) {
-            return Some(depth);
-        }
-        let mut next = Vec::new();
-        for m in &layer {
-            for &u in &m.working {
-                let cell = m.units[u as usize].cell;
-                for pivot in 0..6 {
-                    for turn in Turn::BOTH {
-                        let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) else {
-                            continue;
-                        };
-                        let mut n = m.clone();
-                        n.occ[cell as usize] = NO_UNIT;
-                        n.occ[to as usize] = u;
-                        n.units[u as usize].cell = to;
-                        n.refresh();
-                        if seen.insert(key(&n)) {
-                            next.push(n);
-                        }
-                    }
-                }
-            }
-        }
-        layer = next;
-    }
-    None
-}
-
 #[test]
 fn a_few_motions_repair_every_fault_position() {
     // The paper's "few steps" is what the geometry allows: 2.4 motions on average over the 10
     // positions, at most 4 (docs/models/fracta.md quotes these).
     let fewest: Vec<Option<usize>> = [0, 1, 2, 3, 4, 6, 7, 8, 9, 10]
         .into_iter()
-        .map(|unit| fewest_motions(unit, 4))
+        .map(|unit| search::fewest_repair_motions(unit, 4))
         .collect();
     let expected = [0, 1, 3, 2, 3, 3, 2, 3, 4, 3].map(Some);
     assert_eq!(fewest, expected);
+}
+
+/// The summed difference of every working unit.
+fn total_difference(m: &Fracta) -> i64 {
+    m.working
+        .iter()
+        .map(|&u| i64::from(m.diff[u as usize]))
+        .sum()
+}
+
+#[test]
+fn a_motion_changes_the_summed_difference_only_within_two_cells_of_its_ends() {
+    // What a unit weighs its directions by (interpretation 21) is computed from the units
+    // within two cells of where it starts and lands; it is the change of the whole system's
+    // summed difference, for every legal motion along seeded runs.
+    let mut checked = 0;
+    for (preset, seed) in [
+        ("fracta-triangle10", 1),
+        ("fracta-triangle10", 2),
+        ("fracta-triangle10-3spares", 3),
+        ("fracta-hexagon7", 4),
+    ] {
+        let mut s = presets::scenario(preset).unwrap();
+        s.seed = seed;
+        let mut m = Fracta::of_scenario(&s).unwrap();
+        for _ in 0..30 {
+            let before = total_difference(&m);
+            for u in m.working.clone() {
+                let cell = m.units[u as usize].cell;
+                for pivot in 0..6 {
+                    for turn in Turn::BOTH {
+                        let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) else {
+                            continue;
+                        };
+                        let local = m.change_after(u, cell, to);
+                        let mut n = m.clone();
+                        n.occ[cell as usize] = NO_UNIT;
+                        n.occ[to as usize] = u;
+                        n.units[u as usize].cell = to;
+                        n.refresh();
+                        assert_eq!(local, total_difference(&n) - before, "{preset} seed {seed}");
+                        checked += 1;
+                    }
+                }
+            }
+            m.step();
+        }
+    }
+    assert!(checked > 500, "{checked} motions checked");
+}
+
+#[test]
+fn only_irritation_moves_a_unit_that_no_direction_improves() {
+    // Equation 3 activates a unit; it rolls only towards a smaller difference around it. Units
+    // whose irritation fired roll whatever the change (the deadlock needs them to).
+    let (mut gated, mut free) = (0, 0);
+    for seed in 1..=20 {
+        let mut s = presets::scenario("fracta-triangle10").unwrap();
+        s.seed = seed;
+        let mut m = Fracta::of_scenario(&s).unwrap();
+        while m.steps < 300 && !m.completed() {
+            m.events.clear();
+            m.cut_off_faulty();
+            m.diffuse();
+            m.plan();
+            for plan in &m.plans {
+                let (_, irritated) = *m.active.iter().find(|a| a.0 == plan.unit).unwrap();
+                let cell = m.units[plan.unit as usize].cell;
+                let mask = m.mask[plan.unit as usize];
+                let to = m
+                    .legal(cell, mask, plan.pivot_slot as usize, plan.turn)
+                    .unwrap();
+                let change = m.clone().change_after(plan.unit, cell, to);
+                if irritated {
+                    free += 1;
+                } else {
+                    assert!(
+                        change < 0,
+                        "seed {seed}: a roll by equation 3 changes {change}"
+                    );
+                    gated += 1;
+                }
+            }
+            m.commit();
+            m.refresh();
+            m.steps += 1;
+        }
+    }
+    assert!(
+        gated > 50 && free > 50,
+        "{gated} by equation 3, {free} by irritation"
+    );
 }
