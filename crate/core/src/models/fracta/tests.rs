@@ -1110,3 +1110,44 @@ fn only_irritation_moves_a_unit_that_no_direction_improves() {
         "{gated} by equation 3, {free} by irritation"
     );
 }
+
+#[test]
+fn after_a_corner_fault_equation_3_holds_back_the_only_unit_that_can_improve() {
+    // Fault on unit 7 (docs/models/fracta.md, "Speed"): the spare is the only unit with a roll
+    // that lowers the difference around it, but its difference is below its neighbours', so
+    // equation 3 never activates it; the units it does activate have no such roll and wait
+    // for irritation.
+    let mut s = presets::scenario("fracta-repair").unwrap();
+    s.disturbances[0].action.insert("unit".into(), json!(7));
+    let mut m = Fracta::of_scenario(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.cut_off_faulty();
+    let t = types();
+    let mut improving = BTreeSet::new();
+    for u in m.working.clone() {
+        if !t.info[m.class[u as usize] as usize].movable {
+            continue;
+        }
+        let cell = m.units[u as usize].cell;
+        for pivot in 0..6 {
+            for turn in Turn::BOTH {
+                if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
+                    if m.change_after(u, cell, to) < 0 {
+                        improving.insert(u);
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(improving, BTreeSet::from([0]));
+    for _ in 0..12 {
+        m.diffuse();
+        let active: Vec<u32> = m.active.iter().map(|a| a.0).collect();
+        assert!(!active.contains(&0), "{active:?}");
+        assert!(m.active.iter().all(|a| !a.1), "no irritation yet");
+        m.plan();
+        assert!(m.plans.is_empty());
+        m.steps += 1;
+    }
+    assert_eq!(m.moves, 0);
+}
