@@ -4,7 +4,8 @@ use super::*;
 
 impl Fracta {
     /// Equations 2, 4 and 5 for every working unit at once, then the activation rule
-    /// (equation 3, or irritation for movable units). Fills `active`.
+    /// (equation 3, or irritation for movable units). Fills `active`, noting which units
+    /// irritation activated.
     pub(super) fn diffuse(&mut self) {
         let t = types();
         let p = self.p;
@@ -43,7 +44,7 @@ impl Fracta {
             self.units[u].irr = irr;
             self.new_x[u] = x;
             if movable && (p.g * unit.x < diff || fired) {
-                self.active.push(u as u32);
+                self.active.push((u as u32, fired));
             }
         }
         for k in 0..self.working.len() {

@@ -171,6 +171,7 @@ impl Fracta {
             pending: 0,
             new_x: vec![0.0; count],
             active: Vec::new(),
+            touched: Vec::new(),
             plans: Vec::new(),
             busy: vec![u64::MAX; count],
             moves: 0,

@@ -12,7 +12,7 @@
 //!   carried out, conflicts cancelled);
 //! - `view` and this module's [`Model`] implementation: the outputs; `actions`: faults;
 //!   [`queries`]: helper calls for the editors; [`paper`]: the claims for the reproduction
-//!   report.
+//!   report; [`search`]: the fewest motions a repair needs, beside them.
 
 use std::borrow::Cow;
 use std::collections::VecDeque;
@@ -42,6 +42,7 @@ mod links;
 pub mod paper;
 mod plan;
 pub mod queries;
+pub mod search;
 mod spec;
 pub mod types;
 mod view;
@@ -56,7 +57,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
-    model_version: 3,
+    model_version: 4,
     parse: |body| models::parse(body, ModelSpec::Fracta),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
@@ -141,7 +142,11 @@ pub struct Fracta {
     pending: usize,
     // Scratch.
     new_x: Vec<f64>,
-    active: Vec<u32>,
+    /// Active units this step, each with whether its irritation fired (condition 5) rather
+    /// than equation 3 activating it.
+    active: Vec<(u32, bool)>,
+    /// Scratch for the units a motion touches.
+    touched: Vec<u32>,
     plans: Vec<Plan>,
     busy: Vec<u64>,
     // Counters.

@@ -4,6 +4,7 @@
 
 use serde_json::{json, Value};
 
+use super::search;
 use crate::reproduce::{fmt, value, Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
@@ -51,6 +52,17 @@ fn findings(r: &Results) -> Vec<Finding> {
             .into(),
     });
     out
+}
+
+/// The depth the breadth-first search of the fewest repair motions goes to.
+const SEARCH_LIMIT: usize = 6;
+
+/// The fewest motions that repair a fault on `unit`, or "more than" the search's depth.
+fn fewest(unit: u64) -> String {
+    match search::fewest_repair_motions(unit, SEARCH_LIMIT) {
+        Some(n) => n.to_string(),
+        None => format!("more than {SEARCH_LIMIT}"),
+    }
 }
 
 /// "k of n (p %)".
@@ -170,6 +182,7 @@ fn repair(r: &Results) -> Vec<Finding> {
         let filter: [(&str, Value); 1] = [("disturbances.0.unit", json!(unit))];
         let done = r.values(EXP, &filter, "completed");
         let s = r.stats(EXP, &filter, "repair_steps");
+        let moves = r.stats(EXP, &filter, "moves");
         let all = !done.is_empty() && done.iter().all(|&v| v > 0.0);
         out.push(Finding {
             section: "§4, fig. 6".into(),
@@ -177,20 +190,34 @@ fn repair(r: &Results) -> Vec<Finding> {
                 "A fault cut into unit {unit} ({role}) of the triangle with its spare is \
                  repaired: the other 10 units rebuild the triangle."
             ),
-            kumiki: format!("{} repaired; repair {} steps", ratio(&done), s.describe(1)),
+            kumiki: format!(
+                "{} repaired; repair {} steps; mean {} motions, at least {} needed",
+                ratio(&done),
+                s.describe(1),
+                fmt(moves.mean, 1),
+                fewest(unit)
+            ),
             runs: done.len(),
             verdict: Verdict::from(all),
             note: format!(
                 "fracta-repair: the fault at step 10, 100 seeds, capped at 5000 steps; repair \
                  time from the fault to the triangle (its detection and cut-off take the first \
                  step), after which the units measure themselves against the first priority, \
-                 the triangle (section 3.3). {}",
+                 the triangle (section 3.3). The fewest motions are a breadth-first search \
+                 over the model's own motions, one unit at a time, from the 10 units the \
+                 cut-off leaves. {}",
                 failures(r, EXP, &filter)
             ),
         });
     }
     let s = r.stats(EXP, &[], "repair_steps");
+    let moves = r.stats(EXP, &[], "moves");
     let done = r.values(EXP, &[], "completed");
+    let needed: Vec<f64> = FAULTS
+        .iter()
+        .filter_map(|&(unit, _)| search::fewest_repair_motions(unit, SEARCH_LIMIT))
+        .map(|n| n as f64)
+        .collect();
     let every = FAULTS.iter().all(|&(unit, _)| {
         let v = r.values(EXP, &[("disturbances.0.unit", json!(unit))], "completed");
         !v.is_empty() && v.iter().all(|&c| c > 0.0)
@@ -199,7 +226,18 @@ fn repair(r: &Results) -> Vec<Finding> {
         "§4",
         "The self-repair succeeds with the fault given to each of the 10 units other than the \
          centre s unit; the paper reports the success and the average self-repair time.",
-        format!("{} repaired; repair {} steps", ratio(&done), s.describe(1)),
+        format!(
+            "{} repaired; repair {} steps; mean {} motions, against a mean of {} over the 10 \
+             positions for the fewest that repair them",
+            ratio(&done),
+            s.describe(1),
+            fmt(moves.mean, 1),
+            if needed.len() == FAULTS.len() {
+                fmt(needed.iter().sum::<f64>() / needed.len() as f64, 1)
+            } else {
+                "n/a".into()
+            }
+        ),
         done.len(),
         Verdict::from(every),
         "All 10 positions of fracta-repair together; the verdict asks that every run at every \

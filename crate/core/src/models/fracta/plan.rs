@@ -92,33 +92,78 @@ impl Fracta {
         Some(target)
     }
 
-    /// The difference the unit `u` would have after rolling from `from` to `to`, every other
-    /// unit staying put.
-    pub(super) fn difference_after(&mut self, u: u32, from: u32, to: u32) -> u32 {
+    /// How much the motion of unit `u` from `from` to `to` changes the summed difference of
+    /// the working units it touches: those within two cells of either end (a motion changes
+    /// the bonds of the units beside its ends, and so the statements of the units beside
+    /// those; no unit farther away sees a change). This equals the change of the whole
+    /// system's summed difference, computed from what the units around the mover know.
+    pub(super) fn change_after(&mut self, u: u32, from: u32, to: u32) -> i64 {
         let t = types();
+        let mut touched = std::mem::take(&mut self.touched);
+        touched.clear();
+        for end in [from, to] {
+            let mut ring = [NO_UNIT; 7];
+            ring[0] = end;
+            ring[1..].copy_from_slice(&self.nbr[end as usize]);
+            for c in ring {
+                if c == NO_UNIT {
+                    continue;
+                }
+                for d in std::iter::once(c).chain(self.nbr[c as usize]) {
+                    if d == NO_UNIT {
+                        continue;
+                    }
+                    let v = self.occ[d as usize];
+                    if v != NO_UNIT
+                        && self.units[v as usize].status == Status::Working
+                        && !touched.contains(&v)
+                    {
+                        touched.push(v);
+                    }
+                }
+            }
+        }
+        let before: i64 = touched
+            .iter()
+            .map(|&v| i64::from(self.diff[v as usize]))
+            .sum();
         self.occ[from as usize] = NO_UNIT;
         self.occ[to as usize] = u;
-        let own = t.of(self.ring(to));
+        let mut after = 0i64;
         let mut nb = [0u8; 6];
-        let n = self.neighbour_classes(to, &mut nb, true);
-        let d = self
-            .goal
-            .difference(&t.dist, own, &nb[..n], self.p.priorities)
-            .difference;
+        for &v in &touched {
+            let cell = if v == u {
+                to
+            } else {
+                self.units[v as usize].cell
+            };
+            let own = t.of(self.ring(cell));
+            let n = self.neighbour_classes(cell, &mut nb, true);
+            after += i64::from(
+                self.goal
+                    .difference(&t.dist, own, &nb[..n], self.p.priorities)
+                    .difference,
+            );
+        }
         self.occ[to as usize] = NO_UNIT;
         self.occ[from as usize] = u;
-        d
+        self.touched = touched;
+        after - before
     }
 
     /// Section 3.2.4: each active unit picks clockwise or counter-clockwise, the direction that
-    /// leaves it the smaller difference being the likelier (Boltzmann weights at `temperature`).
+    /// leaves the smaller difference around it being the likelier (Boltzmann weights at
+    /// `temperature` of the change [`Self::change_after`]). A unit that equation 3 activated
+    /// moves only when one of its directions lowers that difference (section 3.2 (iii): "it
+    /// moves towards the direction to make it smaller"); a unit whose irritation fired moves
+    /// whatever the change (condition 5 dissolves deadlocks, where no motion lowers it).
     pub(super) fn plan(&mut self) {
         self.plans.clear();
         for k in 0..self.active.len() {
-            let u = self.active[k];
+            let (u, irritated) = self.active[k];
             let cell = self.units[u as usize].cell;
             let mask = self.mask[u as usize];
-            let mut options: [(Plan, u32); 2] = [(
+            let mut options: [(Plan, i64); 2] = [(
                 Plan {
                     unit: u,
                     pivot: 0,
@@ -131,7 +176,7 @@ impl Fracta {
             for pivot in 0..6 {
                 for turn in Turn::BOTH {
                     if let Some(target) = self.legal(cell, mask, pivot, turn) {
-                        let d = self.difference_after(u, cell, target);
+                        let d = self.change_after(u, cell, target);
                         if n < 2 {
                             let pivot_cell = self.nbr[cell as usize][pivot];
                             options[n] = (
@@ -148,11 +193,13 @@ impl Fracta {
                     }
                 }
             }
+            if n == 0 || (!irritated && options[..n].iter().all(|o| o.1 >= 0)) {
+                continue;
+            }
             let chosen = match n {
-                0 => continue,
                 1 => options[0].0,
                 _ => {
-                    let (d0, d1) = (f64::from(options[0].1), f64::from(options[1].1));
+                    let (d0, d1) = (options[0].1 as f64, options[1].1 as f64);
                     // P(first) = e^(-d0/T) / (e^(-d0/T) + e^(-d1/T)).
                     let p0 = 1.0 / (1.0 + math::exp((d0 - d1) / self.p.temperature));
                     if self.rng.unit() < p0 {

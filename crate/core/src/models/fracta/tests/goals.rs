@@ -155,7 +155,7 @@ fn a_completed_goal_has_zero_difference_and_stays_still() {
         ),
     ] {
         let s = scenario(start, goal, 3, json!({}));
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         assert!(m.completed());
         assert!(m.working.iter().all(|&u| m.diff[u as usize] == 0));
         let cells: Vec<u32> = m.units.iter().map(|u| u.cell).collect();

@@ -10,19 +10,6 @@ use crate::run::Run;
 use crate::scenario::Scenario;
 use proptest::prelude::*;
 
-impl Fracta {
-    /// The model of a test scenario, built the way a run builds it.
-    fn new(s: &Scenario) -> crate::Result<Fracta> {
-        let crate::models::ModelSpec::Fracta(spec) = &s.spec else {
-            panic!("not a fracta scenario");
-        };
-        Ok(Fracta::from_checked(
-            crate::models::Spec::validate(spec, s.limits)?,
-            s.seed,
-        ))
-    }
-}
-
 const TRIANGLE: &str = ". . # .\n . # # .\n. # # #\n # # # #\n";
 const TRIANGLE_GOAL: &str = "o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n";
 
@@ -95,6 +82,7 @@ fn check_invariants(m: &Fracta) {
 
 mod goals;
 mod holes;
+mod motions;
 mod patterns;
 mod properties;
 mod runs;

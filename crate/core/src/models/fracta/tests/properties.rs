@@ -28,7 +28,7 @@ proptest! {
             "disturbances": [{"at": fault_at, "kind": "fault", "unit": fault_unit % units}]
         }));
         let Ok(s) = s else { return Ok(()); };
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         check_invariants(&m);
         for _ in 0..200 {
             if m.steps == fault_at {
@@ -89,12 +89,12 @@ fn shape_up_to_symmetry(m: &Fracta) -> Vec<(i32, i32)> {
 #[test]
 fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
     // The goal shape: the start of fracta-repair, the triangle with its spare.
-    let goal = Fracta::new(&presets::scenario("fracta-repair").unwrap()).unwrap();
+    let goal = Fracta::of_scenario(&presets::scenario("fracta-repair").unwrap()).unwrap();
     let want = shape_up_to_symmetry(&goal);
     for seed in 1..=300 {
         let mut s = presets::scenario("fracta-triangle10").unwrap();
         s.seed = seed;
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         while m.steps < 3000 && !m.completed() {
             m.step();
         }
@@ -110,7 +110,7 @@ fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
                 .with_override("no_holes", json!(false))
                 .unwrap();
             s.seed = seed;
-            let mut m = Fracta::new(&s).unwrap();
+            let mut m = Fracta::of_scenario(&s).unwrap();
             while m.steps < 3000 && !m.completed() {
                 m.step();
             }
@@ -127,7 +127,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
     let start = ". # . #\n # . # .\n. # # .\n";
     for (no_holes, closes) in [(true, false), (false, true)] {
         let s = scenario(start, TRIANGLE_GOAL, 1, json!({ "no_holes": no_holes }));
-        let m = Fracta::new(&s).unwrap();
+        let m = Fracta::of_scenario(&s).unwrap();
         assert_eq!(surrounded(&m), 0);
         let mut can_close = false;
         for &u in &m.working {
@@ -135,7 +135,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
             for pivot in 0..6 {
                 for turn in Turn::BOTH {
                     if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
-                        let mut after = Fracta::new(&s).unwrap();
+                        let mut after = Fracta::of_scenario(&s).unwrap();
                         after.occ[cell as usize] = NO_UNIT;
                         after.occ[to as usize] = u;
                         can_close |= surrounded(&after) > 0;
@@ -151,7 +151,7 @@ fn no_motion_closes_a_ring_round_an_empty_cell() {
 fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
     let mut s = presets::scenario("fracta-triangle10").unwrap();
     s.seed = 2;
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     assert!(m.p.avoid_e);
     let mut legal = 0;
     for _ in 0..200 {
@@ -176,7 +176,7 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
         .unwrap()
         .with_override("avoid_e", json!(true))
         .unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.p.avoid_e = false;
     let ends_as_e = m.working.iter().all(|&u| {
         let cell = m.units[u as usize].cell;
@@ -193,7 +193,7 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
 #[test]
 fn a_cut_off_restarts_equation_2_from_the_differences() {
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.cut_off_faulty();
     assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
@@ -218,7 +218,7 @@ fn a_cut_off_leaves_the_description_with_one_spare_fewer() {
     // The paper's repair: after the cut-off only the triangle's own statements are left, and
     // the 10 units rebuild exactly the triangle.
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.step();
     assert_eq!(
@@ -230,6 +230,6 @@ fn a_cut_off_leaves_the_description_with_one_spare_fewer() {
         m.step();
     }
     assert!(m.completed());
-    let triangle = Fracta::new(&scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}))).unwrap();
+    let triangle = Fracta::of_scenario(&scenario(TRIANGLE, TRIANGLE_GOAL, 1, json!({}))).unwrap();
     assert_eq!(shape_up_to_symmetry(&m), shape_up_to_symmetry(&triangle));
 }

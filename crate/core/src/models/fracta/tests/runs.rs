@@ -8,7 +8,7 @@ fn the_two_line_start_assembles_the_triangle_with_its_spare() {
     for seed in 1..=6 {
         let mut s = presets::scenario("fracta-triangle10").unwrap();
         s.seed = seed;
-        let mut m = Fracta::new(&s).unwrap();
+        let mut m = Fracta::of_scenario(&s).unwrap();
         assert!(!m.completed());
         let mut moves = 0;
         while m.steps < 3000 && !m.completed() {
@@ -39,7 +39,7 @@ fn the_two_line_start_assembles_the_triangle_with_its_spare() {
 #[test]
 fn a_fault_is_cut_off_and_the_triangle_repaired() {
     let s = presets::scenario("fracta-repair").unwrap();
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     assert!(m.completed());
     let fault = s.disturbances[0].clone();
     assert_eq!(fault.at, 10);
@@ -80,7 +80,7 @@ fn a_fault_that_splits_the_system_strands_the_smaller_part() {
         1,
         json!({"disturbances": [{"at": 0, "kind": "fault", "unit": 1}]}),
     );
-    let mut m = Fracta::new(&s).unwrap();
+    let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.step();
     // Unit 1 held unit 0 to the rest: 0 is stranded, 2, 3, 4 and 5 carry on.
@@ -195,7 +195,7 @@ fn queries_derive_and_check_goals() {
 
 #[test]
 fn layout_cells_fields_and_bonds_agree() {
-    let mut m = Fracta::new(&presets::scenario("fracta-triangle10").unwrap()).unwrap();
+    let mut m = Fracta::of_scenario(&presets::scenario("fracta-triangle10").unwrap()).unwrap();
     for _ in 0..20 {
         m.step();
     }

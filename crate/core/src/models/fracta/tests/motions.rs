@@ -1,0 +1,149 @@
+//! Motions: the fewest that repair each fault, what one motion changes, and which units equation 3
+//! lets move.
+
+use super::*;
+
+#[test]
+fn a_few_motions_repair_every_fault_position() {
+    // The paper's "few steps" is what the geometry allows: 2.4 motions on average over the 10
+    // positions, at most 4 (docs/models/fracta.md quotes these).
+    let fewest: Vec<Option<usize>> = [0, 1, 2, 3, 4, 6, 7, 8, 9, 10]
+        .into_iter()
+        .map(|unit| search::fewest_repair_motions(unit, 4))
+        .collect();
+    let expected = [0, 1, 3, 2, 3, 3, 2, 3, 4, 3].map(Some);
+    assert_eq!(fewest, expected);
+}
+
+/// The summed difference of every working unit.
+fn total_difference(m: &Fracta) -> i64 {
+    m.working
+        .iter()
+        .map(|&u| i64::from(m.diff[u as usize]))
+        .sum()
+}
+
+#[test]
+fn a_motion_changes_the_summed_difference_only_within_two_cells_of_its_ends() {
+    // What a unit weighs its directions by (interpretation 21) is computed from the units
+    // within two cells of where it starts and lands; it is the change of the whole system's
+    // summed difference, for every legal motion along seeded runs.
+    let mut checked = 0;
+    for (preset, seed) in [
+        ("fracta-triangle10", 1),
+        ("fracta-triangle10", 2),
+        ("fracta-triangle10-3spares", 3),
+        ("fracta-hexagon7", 4),
+    ] {
+        let mut s = presets::scenario(preset).unwrap();
+        s.seed = seed;
+        let mut m = Fracta::of_scenario(&s).unwrap();
+        for _ in 0..30 {
+            let before = total_difference(&m);
+            for u in m.working.clone() {
+                let cell = m.units[u as usize].cell;
+                for pivot in 0..6 {
+                    for turn in Turn::BOTH {
+                        let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) else {
+                            continue;
+                        };
+                        let local = m.change_after(u, cell, to);
+                        let mut n = m.clone();
+                        n.occ[cell as usize] = NO_UNIT;
+                        n.occ[to as usize] = u;
+                        n.units[u as usize].cell = to;
+                        n.refresh();
+                        assert_eq!(local, total_difference(&n) - before, "{preset} seed {seed}");
+                        checked += 1;
+                    }
+                }
+            }
+            m.step();
+        }
+    }
+    assert!(checked > 500, "{checked} motions checked");
+}
+
+#[test]
+fn only_irritation_moves_a_unit_that_no_direction_improves() {
+    // Equation 3 activates a unit; it rolls only towards a smaller difference around it. Units
+    // whose irritation fired roll whatever the change (the deadlock needs them to).
+    let (mut gated, mut free) = (0, 0);
+    for seed in 1..=20 {
+        let mut s = presets::scenario("fracta-triangle10").unwrap();
+        s.seed = seed;
+        let mut m = Fracta::of_scenario(&s).unwrap();
+        while m.steps < 300 && !m.completed() {
+            m.events.clear();
+            m.cut_off_faulty();
+            m.diffuse();
+            m.plan();
+            for plan in &m.plans {
+                let (_, irritated) = *m.active.iter().find(|a| a.0 == plan.unit).unwrap();
+                let cell = m.units[plan.unit as usize].cell;
+                let mask = m.mask[plan.unit as usize];
+                let to = m
+                    .legal(cell, mask, plan.pivot_slot as usize, plan.turn)
+                    .unwrap();
+                let change = m.clone().change_after(plan.unit, cell, to);
+                if irritated {
+                    free += 1;
+                } else {
+                    assert!(
+                        change < 0,
+                        "seed {seed}: a roll by equation 3 changes {change}"
+                    );
+                    gated += 1;
+                }
+            }
+            m.commit();
+            m.refresh();
+            m.steps += 1;
+        }
+    }
+    assert!(
+        gated > 50 && free > 50,
+        "{gated} by equation 3, {free} by irritation"
+    );
+}
+
+#[test]
+fn after_a_corner_fault_equation_3_holds_back_the_only_unit_that_can_improve() {
+    // Fault on unit 7 (docs/models/fracta.md, "Speed"): the spare is the only unit with a roll
+    // that lowers the difference around it, but its difference is below its neighbours', so
+    // equation 3 never activates it; the units it does activate have no such roll and wait
+    // for irritation.
+    let mut s = presets::scenario("fracta-repair").unwrap();
+    s.disturbances[0].action.insert("unit".into(), json!(7));
+    let mut m = Fracta::of_scenario(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.cut_off_faulty();
+    let t = types();
+    let mut improving = BTreeSet::new();
+    for u in m.working.clone() {
+        if !t.info[m.class[u as usize] as usize].movable {
+            continue;
+        }
+        let cell = m.units[u as usize].cell;
+        for pivot in 0..6 {
+            for turn in Turn::BOTH {
+                if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
+                    if m.change_after(u, cell, to) < 0 {
+                        improving.insert(u);
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(improving, BTreeSet::from([0]));
+    for _ in 0..12 {
+        m.diffuse();
+        let active: Vec<u32> = m.active.iter().map(|a| a.0).collect();
+        assert!(!active.contains(&0), "{active:?}");
+        assert!(m.active.iter().all(|a| !a.1), "no irritation yet");
+        m.plan();
+        assert!(m.plans.is_empty());
+        m.steps += 1;
+    }
+    assert_eq!(m.moves, 0);
+}
