@@ -160,6 +160,23 @@ pub struct Fracta {
     events: Vec<Event>,
 }
 
+impl Fracta {
+    /// A step's first half: faults are cut off, x diffuses, units are activated and plan.
+    fn decide(&mut self) {
+        self.events.clear();
+        self.cut_off_faulty();
+        self.diffuse();
+        self.plan();
+    }
+
+    /// A step's second half: the plans are carried out and the statements refreshed.
+    fn act(&mut self) {
+        self.commit();
+        self.refresh();
+        self.steps += 1;
+    }
+}
+
 impl Model for Fracta {
     fn layout(&self) -> Layout {
         let t = types();
@@ -216,13 +233,8 @@ impl Model for Fracta {
     }
 
     fn step(&mut self) {
-        self.events.clear();
-        self.cut_off_faulty();
-        self.diffuse();
-        self.plan();
-        self.commit();
-        self.refresh();
-        self.steps += 1;
+        self.decide();
+        self.act();
     }
 
     fn steps(&self) -> u64 {

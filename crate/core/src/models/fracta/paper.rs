@@ -65,6 +65,72 @@ fn fewest(unit: u64) -> String {
     }
 }
 
+/// Steps after a cut-off within which [`start`] looks for the first motion.
+const FIRST_MOTION_LIMIT: u64 = 200;
+
+/// How a repair begins, as far as the report tells positions apart.
+enum Begins {
+    /// Equation 3 activates a unit that can lower the summed difference.
+    Prompt,
+    /// Units could lower it, but equation 3 activates none of them: irritation moves first,
+    /// after this many steps.
+    HeldBack(u64),
+    /// No unit can lower it: irritation moves first, after this many steps.
+    NoBetterMotion(u64),
+}
+
+/// How the repair of a fault on `unit` begins, in words and as a [`Begins`].
+fn start(unit: u64) -> (String, Begins) {
+    if search::fewest_repair_motions(unit, 0) == Some(0) {
+        return (
+            "The cut-off leaves the triangle: no unit needs to move.".into(),
+            Begins::Prompt,
+        );
+    }
+    let Some(first) = search::first_motion_after_fault(unit, FIRST_MOTION_LIMIT) else {
+        return (
+            format!("No unit moves within {FIRST_MOTION_LIMIT} steps of the cut-off."),
+            Begins::Prompt,
+        );
+    };
+    let units = first
+        .improving
+        .iter()
+        .map(u32::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    let (who, them) = match first.improving.len() {
+        0 => ("no unit has a motion".to_string(), ""),
+        1 => (format!("only unit {units} has a motion"), "it"),
+        _ => (format!("units {units} have a motion"), "one of them"),
+    };
+    let activated = match (first.improving.is_empty(), first.improving_activated) {
+        (true, _) => String::new(),
+        (false, true) => format!("; equation 3 activates {them}"),
+        (false, false) if them == "it" => "; equation 3 does not activate it".into(),
+        (false, false) => "; equation 3 activates none of them".into(),
+    };
+    let plural = if first.wait == 1 { "" } else { "s" };
+    let how = if first.by_irritation {
+        ", made by units whose irritation fired"
+    } else {
+        ""
+    };
+    let begins = match (first.improving.is_empty(), first.improving_activated) {
+        (true, _) => Begins::NoBetterMotion(first.wait),
+        (false, false) => Begins::HeldBack(first.wait),
+        (false, true) => Begins::Prompt,
+    };
+    (
+        format!(
+            "Right after the cut-off {who} that lowers the summed difference{activated}; the \
+             first motion comes {} step{plural} after the cut-off{how}.",
+            first.wait
+        ),
+        begins,
+    )
+}
+
 /// "k of n (p %)".
 fn ratio(done: &[f64]) -> String {
     let k = done.iter().filter(|&&v| v > 0.0).count();
@@ -184,6 +250,7 @@ fn repair(r: &Results) -> Vec<Finding> {
         let s = r.stats(EXP, &filter, "repair_steps");
         let moves = r.stats(EXP, &filter, "moves");
         let all = !done.is_empty() && done.iter().all(|&v| v > 0.0);
+        let (begins, _) = start(unit);
         out.push(Finding {
             section: "§4, fig. 6".into(),
             claim: format!(
@@ -205,7 +272,7 @@ fn repair(r: &Results) -> Vec<Finding> {
                  step), after which the units measure themselves against the first priority, \
                  the triangle (section 3.3). The fewest motions are a breadth-first search \
                  over the model's own motions, one unit at a time, from the 10 units the \
-                 cut-off leaves. {}",
+                 cut-off leaves. {begins} {}",
                 failures(r, EXP, &filter)
             ),
         });
@@ -218,6 +285,34 @@ fn repair(r: &Results) -> Vec<Finding> {
         .filter_map(|&(unit, _)| search::fewest_repair_motions(unit, SEARCH_LIMIT))
         .map(|n| n as f64)
         .collect();
+    let (mut held, mut none) = (Vec::new(), Vec::new());
+    for &(unit, _) in &FAULTS {
+        match start(unit).1 {
+            Begins::HeldBack(wait) => held.push(format!("a fault on unit {unit} ({wait} steps)")),
+            Begins::NoBetterMotion(wait) => {
+                none.push(format!("a fault on unit {unit} ({wait} steps)"))
+            }
+            Begins::Prompt => {}
+        }
+    }
+    let mut waits = Vec::new();
+    if !held.is_empty() {
+        waits.push(format!(
+            "Where units could lower the summed difference but equation 3 activates none of \
+             them, the first motion waits for irritation: {}. Which units equation 3 \
+             activates is where these repairs lose their time (docs/models/fracta.md, \
+             \"Beside the paper\").",
+            held.join(", ")
+        ));
+    }
+    if !none.is_empty() {
+        waits.push(format!(
+            "Where no single motion lowers it, irritation makes the first motion too, as the \
+             paper's condition 5 is meant to: {}.",
+            none.join(", ")
+        ));
+    }
+    let held = waits.join(" ");
     let every = FAULTS.iter().all(|&(unit, _)| {
         let v = r.values(EXP, &[("disturbances.0.unit", json!(unit))], "completed");
         !v.is_empty() && v.iter().all(|&c| c > 0.0)
@@ -240,9 +335,12 @@ fn repair(r: &Results) -> Vec<Finding> {
         ),
         done.len(),
         Verdict::from(every),
-        "All 10 positions of fracta-repair together; the verdict asks that every run at every \
-         position rebuilt the triangle. The speed is not judged: the paper's average is a \
-         figure of its own runs, and the rows above give Kumiki's per position.",
+        format!(
+            "All 10 positions of fracta-repair together; the verdict asks that every run at \
+             every position rebuilt the triangle. The speed is not judged: the paper's average \
+             is a figure of its own runs, and the rows above give Kumiki's per position. {held}"
+        )
+        .as_str(),
     ));
     out
 }

@@ -31,11 +31,8 @@ impl Fracta {
     }
 }
 
-/// The fewest motions (one unit's motion at a time, every rule of the model applied) that take
-/// the 10 units left after a fault on `unit` of the `fracta-repair` preset to the triangle,
-/// searched breadth first up to `limit` motions; `None` if more are needed or the preset is
-/// missing.
-pub fn fewest_repair_motions(unit: u64, limit: usize) -> Option<usize> {
+/// The `fracta-repair` preset's model with the fault on `unit` applied and cut off.
+fn after_cut_off(unit: u64) -> Option<Fracta> {
     let mut s = crate::presets::scenario("fracta-repair").ok()?;
     let fault = s.disturbances.first_mut()?;
     fault.action.insert("unit".into(), json!(unit));
@@ -43,6 +40,82 @@ pub fn fewest_repair_motions(unit: u64, limit: usize) -> Option<usize> {
     let mut m = Fracta::of_scenario(&s).ok()?;
     m.apply(&action).ok()?;
     m.cut_off_faulty();
+    Some(m)
+}
+
+/// What a repair waits for before its first motion.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FirstMotion {
+    /// The working units that, right after the cut-off, have a motion lowering the summed
+    /// difference.
+    pub improving: Vec<u32>,
+    /// Whether equation 3 activated one of them before or at the first motion.
+    pub improving_activated: bool,
+    /// Steps from the cut-off to the step of the first motion.
+    pub wait: u64,
+    /// Whether every unit that made the first motion had fired by irritation.
+    pub by_irritation: bool,
+}
+
+/// The units with a motion that lowers the summed difference around them.
+fn improving_units(m: &Fracta) -> Vec<u32> {
+    let t = types();
+    let mut probe = m.clone();
+    let mut out = Vec::new();
+    for &u in &m.working {
+        if !t.info[m.class[u as usize] as usize].movable {
+            continue;
+        }
+        let cell = m.units[u as usize].cell;
+        let improves = (0..6).any(|pivot| {
+            Turn::BOTH.into_iter().any(|turn| {
+                m.legal(cell, m.mask[u as usize], pivot, turn)
+                    .is_some_and(|to| probe.change_after(u, cell, to) < 0)
+            })
+        });
+        if improves {
+            out.push(u);
+        }
+    }
+    out
+}
+
+/// How the repair of a fault on `unit` of `fracta-repair` begins, run with the preset's seed for
+/// at most `limit` steps after the cut-off; `None` when no unit moved by then.
+pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
+    let mut m = after_cut_off(unit)?;
+    let improving = improving_units(&m);
+    let mut improving_activated = false;
+    for wait in 0..limit {
+        m.decide();
+        improving_activated |= m
+            .active
+            .iter()
+            .any(|&(u, irritated)| !irritated && improving.contains(&u));
+        if !m.plans.is_empty() {
+            let by_irritation = m.plans.iter().all(|p| {
+                m.active
+                    .iter()
+                    .any(|&(u, irritated)| u == p.unit && irritated)
+            });
+            return Some(FirstMotion {
+                improving,
+                improving_activated,
+                wait,
+                by_irritation,
+            });
+        }
+        m.act();
+    }
+    None
+}
+
+/// The fewest motions (one unit's motion at a time, every rule of the model applied) that take
+/// the 10 units left after a fault on `unit` of the `fracta-repair` preset to the triangle,
+/// searched breadth first up to `limit` motions; `None` if more are needed or the preset is
+/// missing.
+pub fn fewest_repair_motions(unit: u64, limit: usize) -> Option<usize> {
+    let m = after_cut_off(unit)?;
     let mut seen = BTreeSet::from([m.configuration()]);
     let mut layer = vec![m];
     for depth in 0..=limit {

@@ -147,3 +147,22 @@ fn after_a_corner_fault_equation_3_holds_back_the_only_unit_that_can_improve() {
     }
     assert_eq!(m.moves, 0);
 }
+
+#[test]
+fn the_report_reads_what_a_repair_waits_for() {
+    // The apex fault: the spare beside it improves and equation 3 moves it as soon as x has
+    // diffused once.
+    let apex = search::first_motion_after_fault(1, 50).unwrap();
+    assert!(apex.improving.contains(&0), "{apex:?}");
+    assert!(apex.improving_activated && !apex.by_irritation, "{apex:?}");
+    assert!(apex.wait <= 1, "{apex:?}");
+    // The corner fault: only the spare could improve, equation 3 never activates it, and the
+    // first motion waits for irritation (the test above follows the same run step by step).
+    let corner = search::first_motion_after_fault(7, 50).unwrap();
+    assert_eq!(corner.improving, vec![0]);
+    assert!(
+        !corner.improving_activated && corner.by_irritation,
+        "{corner:?}"
+    );
+    assert!(corner.wait >= 12, "{corner:?}");
+}
