@@ -1,5 +1,6 @@
 // Regenerates docs/screenshot.png: the page in headless Chromium, a preset part-way through.
-// Usage: node scripts/screenshot.mjs [preset] [steps]   (after npm run build)
+// Usage: node scripts/screenshot.mjs [preset] [steps] [overlay]   (after npm run build)
+// The README's picture: node scripts/screenshot.mjs amas-L 120 potential
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
@@ -13,6 +14,11 @@ const browser = await launch();
 const page = await (await browser.newContext({ viewport: { width: 1360, height: 820 }, deviceScaleFactor: 1 })).newPage();
 await page.goto(`${server.url}#${link}`);
 await page.waitForSelector('body[data-ready="true"]');
+// A link opens with its introduction; the screenshot shows the page behind it.
+if (await page.isVisible('#intro')) {
+  await page.click('#intro button.primary');
+  await page.waitForSelector('#intro', { state: 'hidden' });
+}
 if (overlay) {
   await page.selectOption('#overlay', overlay);
 }
