@@ -13,6 +13,20 @@ fn kumiki(args: &[&str]) -> std::process::Output {
         .expect("the kumiki binary runs")
 }
 
+/// The JSON rows a successful run printed, one per line.
+fn json_rows(out: std::process::Output) -> Vec<Value> {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
 fn exercise() -> Scenario {
     let mut doc = presets::scenario("amas-L").unwrap().to_value();
     doc["exercise"] = json!({
@@ -57,16 +71,7 @@ fn hand_ins_are_replayed_and_graded_one_row_each() {
         "--jobs",
         "2",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let rows: Vec<Value> = String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect();
+    let rows = json_rows(out);
     assert_eq!(rows.len(), 5);
     assert_eq!(
         rows.iter()
@@ -139,16 +144,7 @@ fn lessons_are_listed_and_graded_by_name() {
         "--exercise",
         "lesson-chobie-forms",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let rows: Vec<Value> = String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect();
+    let rows = json_rows(out);
     assert_eq!(rows[0]["met"], false);
     assert_eq!(rows[1]["met"], true);
     assert_eq!(rows[1]["changed"], json!(["method"]));

@@ -293,14 +293,7 @@ fn face_connected(units: &[(i32, i32, i32)]) -> bool {
     let mut stack: Vec<(i32, i32, i32)> = units.first().copied().into_iter().collect();
     seen.extend(stack.iter().copied());
     while let Some((x, y, z)) = stack.pop() {
-        for (dx, dy, dz) in [
-            (1, 0, 0),
-            (-1, 0, 0),
-            (0, 1, 0),
-            (0, -1, 0),
-            (0, 0, 1),
-            (0, 0, -1),
-        ] {
+        for (dx, dy, dz) in crate::lattice::Cubic::DIRS {
             let n = (x + dx, y + dy, z + dz);
             if occupied.contains(&n) && seen.insert(n) {
                 stack.push(n);
