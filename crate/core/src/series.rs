@@ -12,7 +12,7 @@
 //! [`Series::decimate`] then merges buckets once more into as many as the chart has pixels, for
 //! drawing only.
 
-use crate::models::Metrics;
+use crate::models::{Metrics, Model};
 
 /// Buckets kept before pairs merge: full resolution for the first 4096 steps.
 pub const DEFAULT_CAPACITY: usize = 4096;
@@ -47,7 +47,11 @@ impl Series {
     /// appears later is not recorded).
     pub fn new(first: &Metrics, capacity: usize) -> Series {
         Series {
-            names: first.keys().cloned().collect(),
+            names: {
+                let mut names: Vec<String> = first.keys().cloned().collect();
+                names.sort();
+                names
+            },
             capacity: capacity.max(2),
             span: 1,
             keys: Vec::new(),
@@ -83,6 +87,28 @@ impl Series {
     /// Records the metrics at `step`. A step at or before the last one recorded is ignored: after
     /// going back, a run passes through the very same states again.
     pub fn record(&mut self, step: u64, metrics: &Metrics) {
+        self.record_each(step, |f| {
+            for (name, value) in metrics {
+                f(
+                    name,
+                    value
+                        .as_f64()
+                        .or_else(|| value.as_bool().map(|b| f64::from(u8::from(b)))),
+                );
+            }
+        });
+    }
+
+    /// [`Series::record`] of the model's metrics as it stands, read one by one
+    /// ([`Model::each_metric`]) without building a map: the page records every step.
+    pub fn record_model(&mut self, step: u64, model: &dyn Model) {
+        self.record_each(step, |f| {
+            model.each_metric(&mut |name, value| f(name, value.plotted()))
+        });
+    }
+
+    /// Records at `step` the values `feed` gives by name (none for a value with no number).
+    fn record_each(&mut self, step: u64, feed: impl FnOnce(&mut dyn FnMut(&str, Option<f64>))) {
         if self.last.is_some_and(|last| step <= last) {
             return;
         }
@@ -95,16 +121,15 @@ impl Series {
             self.maxs.extend(std::iter::repeat_n(f64::NAN, k));
         }
         let at = (self.keys.len() - 1) * k;
-        for (i, name) in self.names.iter().enumerate() {
-            let v = match metrics.get(name) {
-                Some(serde_json::Value::Number(n)) => n.as_f64().unwrap_or(f64::NAN),
-                Some(serde_json::Value::Bool(b)) => f64::from(u8::from(*b)),
-                _ => continue,
-            };
-            // f64::min and max keep the number when the other side is NaN.
-            self.mins[at + i] = self.mins[at + i].min(v);
-            self.maxs[at + i] = self.maxs[at + i].max(v);
-        }
+        let (names, mins, maxs) = (&self.names, &mut self.mins, &mut self.maxs);
+        feed(&mut |name, value| {
+            // The names are sorted (see `new`).
+            if let (Ok(i), Some(v)) = (names.binary_search_by(|n| n.as_str().cmp(name)), value) {
+                // f64::min and max keep the number when the other side is NaN.
+                mins[at + i] = mins[at + i].min(v);
+                maxs[at + i] = maxs[at + i].max(v);
+            }
+        });
         if self.keys.len() > self.capacity {
             self.merge_pairs();
         }
@@ -249,5 +274,24 @@ mod tests {
         s.record(10, &metrics(-1.0));
         assert_eq!(s.decimate("value", 100).min, vec![0.0, 4.0, -1.0]);
         assert_eq!(s.last_step(), Some(10));
+    }
+
+    #[test]
+    fn reading_the_model_records_what_its_metrics_map_holds() {
+        for name in crate::presets::names() {
+            let scenario = crate::presets::scenario(name).unwrap();
+            let mut model = scenario.build().unwrap();
+            let first = model.metrics();
+            let (mut by_map, mut by_model) = (Series::new(&first, 64), Series::new(&first, 64));
+            for step in 0..40 {
+                by_map.record(step, &model.metrics());
+                by_model.record_model(step, model.as_ref());
+                model.step();
+            }
+            for metric in first.keys() {
+                let (a, b) = (by_map.decimate(metric, 16), by_model.decimate(metric, 16));
+                assert_eq!(format!("{a:?}"), format!("{b:?}"), "{name}: {metric}");
+            }
+        }
     }
 }

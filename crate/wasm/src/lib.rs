@@ -399,7 +399,7 @@ impl Sim {
             // Steps passed through again after going back are already recorded: skip their metrics.
             let step = self.run.steps();
             if self.series.last_step().is_none_or(|last| step > last) {
-                self.series.record(step, &self.run.model().metrics());
+                self.series.record_model(step, self.run.model());
             }
             taken += 1;
         }

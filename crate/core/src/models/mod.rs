@@ -24,6 +24,39 @@ pub mod fracta;
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
 
+/// One metric's value as a model reports it: given by name to [`Model::each_metric`], so a
+/// caller that wants every step's values (the page's chart) needs no map per step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Metric {
+    Count(u64),
+    /// A ratio or a measure; a non-finite value reads as missing.
+    Real(f64),
+    Flag(bool),
+    /// Not defined yet (a time to completion before completion, a ratio of nothing).
+    Missing,
+}
+
+impl Metric {
+    pub fn to_json(self) -> Value {
+        match self {
+            Metric::Count(n) => n.into(),
+            Metric::Real(x) => serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number),
+            Metric::Flag(b) => b.into(),
+            Metric::Missing => Value::Null,
+        }
+    }
+
+    /// The number a chart plots (a flag as 0 or 1), or none.
+    pub fn plotted(self) -> Option<f64> {
+        match self {
+            Metric::Count(n) => Some(n as f64),
+            Metric::Real(x) => x.is_finite().then_some(x),
+            Metric::Flag(b) => Some(f64::from(u8::from(b))),
+            Metric::Missing => None,
+        }
+    }
+}
+
 /// A model action (a disturbance), as written in a scenario or sent by a click in the page.
 pub type Action = Map<String, Value>;
 
@@ -138,7 +171,16 @@ pub trait Model: Snapshot {
     fn steps(&self) -> u64;
     /// True when the model's goal is reached.
     fn completed(&self) -> bool;
-    fn metrics(&self) -> Metrics;
+    /// Gives every metric to `f`, by name.
+    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric));
+    /// The metrics as one JSON object, sorted by name.
+    fn metrics(&self) -> Metrics {
+        let mut m = Map::new();
+        self.each_metric(&mut |name, value| {
+            m.insert(name.into(), value.to_json());
+        });
+        m
+    }
     /// Feeds every part of the state that later steps depend on.
     fn hash_state(&self, h: &mut StateHasher);
     /// One code per lattice cell; see [`Layout::cells`].

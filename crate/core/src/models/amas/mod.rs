@@ -4,11 +4,11 @@
 
 use std::borrow::Cow;
 
-use serde_json::{json, Map, Value};
+use serde_json::{Map, Value};
 
 use crate::error::Result;
 use crate::hash::StateHasher;
-use crate::models::{self, Action, Agent, Event, Layout, Metrics, Model, ModelEntry, ModelSpec};
+use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, ModelSpec};
 use crate::rng::Rng;
 
 mod act;
@@ -211,41 +211,37 @@ impl Model for Amas {
         self.stage + 1 == self.stages.len() && self.vacant == 0 && self.to_remove == 0
     }
 
-    fn metrics(&self) -> Metrics {
-        let mut m = Map::new();
-        m.insert("steps".into(), self.steps.into());
-        m.insert(
-            "total_steps".into(),
-            (self.steps * self.robots.len() as u64).into(),
-        );
-        m.insert("collisions".into(), self.collisions.into());
-        m.insert("relays".into(), self.relays.into());
-        m.insert("corner_relays".into(), self.corner_relays.into());
-        m.insert("lower_bound".into(), self.lower_bound.into());
-        m.insert("path_bound".into(), self.path_bound.into());
-        m.insert("built".into(), json!(self.built_fraction()));
-        m.insert("placed".into(), self.placed.into());
-        m.insert("picked".into(), self.picked.into());
-        m.insert("dismantled".into(), self.dismantled.into());
-        m.insert("returned".into(), self.returned.into());
-        m.insert("removed".into(), self.removed.into());
-        m.insert("broken".into(), self.broken.into());
-        m.insert("stage".into(), (self.stage as u64 + 1).into());
+    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric)) {
+        let robots = self.robots.len();
+        f("steps", Metric::Count(self.steps));
+        f("total_steps", Metric::Count(self.steps * robots as u64));
+        f("collisions", Metric::Count(self.collisions));
+        f("relays", Metric::Count(self.relays));
+        f("corner_relays", Metric::Count(self.corner_relays));
+        f("lower_bound", Metric::Count(self.lower_bound));
+        f("path_bound", Metric::Count(self.path_bound));
+        f("built", Metric::Real(self.built_fraction()));
+        f("placed", Metric::Count(self.placed));
+        f("picked", Metric::Count(self.picked));
+        f("dismantled", Metric::Count(self.dismantled));
+        f("returned", Metric::Count(self.returned));
+        f("removed", Metric::Count(self.removed));
+        f("broken", Metric::Count(self.broken));
+        f("stage", Metric::Count(self.stage as u64 + 1));
         let below = self
             .robots
             .iter()
             .filter(|r| r.top > self.corner_row)
             .count();
-        m.insert(
-            "never_past_corner".into(),
-            json!(below as f64 / self.robots.len() as f64),
+        f(
+            "never_past_corner",
+            Metric::Real(below as f64 / robots as f64),
         );
         let assemblers = self.robots.iter().filter(|r| r.placed_past_corner).count();
-        m.insert(
-            "corner_assemblers".into(),
-            json!(assemblers as f64 / self.robots.len() as f64),
+        f(
+            "corner_assemblers",
+            Metric::Real(assemblers as f64 / robots as f64),
         );
-        m
     }
 
     fn hash_state(&self, h: &mut StateHasher) {

@@ -13,7 +13,7 @@ use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
 use crate::models::{
-    Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metrics, Model, ToolInfo,
+    Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
 
 /// Cell codes.
@@ -111,50 +111,45 @@ impl Model for Chobie {
         }
     }
 
-    fn metrics(&self) -> Metrics {
+    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric)) {
         let t = &self.totals;
         // Per transformation cycle (one step: election, command, move), moved or not.
         let per = |v: u64| match self.steps {
-            0 => Value::Null,
-            n => json!(v as f64 / n as f64),
+            0 => Metric::Missing,
+            n => Metric::Real(v as f64 / n as f64),
         };
         let overloads = self.stress.iter().filter(|&&s| self.overloaded(s)).count();
-        let mut m = Map::new();
-        m.insert("adaptations".into(), t.adaptations.into());
-        m.insert(
-            "beam_theory_stress".into(),
-            json!(self.beam_theory_stress() / 1e6),
+        f("adaptations", Metric::Count(t.adaptations));
+        f(
+            "beam_theory_stress",
+            Metric::Real(self.beam_theory_stress() / 1e6),
         );
-        m.insert("distance".into(), json!(self.distance()));
-        m.insert("election_failures".into(), t.election_failures.into());
-        m.insert("energy".into(), t.energy.into());
-        m.insert("leaders".into(), (self.last.leaders.len() as u64).into());
-        m.insert("max_peak_stress".into(), json!(self.worst / 1e6));
-        m.insert("messages".into(), t.messages.into());
-        m.insert(
-            "messages_per_robot".into(),
+        f("distance", Metric::Real(self.distance()));
+        f("election_failures", Metric::Count(t.election_failures));
+        f("energy", Metric::Count(t.energy));
+        f("leaders", Metric::Count(self.last.leaders.len() as u64));
+        f("max_peak_stress", Metric::Real(self.worst / 1e6));
+        f("messages", Metric::Count(t.messages));
+        f(
+            "messages_per_robot",
             match self.steps {
-                0 => Value::Null,
-                n => json!(t.messages as f64 / n as f64 / self.body.len() as f64),
+                0 => Metric::Missing,
+                n => Metric::Real(t.messages as f64 / n as f64 / self.body.len() as f64),
             },
         );
-        m.insert("messages_per_transformation".into(), per(t.messages));
-        m.insert("mode".into(), (self.mode as u8).into());
-        m.insert("overloads".into(), (overloads as u64).into());
-        m.insert("peak_stress".into(), json!(self.peak() / 1e6));
-        m.insert("refused".into(), t.refused.into());
-        m.insert("robots".into(), (self.body.len() as u64).into());
-        m.insert("slot_us".into(), json!(self.slot_us()));
-        m.insert("slots".into(), t.slots.into());
-        m.insert("slots_per_transformation".into(), per(t.slots));
-        m.insert("span".into(), self.span().into());
-        m.insert(
-            "stalled".into(),
-            (!self.last.moved && self.steps > 0).into(),
-        );
-        m.insert("threshold".into(), json!(self.p.mech.threshold / 1e6));
-        m.insert("transformations".into(), t.transformations.into());
-        m
+        f("messages_per_transformation", per(t.messages));
+        f("mode", Metric::Count(self.mode as u64));
+        f("overloads", Metric::Count(overloads as u64));
+        f("peak_stress", Metric::Real(self.peak() / 1e6));
+        f("refused", Metric::Count(t.refused));
+        f("robots", Metric::Count(self.body.len() as u64));
+        f("slot_us", Metric::Real(self.slot_us()));
+        f("slots", Metric::Count(t.slots));
+        f("slots_per_transformation", per(t.slots));
+        f("span", Metric::Count(self.span() as u64));
+        f("stalled", Metric::Flag(!self.last.moved && self.steps > 0));
+        f("threshold", Metric::Real(self.p.mech.threshold / 1e6));
+        f("transformations", Metric::Count(t.transformations));
     }
 
     fn hash_state(&self, h: &mut StateHasher) {

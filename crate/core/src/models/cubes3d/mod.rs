@@ -24,7 +24,7 @@ use crate::hash::StateHasher;
 use crate::limits::Limits;
 use crate::math;
 use crate::models::{
-    self, Action, Agent, Event, Layout, Metrics, Model, ModelEntry, ModelSpec, Scene,
+    self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, ModelSpec, Scene,
 };
 use crate::rng::Rng;
 
@@ -176,8 +176,8 @@ impl Model for Cubes {
         self.targets.len() == 1 && self.zero == self.units.len()
     }
 
-    fn metrics(&self) -> Metrics {
-        self.metric_map()
+    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric)) {
+        self.each_metric_value(f);
     }
 
     fn hash_state(&self, h: &mut StateHasher) {

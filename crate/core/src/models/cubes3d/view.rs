@@ -12,7 +12,7 @@ use super::typelist::TypeList;
 use super::types::{CODES, NAMES};
 use super::{Cubes, ARRIVED, HELD_LIT, HELD_USER, LEFT};
 use crate::lattice::LatticeKind;
-use crate::models::{FieldInfo, Layout, LegendEntry, Metrics, Scene, ToolInfo};
+use crate::models::{FieldInfo, Layout, LegendEntry, Metric, Scene, ToolInfo};
 
 /// Cell colours by connection type, code 1 (C1) to 9 (C6).
 const COLOURS: [&str; CODES] = [
@@ -108,36 +108,37 @@ impl Cubes {
         Cow::Owned(masks)
     }
 
-    pub(super) fn metric_map(&self) -> Metrics {
+    pub(super) fn each_metric_value(&self, f: &mut dyn FnMut(&'static str, Metric)) {
         let n = self.units.len();
-        let mut m = Map::new();
-        m.insert("steps".into(), self.steps.into());
-        m.insert("moves".into(), self.moves.into());
-        m.insert("units".into(), n.into());
-        m.insert(
-            "mean_difference".into(),
-            json!(self.total_difference() / n as f64),
+        f("steps", Metric::Count(self.steps));
+        f("moves", Metric::Count(self.moves));
+        f("units", Metric::Count(n as u64));
+        f(
+            "mean_difference",
+            Metric::Real(self.total_difference() / n as f64),
         );
-        m.insert("matched".into(), json!(self.zero as f64 / n as f64));
-        m.insert("completed".into(), u64::from(self.zero == n).into());
-        m.insert("movable".into(), self.movable.len().into());
-        m.insert("connectivity_checks".into(), self.scratch.checks.into());
-        m.insert("connectivity_searches".into(), self.scratch.searches.into());
-        m.insert(
-            "connectivity_search_cells".into(),
-            self.scratch.search_cells.into(),
+        f("matched", Metric::Real(self.zero as f64 / n as f64));
+        f("completed", Metric::Count(u64::from(self.zero == n)));
+        f("movable", Metric::Count(self.movable.len() as u64));
+        f("connectivity_checks", Metric::Count(self.scratch.checks));
+        f(
+            "connectivity_searches",
+            Metric::Count(self.scratch.searches),
+        );
+        f(
+            "connectivity_search_cells",
+            Metric::Count(self.scratch.search_cells),
         );
         if self.targets.len() > 1 {
-            m.insert("target".into(), self.main_target().into());
-            m.insert("switches".into(), self.switches.into());
+            f("target", Metric::Count(self.main_target() as u64));
+            f("switches", Metric::Count(self.switches));
         }
         if self.light.is_some() {
-            m.insert(
-                "displacement".into(),
-                json!(self.light_position() - self.start_light),
+            f(
+                "displacement",
+                Metric::Real(self.light_position() - self.start_light),
             );
         }
-        m
     }
 
     pub(super) fn field_values(&self, name: &str) -> Option<Cow<'_, [f32]>> {

@@ -25,7 +25,7 @@ use crate::hash::StateHasher;
 use crate::lattice::{Hex, Lattice, LatticeKind};
 use crate::math;
 use crate::models::{
-    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metrics, Model, ModelEntry,
+    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry,
     ModelSpec, ToolInfo,
 };
 use crate::rng::Rng;
@@ -245,30 +245,28 @@ impl Model for Fracta {
         !self.working.is_empty() && self.pending == 0 && self.zero == self.working.len()
     }
 
-    fn metrics(&self) -> Metrics {
-        let mut m = Map::new();
-        m.insert("completed".into(), self.completed().into());
-        m.insert("steps".into(), self.steps.into());
-        m.insert("mean_difference".into(), json!(self.mean_difference()));
-        m.insert("moves".into(), self.moves.into());
-        m.insert("conflicts".into(), self.conflicts.into());
-        m.insert("irritations".into(), self.irritations.into());
-        m.insert("units".into(), (self.working.len() as u64).into());
-        m.insert("faults".into(), self.faults.into());
-        m.insert("cut_off".into(), self.cut_off.into());
-        m.insert("stranded".into(), self.stranded.into());
-        m.insert("holes".into(), self.holes().into());
-        // Null until the goal is reached: from the start when there was no fault, from the
+    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric)) {
+        f("completed", Metric::Flag(self.completed()));
+        f("steps", Metric::Count(self.steps));
+        f("mean_difference", Metric::Real(self.mean_difference()));
+        f("moves", Metric::Count(self.moves));
+        f("conflicts", Metric::Count(self.conflicts));
+        f("irritations", Metric::Count(self.irritations));
+        f("units", Metric::Count(self.working.len() as u64));
+        f("faults", Metric::Count(self.faults));
+        f("cut_off", Metric::Count(self.cut_off));
+        f("stranded", Metric::Count(self.stranded));
+        f("holes", Metric::Count(self.holes()));
+        // Missing until the goal is reached: from the start when there was no fault, from the
         // last fault when there was one.
         let done = self.completed();
         let (convergence, repair) = match self.last_fault {
-            None if done => (Value::from(self.steps), Value::Null),
-            Some(at) if done => (Value::Null, Value::from(self.steps - at)),
-            _ => (Value::Null, Value::Null),
+            None if done => (Metric::Count(self.steps), Metric::Missing),
+            Some(at) if done => (Metric::Missing, Metric::Count(self.steps - at)),
+            _ => (Metric::Missing, Metric::Missing),
         };
-        m.insert("convergence_steps".into(), convergence);
-        m.insert("repair_steps".into(), repair);
-        m
+        f("convergence_steps", convergence);
+        f("repair_steps", repair);
     }
 
     fn hash_state(&self, h: &mut StateHasher) {

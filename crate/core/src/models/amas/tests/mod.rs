@@ -7,6 +7,7 @@ use super::*;
 use crate::run::Run;
 use crate::scenario::Scenario;
 use proptest::prelude::*;
+use serde_json::json;
 
 impl Amas {
     /// The model of a test scenario, built the way a run builds it.
