@@ -1,6 +1,6 @@
 // Kumiki's page: wires the simulation worker, the session, the lattice view and the panels
 // (web/panels/) together, and opens the first scenario.
-import { type Page, setupInspector, setupKeys, setupRunPanel, setupScenarioPanel, setupSharePanel, TABS } from './panels/index';
+import { type LoadOptions, type Page, setupInspector, setupKeys, setupRunPanel, setupScenarioPanel, setupSharePanel, TABS } from './panels/index';
 import { View } from './render/view';
 import { Session } from './session';
 import { SimClient } from './sim/client';
@@ -155,7 +155,7 @@ const large = new LargeOpening(() => {
 // ---- opening a scenario -----------------------------------------------------------------------
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
-function load(json: string, { record = true, quiet = false } = {}): boolean {
+function load(json: string, { record = true, quiet = false, onProblem }: LoadOptions = {}): boolean {
   const opened = (normal: string) => {
     if (record) session.remember(session.scenario, normal);
     share.leaveLink();
@@ -168,7 +168,8 @@ function load(json: string, { record = true, quiet = false } = {}): boolean {
   try {
     normal = core.normalize(json);
   } catch (e) {
-    if (!quiet) banner.report(`This scenario cannot run: ${core.message(e)}`);
+    if (onProblem) onProblem(core.message(e));
+    else if (!quiet) banner.report(`This scenario cannot run: ${core.message(e)}`);
     return false;
   }
   if (record) session.remember(session.scenario, normal);
@@ -271,11 +272,13 @@ async function start() {
       {
         load: (payload) => {
           try {
-            const json = core.unpackLink(payload).scenario;
-            if (load(json, { quiet: true })) return null;
-            // Only a scenario small enough to check here fails at once: say why.
-            core.normalize(json);
-            return 'This scenario cannot run.';
+            let problem: string | null = null;
+            load(core.unpackLink(payload).scenario, {
+              onProblem: (message) => {
+                problem = message;
+              },
+            });
+            return problem;
           } catch (e) {
             return core.message(e);
           }

@@ -56,9 +56,8 @@ export class Session {
 
   /** The run changed its scenario (a clicked disturbance): undo brings back the one before. */
   recorded(json: string) {
-    if (this.scenario && json !== this.scenario) this.history.push(this.scenario);
+    this.remember(this.scenario, json);
     this.scenario = json;
-    this.emit('history', null);
     this.emit('recorded', json);
   }
 

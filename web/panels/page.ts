@@ -11,6 +11,8 @@ export interface LoadOptions {
   record?: boolean;
   /** A scenario that cannot run is refused without a message (default false). */
   quiet?: boolean;
+  /** Told why a scenario cannot run, instead of the banner (an editor shows it beside itself). */
+  onProblem?: (message: string) => void;
 }
 
 export interface Page {

@@ -26,8 +26,6 @@ export interface RunPanel {
   chartedMetric(): string;
   /** Draws the chart again (its size may have changed with the tab). */
   renderChart(): void;
-  /** Shows how many disturbances the scenario carries, with a way to clear them. */
-  renderDisturbanceNote(): void;
 }
 
 export function setupRunPanel(page: Page): RunPanel {
@@ -255,6 +253,7 @@ export function setupRunPanel(page: Page): RunPanel {
     return out;
   }
 
+  /** Shows how many disturbances the scenario carries, with a way to clear them. */
   function renderDisturbanceNote() {
     const tools = byId('tools');
     tools.parentElement?.querySelector('.recorded')?.remove();
@@ -295,6 +294,5 @@ export function setupRunPanel(page: Page): RunPanel {
     reset,
     chartedMetric: () => chartSelect.value,
     renderChart: () => chart.render(),
-    renderDisturbanceNote,
   };
 }

@@ -182,17 +182,22 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     editor?.update(doc);
   }
 
-  byId('apply-json').addEventListener('click', () => {
-    try {
-      core.normalize(jsonEditor.value);
-    } catch (e) {
-      jsonError.textContent = core.message(e);
-      return;
-    }
+  /** Opens the editor's text; false, with the reason beside the editor, when it cannot run. */
+  function loadEdited(text: string, source = ''): boolean {
+    // Cleared first: the editor shows the opened scenario only when it holds no unsaved edit.
+    const wasDirty = jsonDirty;
     jsonDirty = false;
     jsonError.textContent = '';
-    page.load(jsonEditor.value);
-  });
+    const opened = page.load(text, {
+      onProblem: (message) => {
+        jsonError.textContent = `${source}${message}`;
+      },
+    });
+    if (!opened) jsonDirty = wasDirty;
+    return opened;
+  }
+
+  byId('apply-json').addEventListener('click', () => loadEdited(jsonEditor.value));
   byId('download-json').addEventListener('click', () => {
     const name = (session.doc().name as string | undefined) || 'scenario';
     download(`${name}.json`, `${session.scenario}\n`, 'application/json');
@@ -205,14 +210,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     jsonDirty = true;
     const details = jsonEditor.closest('details');
     if (details) details.open = true;
-    try {
-      core.normalize(text);
-      jsonDirty = false;
-      jsonError.textContent = '';
-      page.load(text);
-    } catch (err) {
-      jsonError.textContent = `${file.name}: ${core.message(err)}`;
-    }
+    loadEdited(text, `${file.name}: `);
     (e.target as HTMLInputElement).value = '';
   });
 

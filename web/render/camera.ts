@@ -21,7 +21,7 @@ export function multiply(a: Mat4, b: Mat4): Mat4 {
 }
 
 /** What gestures steer: both cameras pan by screen pixels and zoom about a screen point. */
-export interface ViewCamera {
+interface ViewCamera {
   width: number;
   height: number;
   pan(dx: number, dy: number): void;
@@ -254,7 +254,7 @@ export class Camera3D implements ViewCamera {
 export type Camera = Camera2D | Camera3D;
 
 /** Moves a camera by a drag: an orbit drag turns a 3-D camera; a planar one pans on either kind. */
-export function dragCamera(camera: Camera, dx: number, dy: number, kind: DragKind) {
+function dragCamera(camera: Camera, dx: number, dy: number, kind: DragKind) {
   if (kind === 'orbit' && camera.kind === '3d') camera.orbit(dx, dy);
   else camera.pan(dx, dy);
 }

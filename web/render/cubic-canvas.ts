@@ -3,7 +3,8 @@
 // shared faces are hidden, so bonds are implied); the ghost, reachable cells and the add cursor are
 // translucent cubes; the plane is clipped at the eye so close-ups stay correct.
 import type { Camera3D } from './camera';
-import { CubicBuilder, type CubicModel, type RenderStats, type V3, coordOf, statsOf } from './cubic-scene';
+import { CubicBuilder, type CubicModel, type RenderStats, type V3, statsOf } from './cubic-scene';
+import { coordOf } from './geometry';
 import { css, parseColor, type RGBA } from './palette';
 import type { Scene } from './renderer';
 

@@ -4,7 +4,8 @@
 // and an editing cursor in depth. Instance buffers are rebuilt only when the frame or the marks
 // change, so orbiting a large structure costs one draw call per kind of thing.
 import { multiply, type Camera3D } from './camera';
-import { CubicBuilder, type CubicModel, type RenderStats, type V3, coordOf, statsOf } from './cubic-scene';
+import { CubicBuilder, type CubicModel, type RenderStats, type V3, statsOf } from './cubic-scene';
+import { coordOf } from './geometry';
 import { type Program, link } from './gl';
 import { parseColor } from './palette';
 import type { Scene } from './renderer';

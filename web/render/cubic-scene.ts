@@ -3,6 +3,7 @@
 // not already occupied, the plane under the structure with the units' shadows on it, the lamp of a
 // light source, and the marks (hover, selection, reachable cells, an editing cursor).
 import type { Layout } from '../types';
+import { coordOf } from './geometry';
 import { heatTable, legendTable } from './palette';
 import type { Scene } from './renderer';
 
@@ -48,11 +49,6 @@ export interface RenderStats {
 const HOVER_LIFT = 0.35;
 /** A unit marked for removal: tinted red. */
 const REMOVE_TINT: V3 = [235, 80, 70];
-
-export function coordOf(dims: V3 | [number, number, number], i: number): V3 {
-  const [w, h] = dims;
-  return [i % w, Math.floor(i / w) % h, Math.floor(i / (w * h))];
-}
 
 /** Caches the legend and heat tables per layout and the model per frame, marks and options. */
 export class CubicBuilder {

@@ -68,7 +68,7 @@ export interface GestureOptions {
   longPressSlop: number;
 }
 
-export const DEFAULT_GESTURES: GestureOptions = { tapSlop: 6, dragSlop: 0, longPressMs: 550, longPressSlop: 8 };
+const DEFAULT_GESTURES: GestureOptions = { tapSlop: 6, dragSlop: 0, longPressMs: 550, longPressSlop: 8 };
 
 /** Movement a pinch step counts towards the tap slop: any pinch is a gesture, never a tap. */
 const PINCH_MOVE = 10;
@@ -79,7 +79,7 @@ export interface Timer {
 }
 
 /** Zoom factor of one wheel event: lines (Firefox) step further than pixels. */
-export function wheelFactor(deltaY: number, deltaMode: number): number {
+function wheelFactor(deltaY: number, deltaMode: number): number {
   return Math.exp(-deltaY * (deltaMode === 1 ? 0.05 : 0.0015));
 }
 

@@ -172,10 +172,7 @@ export class View {
    * of when the browser last presented the canvas.
    */
   captureFrame(): Promise<ImageBitmap> {
-    if (!(this.renderer && this.layout && this.frame)) return Promise.reject(new Error('nothing is drawn yet'));
-    const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
-    this.renderer.draw(scene);
-    annotate(this.annotations, this.dpr, scene, this.marks);
+    if (!this.drawScene()) return Promise.reject(new Error('nothing is drawn yet'));
     const out = new OffscreenCanvas(this.canvas.width, this.canvas.height);
     const ctx = out.getContext('2d')!;
     ctx.drawImage(this.canvas, 0, 0);
@@ -183,12 +180,17 @@ export class View {
     return Promise.resolve(out.transferToImageBitmap());
   }
 
+  /** Draws the lattice and its annotations as they stand; false when there is nothing to draw. */
+  private drawScene(): boolean {
+    if (!(this.renderer && this.layout && this.frame)) return false;
+    const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
+    this.renderer.draw(scene);
+    annotate(this.annotations, this.dpr, scene, this.marks);
+    return true;
+  }
+
   private draw() {
-    if (this.renderer && this.layout && this.frame) {
-      const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
-      this.renderer.draw(scene);
-      annotate(this.annotations, this.dpr, scene, this.marks);
-    }
+    this.drawScene();
     if (this.pendingFrame) {
       this.pendingFrame = false;
       this.on.drawn();

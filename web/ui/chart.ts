@@ -47,11 +47,13 @@ export class MetricChart {
     d.metric = this.label;
     d.points = String(b?.steps.length ?? 0);
     d.span = String(b?.span ?? 1);
-    const finite = (xs: Float64Array | undefined) => [...(xs ?? [])].filter(Number.isFinite);
-    const lows = finite(b?.min);
-    const highs = finite(b?.max);
-    d.min = lows.length ? String(Math.min(...lows)) : '';
-    d.max = highs.length ? String(Math.max(...highs)) : '';
+    // Every frame brings a band: one pass over it, no copies.
+    let low = Number.POSITIVE_INFINITY;
+    let high = Number.NEGATIVE_INFINITY;
+    for (const v of b?.min ?? []) if (Number.isFinite(v) && v < low) low = v;
+    for (const v of b?.max ?? []) if (Number.isFinite(v) && v > high) high = v;
+    d.min = Number.isFinite(low) ? String(low) : '';
+    d.max = Number.isFinite(high) ? String(high) : '';
   }
 
   render() {

@@ -3,7 +3,7 @@
 // Space applies the selected tool there, through the same path as a pointer click, and Escape
 // (or C again) hides it. While the cursor is hidden the arrows keep their meaning (step, step
 // back), and Shift/Alt+arrows still turn and pan the view.
-import { is3d } from '../render/geometry';
+import { coordOf, is3d } from '../render/geometry';
 import type { Layout } from '../types';
 
 export interface CursorHooks {
@@ -76,9 +76,8 @@ export class KeyCursor {
     const move = MOVES[key];
     if (!move || (move[2] !== 0 && !is3d(layout))) return false;
     const [w, h, d] = layout.dims;
-    const x = (this.cell % w) + move[0];
-    const y = (Math.floor(this.cell / w) % h) + move[1];
-    const z = Math.floor(this.cell / (w * h)) + move[2];
+    const [cx, cy, cz] = coordOf(layout.dims, this.cell);
+    const [x, y, z] = [cx + move[0], cy + move[1], cz + move[2]];
     // At an edge the cursor stays, and says so again.
     if (x >= 0 && y >= 0 && z >= 0 && x < w && y < h && z < Math.max(1, d)) this.place((z * h + y) * w + x);
     this.hooks.announce(this.cell);

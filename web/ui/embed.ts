@@ -21,9 +21,9 @@ export type EmbedCommand =
 /** Largest `count` a `step` command may ask for at once. */
 export const MAX_STEP = 1_000_000;
 /** Longest link a `load` command may carry (the page's own link limit is far below). */
-export const MAX_LINK = 1 << 20;
+const MAX_LINK = 1 << 20;
 /** `step` events are sent at most this often while the run plays. */
-export const STEP_EVENT_MS = 250;
+const STEP_EVENT_MS = 250;
 
 /**
  * A command from the host, or null when the message is not one: wrong envelope, unknown type,

@@ -12,9 +12,9 @@ import * as core from '../wasm';
  * cell natively and about twice that in wasm: 2^18 cells stay well under 0.1 s on the main thread
  * of a busy machine; the largest (2048 × 2048, 16 times more) take seconds.
  */
-export const LARGE_CELLS = 1 << 18;
+const LARGE_CELLS = 1 << 18;
 
-export const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
+const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
 
 /** One dotted-path change: validated at once for a small scenario, by the worker for a large one. */
 export function change(json: string, path: string, valueJson: string): string {
