@@ -23,12 +23,7 @@ pub fn json(name: &str) -> Result<&'static str> {
 }
 
 pub fn scenario(name: &str) -> Result<Scenario> {
-    Scenario::from_json(json(name)?).map_err(|e| match e {
-        Error::Field { path, reason } => {
-            Error::field(path, format!("{reason} (in lesson '{name}')"))
-        }
-        other => other,
-    })
+    crate::presets::scenario_in(LESSON_FILES, "lesson", name)
 }
 
 /// What a list of lessons shows of one.

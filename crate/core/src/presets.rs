@@ -17,9 +17,18 @@ pub fn json(name: &str) -> Result<&'static str> {
 }
 
 pub fn scenario(name: &str) -> Result<Scenario> {
-    Scenario::from_json(json(name)?).map_err(|e| match e {
+    scenario_in(PRESET_FILES, "preset", name)
+}
+
+/// The scenario `name` of `table` (presets or lessons), its errors naming which `kind` it is.
+pub(crate) fn scenario_in(
+    table: &'static [(&str, &str)],
+    kind: &'static str,
+    name: &str,
+) -> Result<Scenario> {
+    Scenario::from_json(lookup(table, kind, name)?).map_err(|e| match e {
         Error::Field { path, reason } => {
-            Error::field(path, format!("{reason} (in preset '{name}')"))
+            Error::field(path, format!("{reason} (in {kind} '{name}')"))
         }
         other => other,
     })

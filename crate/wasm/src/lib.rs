@@ -396,11 +396,9 @@ impl Sim {
                     self.keyframe_cost.copying += self.keyframe_cost.now() - t;
                 }
             }
-            // Steps passed through again after going back are already recorded: skip their metrics.
-            let step = self.run.steps();
-            if self.series.last_step().is_none_or(|last| step > last) {
-                self.series.record_model(step, self.run.model());
-            }
+            // Steps passed through again after going back are already recorded: the series
+            // skips them before reading a metric.
+            self.series.record_model(self.run.steps(), self.run.model());
             taken += 1;
         }
         self.keyframe_cost.total += self.keyframe_cost.now() - start;

@@ -57,14 +57,6 @@ fn findings(r: &Results) -> Vec<Finding> {
 /// The depth the breadth-first search of the fewest repair motions goes to.
 const SEARCH_LIMIT: usize = 6;
 
-/// The fewest motions that repair a fault on `unit`, or "more than" the search's depth.
-fn fewest(unit: u64) -> String {
-    match search::fewest_repair_motions(unit, SEARCH_LIMIT) {
-        Some(n) => n.to_string(),
-        None => format!("more than {SEARCH_LIMIT}"),
-    }
-}
-
 /// Steps after a cut-off within which [`start`] looks for the first motion.
 const FIRST_MOTION_LIMIT: u64 = 200;
 
@@ -243,14 +235,24 @@ fn assembly(r: &Results) -> Vec<Finding> {
 
 fn repair(r: &Results) -> Vec<Finding> {
     const EXP: &str = "fracta-repair";
+    // Per position: the fewest motions that repair it and how its repair begins. Both run the
+    // model (a search, a simulation), so each is worked out once for the rows and the summary.
+    let analysed: Vec<(Option<usize>, (String, Begins))> = FAULTS
+        .iter()
+        .map(|&(unit, _)| {
+            (
+                search::fewest_repair_motions(unit, SEARCH_LIMIT),
+                start(unit),
+            )
+        })
+        .collect();
     let mut out = Vec::new();
-    for (unit, role) in FAULTS {
+    for ((unit, role), (fewest, (begins, _))) in FAULTS.into_iter().zip(&analysed) {
         let filter: [(&str, Value); 1] = [("disturbances.0.unit", json!(unit))];
         let done = r.values(EXP, &filter, "completed");
         let s = r.stats(EXP, &filter, "repair_steps");
         let moves = r.stats(EXP, &filter, "moves");
         let all = !done.is_empty() && done.iter().all(|&v| v > 0.0);
-        let (begins, _) = start(unit);
         out.push(Finding {
             section: "§4, fig. 6".into(),
             claim: format!(
@@ -262,7 +264,7 @@ fn repair(r: &Results) -> Vec<Finding> {
                 ratio(&done),
                 s.describe(1),
                 fmt(moves.mean, 1),
-                fewest(unit)
+                fewest.map_or(format!("more than {SEARCH_LIMIT}"), |n| n.to_string())
             ),
             runs: done.len(),
             verdict: Verdict::from(all),
@@ -280,14 +282,13 @@ fn repair(r: &Results) -> Vec<Finding> {
     let s = r.stats(EXP, &[], "repair_steps");
     let moves = r.stats(EXP, &[], "moves");
     let done = r.values(EXP, &[], "completed");
-    let needed: Vec<f64> = FAULTS
+    let needed: Vec<f64> = analysed
         .iter()
-        .filter_map(|&(unit, _)| search::fewest_repair_motions(unit, SEARCH_LIMIT))
-        .map(|n| n as f64)
+        .filter_map(|(fewest, _)| fewest.map(|n| n as f64))
         .collect();
     let (mut held, mut none) = (Vec::new(), Vec::new());
-    for &(unit, _) in &FAULTS {
-        match start(unit).1 {
+    for (&(unit, _), (_, (_, begins))) in FAULTS.iter().zip(&analysed) {
+        match *begins {
             Begins::HeldBack(wait) => held.push(format!("a fault on unit {unit} ({wait} steps)")),
             Begins::NoBetterMotion(wait) => {
                 none.push(format!("a fault on unit {unit} ({wait} steps)"))

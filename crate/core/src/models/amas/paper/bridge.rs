@@ -3,30 +3,14 @@
 use super::*;
 
 pub(super) fn bridge_findings(r: &Results, out: &mut Vec<Finding>) {
-    let single = r.stats(
-        "amas-bridge",
-        &[("scenario", json!("amas-bridge-single"))],
-        "steps",
-    );
-    let staged = r.stats(
-        "amas-bridge",
-        &[("scenario", json!("amas-bridge-staged"))],
-        "steps",
-    );
-    let picked = r.stats(
-        "amas-bridge",
-        &[("scenario", json!("amas-bridge-staged"))],
-        "picked",
-    );
-    let dismantled = r.stats(
-        "amas-bridge",
-        &[("scenario", json!("amas-bridge-staged"))],
-        "dismantled",
-    );
-    let relays = |scenario: &str| {
-        r.stats("amas-bridge", &[("scenario", json!(scenario))], "relays")
-            .mean
+    let stat = |scenario: &str, metric: &str| {
+        r.stats("amas-bridge", &[("scenario", json!(scenario))], metric)
     };
+    let single = stat("amas-bridge-single", "steps");
+    let staged = stat("amas-bridge-staged", "steps");
+    let picked = stat("amas-bridge-staged", "picked");
+    let dismantled = stat("amas-bridge-staged", "dismantled");
+    let relays = |scenario: &str| stat(scenario, "relays").mean;
     out.push(Finding::new(
         "§6.4, fig. 33",
         "The 35×15 bridge, five robots, discrete field with module relay, ten trials: assembly \
