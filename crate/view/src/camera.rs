@@ -1,0 +1,585 @@
+//! Cameras: pan and zoom for the planar lattices, an orbit camera for the cubic one, with the
+//! matrices WebGL needs, projection for Canvas 2D and annotations, and picking by ray.
+
+use crate::geometry::{Bounds, Grid};
+use kumiki_core::lattice::LatticeKind;
+
+pub type V3 = [f64; 3];
+/// A column-major 4×4 matrix, as WebGL takes it.
+pub type Mat4 = [f32; 16];
+
+/// The planar camera: the world point at the view's centre and pixels per world unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera2D {
+    pub cx: f64,
+    pub cy: f64,
+    pub scale: f64,
+    pub width: f64,
+    pub height: f64,
+}
+
+impl Default for Camera2D {
+    fn default() -> Self {
+        Camera2D {
+            cx: 0.0,
+            cy: 0.0,
+            scale: 10.0,
+            width: 1.0,
+            height: 1.0,
+        }
+    }
+}
+
+impl Camera2D {
+    pub fn fit(&mut self, b: Bounds) {
+        let bw = (b.x1 - b.x0).max(1e-6);
+        let bh = (b.y1 - b.y0).max(1e-6);
+        self.scale = ((self.width / bw).min(self.height / bh) * 0.94).max(0.05);
+        self.cx = (b.x0 + b.x1) / 2.0;
+        self.cy = (b.y0 + b.y1) / 2.0;
+    }
+
+    pub fn to_screen(&self, wx: f64, wy: f64) -> [f64; 2] {
+        [
+            (wx - self.cx) * self.scale + self.width / 2.0,
+            (wy - self.cy) * self.scale + self.height / 2.0,
+        ]
+    }
+
+    pub fn to_world(&self, sx: f64, sy: f64) -> [f64; 2] {
+        [
+            (sx - self.width / 2.0) / self.scale + self.cx,
+            (sy - self.height / 2.0) / self.scale + self.cy,
+        ]
+    }
+
+    pub fn pan(&mut self, dx: f64, dy: f64) {
+        self.cx -= dx / self.scale;
+        self.cy -= dy / self.scale;
+    }
+
+    /// Zooms by `factor`, keeping the world point under (sx, sy) where it is on screen.
+    pub fn zoom(&mut self, factor: f64, sx: f64, sy: f64) {
+        let [wx, wy] = self.to_world(sx, sy);
+        self.scale = (self.scale * factor).clamp(0.02, 400.0);
+        let [nx, ny] = self.to_world(sx, sy);
+        self.cx += wx - nx;
+        self.cy += wy - ny;
+    }
+
+    /// The world rectangle in view.
+    pub fn visible(&self) -> Bounds {
+        let [x0, y0] = self.to_world(0.0, 0.0);
+        let [x1, y1] = self.to_world(self.width, self.height);
+        Bounds { x0, y0, x1, y1 }
+    }
+
+    /// The cell under a screen point.
+    pub fn pick(&self, grid: &Grid, sx: f64, sy: f64) -> Option<usize> {
+        let [wx, wy] = self.to_world(sx, sy);
+        grid.cell_at(wx, wy)
+    }
+
+    /// The range of planar cells (x0..=x1, y0..=y1) that can be on screen, one cell wider all
+    /// round, or `None` when none can.
+    pub fn visible_cells(&self, grid: &Grid) -> Option<[u32; 4]> {
+        let v = self.visible();
+        let row = if grid.kind == LatticeKind::Hex {
+            crate::geometry::HEX_ROW
+        } else {
+            1.0
+        };
+        let [w, h, _] = grid.dims.map(f64::from);
+        let x0 = (v.x0.floor() - 1.0).max(0.0);
+        let x1 = v.x1.ceil().min(w - 1.0);
+        let y0 = ((v.y0 / row).floor() - 1.0).max(0.0);
+        let y1 = (v.y1 / row).ceil().min(h - 1.0);
+        (x1 >= x0 && y1 >= y0).then(|| [x0 as u32, x1 as u32, y0 as u32, y1 as u32])
+    }
+}
+
+/// A 3-D pick: the occupied cell hit, and the empty cell in front of the face hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Hit {
+    pub cell: u32,
+    /// The empty cell in front of the hit face, or -1 when that is off the lattice.
+    pub front: i64,
+}
+
+/// The orbit camera: it looks at `target` from `distance` away, turned by `yaw` about the
+/// vertical (z) axis and raised by `pitch`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera3D {
+    pub target: V3,
+    pub yaw: f64,
+    pub pitch: f64,
+    pub distance: f64,
+    pub fov: f64,
+    pub width: f64,
+    pub height: f64,
+}
+
+const YAW: f64 = std::f64::consts::FRAC_PI_4;
+const PITCH: f64 = 0.6;
+
+impl Default for Camera3D {
+    fn default() -> Self {
+        Camera3D {
+            target: [0.0; 3],
+            yaw: YAW,
+            pitch: PITCH,
+            distance: 20.0,
+            fov: std::f64::consts::FRAC_PI_4,
+            width: 1.0,
+            height: 1.0,
+        }
+    }
+}
+
+/// The eye and the camera's forward, right and up directions.
+struct Basis {
+    eye: V3,
+    f: V3,
+    right: V3,
+    up: V3,
+}
+
+impl Camera3D {
+    /// Frames the whole lattice.
+    pub fn fit(&mut self, dims: [u32; 3]) {
+        let [w, h, d] = dims.map(f64::from);
+        self.target = [w / 2.0, h / 2.0, d / 3.0];
+        let radius = (w * w + h * h + d * d).sqrt() / 2.0;
+        self.distance = radius / (self.fov / 2.0).sin() * 0.9;
+    }
+
+    /// Looks at the centre of a world box from the current direction, close enough to fill the
+    /// view.
+    pub fn fit_box(&mut self, min: V3, max: V3, margin: f64) {
+        self.target = std::array::from_fn(|a| (min[a] + max[a]) / 2.0);
+        let diag = std::array::from_fn::<f64, 3, _>(|a| max[a] - min[a]);
+        let radius = (norm(diag) / 2.0).max(0.75);
+        let aspect = self.width / self.height.max(1.0);
+        let half = (self.fov / 2.0).min(((self.fov / 2.0).tan() * aspect).atan());
+        self.distance = (radius / half.sin() * margin).clamp(1.5, 2000.0);
+    }
+
+    /// Back to the default viewing direction.
+    pub fn reset_orientation(&mut self) {
+        self.yaw = YAW;
+        self.pitch = PITCH;
+    }
+
+    pub fn eye(&self) -> V3 {
+        let cp = self.pitch.cos();
+        [
+            self.target[0] + self.distance * cp * self.yaw.cos(),
+            self.target[1] + self.distance * cp * self.yaw.sin(),
+            self.target[2] + self.distance * self.pitch.sin(),
+        ]
+    }
+
+    pub fn orbit(&mut self, dx: f64, dy: f64) {
+        self.yaw -= dx * 0.008;
+        self.pitch = (self.pitch + dy * 0.008).clamp(-1.5, 1.5);
+    }
+
+    pub fn pan(&mut self, dx: f64, dy: f64) {
+        let b = self.basis();
+        let k = self.distance * (self.fov / 2.0).tan() * 2.0 / self.height;
+        for i in 0..3 {
+            self.target[i] += (-dx * b.right[i] + dy * b.up[i]) * k;
+        }
+    }
+
+    /// Moves toward the target (factor above 1) or away: a dolly, so no screen point is kept.
+    pub fn zoom(&mut self, factor: f64) {
+        self.distance = (self.distance / factor).clamp(1.5, 2000.0);
+    }
+
+    fn basis(&self) -> Basis {
+        let eye = self.eye();
+        let f = normalize(sub(self.target, eye));
+        let right = normalize(cross(f, [0.0, 0.0, 1.0]));
+        let up = cross(right, f);
+        Basis { eye, f, right, up }
+    }
+
+    /// The unit vector from the target toward the eye.
+    pub fn toward_eye(&self) -> V3 {
+        let f = self.basis().f;
+        [-f[0], -f[1], -f[2]]
+    }
+
+    /// Screen position (CSS pixels) and eye distance of a world point, or `None` behind the eye.
+    pub fn project(&self, p: V3) -> Option<[f64; 3]> {
+        let b = self.basis();
+        let d = sub(p, b.eye);
+        let depth = dot(d, b.f);
+        if depth <= 1e-6 {
+            return None;
+        }
+        let t = (self.fov / 2.0).tan();
+        let aspect = self.width / self.height.max(1.0);
+        let nx = dot(d, b.right) / (depth * t * aspect);
+        let ny = dot(d, b.up) / (depth * t);
+        Some([
+            (nx + 1.0) / 2.0 * self.width,
+            (1.0 - ny) / 2.0 * self.height,
+            depth,
+        ])
+    }
+
+    /// The world-to-eye transform.
+    pub fn view(&self) -> Mat4 {
+        let Basis { eye, f, right, up } = self.basis();
+        let mut m = [0f32; 16];
+        for a in 0..3 {
+            m[4 * a] = right[a] as f32;
+            m[4 * a + 1] = up[a] as f32;
+            m[4 * a + 2] = -f[a] as f32;
+        }
+        m[12] = -dot(right, eye) as f32;
+        m[13] = -dot(up, eye) as f32;
+        m[14] = dot(f, eye) as f32;
+        m[15] = 1.0;
+        m
+    }
+
+    /// The perspective projection; near and far follow the distance.
+    pub fn projection(&self) -> Mat4 {
+        let near = (self.distance / 200.0).max(0.05);
+        let far = self.distance * 20.0 + 100.0;
+        let t = 1.0 / (self.fov / 2.0).tan();
+        let aspect = self.width / self.height.max(1.0);
+        let mut m = [0f32; 16];
+        m[0] = (t / aspect) as f32;
+        m[5] = t as f32;
+        m[10] = ((far + near) / (near - far)) as f32;
+        m[11] = -1.0;
+        m[14] = (2.0 * far * near / (near - far)) as f32;
+        m
+    }
+
+    /// Projection times view.
+    pub fn view_projection(&self) -> Mat4 {
+        multiply(&self.projection(), &self.view())
+    }
+
+    /// The ray through a screen point: the eye and a unit direction.
+    pub fn ray(&self, sx: f64, sy: f64) -> (V3, V3) {
+        let b = self.basis();
+        let t = (self.fov / 2.0).tan();
+        let aspect = self.width / self.height.max(1.0);
+        let nx = (2.0 * sx / self.width - 1.0) * t * aspect;
+        let ny = (1.0 - 2.0 * sy / self.height) * t;
+        let dir = normalize(std::array::from_fn(|a| {
+            b.f[a] + nx * b.right[a] + ny * b.up[a]
+        }));
+        (b.eye, dir)
+    }
+
+    /// Where the ray through a screen point meets the horizontal plane at height z.
+    pub fn hit_plane_z(&self, sx: f64, sy: f64, z: f64) -> Option<[f64; 2]> {
+        let (o, d) = self.ray(sx, sy);
+        if d[2].abs() < 1e-9 {
+            return None;
+        }
+        let t = (z - o[2]) / d[2];
+        (t > 0.0).then(|| [o[0] + d[0] * t, o[1] + d[1] * t])
+    }
+
+    /// The first occupied cell along the ray through (sx, sy), walking the voxel grid.
+    pub fn pick(
+        &self,
+        dims: [u32; 3],
+        occupied: impl Fn(usize) -> bool,
+        sx: f64,
+        sy: f64,
+    ) -> Option<Hit> {
+        let (origin, dir) = self.ray(sx, sy);
+        let size = dims.map(f64::from);
+        let (mut tmin, mut tmax) = (0.0f64, f64::INFINITY);
+        for a in 0..3 {
+            if dir[a].abs() < 1e-12 {
+                if origin[a] < 0.0 || origin[a] > size[a] {
+                    return None;
+                }
+            } else {
+                let t0 = (0.0 - origin[a]) / dir[a];
+                let t1 = (size[a] - origin[a]) / dir[a];
+                tmin = tmin.max(t0.min(t1));
+                tmax = tmax.min(t0.max(t1));
+            }
+        }
+        if tmin > tmax {
+            return None;
+        }
+        let p: V3 = std::array::from_fn(|a| origin[a] + dir[a] * (tmin + 1e-6));
+        let mut cell: [i64; 3] =
+            std::array::from_fn(|a| (p[a].floor() as i64).clamp(0, i64::from(dims[a]) - 1));
+        let step: [i64; 3] = std::array::from_fn(|a| if dir[a] > 0.0 { 1 } else { -1 });
+        let mut t_max: V3 = std::array::from_fn(|a| {
+            let next = if dir[a] > 0.0 { cell[a] + 1 } else { cell[a] } as f64;
+            if dir[a].abs() < 1e-12 {
+                f64::INFINITY
+            } else {
+                tmin + (next - p[a]) / dir[a]
+            }
+        });
+        let t_delta: V3 = std::array::from_fn(|a| {
+            if dir[a].abs() < 1e-12 {
+                f64::INFINITY
+            } else {
+                (1.0 / dir[a]).abs()
+            }
+        });
+        let [w, h, d] = dims.map(i64::from);
+        let mut prev = -1i64;
+        for _ in 0..w + h + d + 3 {
+            if cell.iter().zip([w, h, d]).any(|(&c, n)| c < 0 || c >= n) {
+                break;
+            }
+            let i = (cell[2] * h + cell[1]) * w + cell[0];
+            if occupied(i as usize) {
+                return Some(Hit {
+                    cell: i as u32,
+                    front: prev,
+                });
+            }
+            prev = i;
+            let a = if t_max[0] < t_max[1] {
+                if t_max[0] < t_max[2] {
+                    0
+                } else {
+                    2
+                }
+            } else if t_max[1] < t_max[2] {
+                1
+            } else {
+                2
+            };
+            cell[a] += step[a];
+            t_max[a] += t_delta[a];
+        }
+        None
+    }
+}
+
+/// Either camera, as the view holds it: the planar one for square and hex lattices, the orbit
+/// one for the cubic lattice.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Camera {
+    Planar(Camera2D),
+    Orbit(Camera3D),
+}
+
+impl Camera {
+    /// The camera that suits a lattice, framing all of it.
+    pub fn for_grid(grid: &Grid, width: f64, height: f64) -> Camera {
+        let mut c = if grid.kind == LatticeKind::Cubic {
+            Camera::Orbit(Camera3D {
+                width,
+                height,
+                ..Camera3D::default()
+            })
+        } else {
+            Camera::Planar(Camera2D {
+                width,
+                height,
+                ..Camera2D::default()
+            })
+        };
+        c.fit_lattice(grid);
+        c
+    }
+
+    pub fn fit_lattice(&mut self, grid: &Grid) {
+        match self {
+            Camera::Planar(c) => c.fit(grid.bounds()),
+            Camera::Orbit(c) => c.fit(grid.dims),
+        }
+    }
+
+    pub fn size(&self) -> [f64; 2] {
+        match self {
+            Camera::Planar(c) => [c.width, c.height],
+            Camera::Orbit(c) => [c.width, c.height],
+        }
+    }
+
+    /// A new size in CSS pixels. A planar camera keeps the world point at the view's centre.
+    pub fn set_size(&mut self, width: f64, height: f64) {
+        match self {
+            Camera::Planar(c) => {
+                c.width = width;
+                c.height = height;
+            }
+            Camera::Orbit(c) => {
+                c.width = width;
+                c.height = height;
+            }
+        }
+    }
+
+    /// A drag: an orbit drag turns a 3-D camera; otherwise either camera pans.
+    pub fn drag(&mut self, dx: f64, dy: f64, orbit: bool) {
+        match self {
+            Camera::Orbit(c) if orbit => c.orbit(dx, dy),
+            Camera::Orbit(c) => c.pan(dx, dy),
+            Camera::Planar(c) => c.pan(dx, dy),
+        }
+    }
+
+    /// Zooms about a screen point (the planar camera keeps it fixed; the orbit camera dollies).
+    pub fn zoom(&mut self, factor: f64, sx: f64, sy: f64) {
+        match self {
+            Camera::Planar(c) => c.zoom(factor, sx, sy),
+            Camera::Orbit(c) => c.zoom(factor),
+        }
+    }
+}
+
+/// The box around the occupied cells of a cubic lattice and any extra cells (a ghost), in world
+/// units, or `None` when there are none: what a 3-D camera frames.
+pub fn occupied_box(dims: [u32; 3], cells: &[u8], extra: &[u32]) -> Option<(V3, V3)> {
+    let grid = Grid::new(LatticeKind::Cubic, dims);
+    let mut min = [f64::INFINITY; 3];
+    let mut max = [f64::NEG_INFINITY; 3];
+    let occupied = cells
+        .iter()
+        .enumerate()
+        .filter(|(_, &c)| c != 0)
+        .map(|(i, _)| i);
+    for i in occupied.chain(extra.iter().map(|&i| i as usize)) {
+        let c = grid.coord(i).map(f64::from);
+        for a in 0..3 {
+            min[a] = min[a].min(c[a]);
+            max[a] = max[a].max(c[a] + 1.0);
+        }
+    }
+    (min[0] <= max[0]).then_some((min, max))
+}
+
+/// Column-major product a·b.
+pub fn multiply(a: &Mat4, b: &Mat4) -> Mat4 {
+    let mut out = [0f32; 16];
+    for col in 0..4 {
+        for row in 0..4 {
+            out[col * 4 + row] = (0..4).map(|k| a[k * 4 + row] * b[col * 4 + k]).sum();
+        }
+    }
+    out
+}
+
+pub fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+pub fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+pub fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+pub fn normalize(a: V3) -> V3 {
+    let n = norm(a);
+    let n = if n == 0.0 { 1.0 } else { n };
+    [a[0] / n, a[1] / n, a[2] / n]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn planar_zoom_keeps_the_point_under_the_pointer() {
+        let mut c = Camera2D {
+            width: 400.0,
+            height: 300.0,
+            ..Camera2D::default()
+        };
+        let before = c.to_world(120.0, 80.0);
+        c.zoom(1.7, 120.0, 80.0);
+        let after = c.to_world(120.0, 80.0);
+        assert!((before[0] - after[0]).abs() < 1e-9 && (before[1] - after[1]).abs() < 1e-9);
+        let [sx, sy] = c.to_screen(after[0], after[1]);
+        assert!((sx - 120.0).abs() < 1e-9 && (sy - 80.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_fitted_lattice_is_all_in_view() {
+        let grid = Grid::new(LatticeKind::Hex, [30, 10, 1]);
+        let c = Camera::for_grid(&grid, 640.0, 480.0);
+        let Camera::Planar(c) = c else {
+            panic!("planar")
+        };
+        let (v, b) = (c.visible(), grid.bounds());
+        assert!(v.x0 <= b.x0 && v.y0 <= b.y0 && v.x1 >= b.x1 && v.y1 >= b.y1);
+    }
+
+    #[test]
+    fn the_ray_through_a_projected_point_goes_back_through_it() {
+        let mut c = Camera3D {
+            width: 640.0,
+            height: 400.0,
+            ..Camera3D::default()
+        };
+        c.fit([8, 6, 4]);
+        c.orbit(37.0, -12.0);
+        let p = [2.5, 3.5, 1.5];
+        let [sx, sy, depth] = c.project(p).unwrap();
+        let (o, d) = c.ray(sx, sy);
+        let back: V3 = std::array::from_fn(|a| {
+            o[a] + d[a] * depth / dot(d, normalize(sub(c.target, c.eye())))
+        });
+        assert!(norm(sub(back, p)) < 1e-6, "{back:?}");
+    }
+
+    #[test]
+    fn picking_finds_the_nearest_unit_and_the_cell_in_front() {
+        let dims = [4, 4, 4];
+        let mut c = Camera3D {
+            width: 500.0,
+            height: 500.0,
+            ..Camera3D::default()
+        };
+        c.fit(dims);
+        let mut cells = vec![0u8; 64];
+        let centre = (1 * 4 + 1) * 4 + 1;
+        cells[centre] = 1;
+        let [sx, sy, _] = c.project([1.5, 1.5, 1.5]).unwrap();
+        let hit = c.pick(dims, |i| cells[i] != 0, sx, sy).unwrap();
+        assert_eq!(hit.cell as usize, centre);
+        assert!(hit.front >= 0 && hit.front as usize != centre);
+        assert_eq!(c.pick(dims, |_| false, sx, sy), None);
+    }
+
+    #[test]
+    fn the_view_matrix_puts_the_target_straight_ahead() {
+        let c = Camera3D {
+            width: 300.0,
+            height: 300.0,
+            target: [1.0, 2.0, 3.0],
+            ..Camera3D::default()
+        };
+        let m = c.view_projection();
+        let t = [1.0f32, 2.0, 3.0, 1.0];
+        let clip: [f32; 4] = std::array::from_fn(|row| (0..4).map(|k| m[k * 4 + row] * t[k]).sum());
+        assert!((clip[0] / clip[3]).abs() < 1e-5 && (clip[1] / clip[3]).abs() < 1e-5);
+        assert_eq!(
+            occupied_box([2, 2, 2], &[0, 0, 0, 1, 0, 0, 0, 0], &[]),
+            Some(([1.0, 1.0, 0.0], [2.0, 2.0, 1.0]))
+        );
+    }
+}

@@ -1,0 +1,6 @@
+//! The cubic lattice in 3-D: what a frame shows ([`model`]), drawn with WebGL2 ([`gl`]) or
+//! Canvas 2D ([`canvas`]).
+
+pub mod canvas;
+pub mod gl;
+pub mod model;

@@ -1,0 +1,110 @@
+//! WebGL2 helpers shared by the renderers: shader programs, textures and attributes.
+
+use wasm_bindgen::JsValue;
+use web_sys::{
+    WebGl2RenderingContext as Gl, WebGlProgram, WebGlShader, WebGlTexture, WebGlUniformLocation,
+};
+
+/// A linked program and its uniform locations, looked up once each.
+pub struct Program {
+    pub program: WebGlProgram,
+    uniforms: std::cell::RefCell<Vec<(&'static str, Option<WebGlUniformLocation>)>>,
+}
+
+impl Program {
+    pub fn link(gl: &Gl, vs: &str, fs: &str) -> Result<Program, JsValue> {
+        let program = gl.create_program().ok_or("no program")?;
+        gl.attach_shader(&program, &compile(gl, Gl::VERTEX_SHADER, vs)?);
+        gl.attach_shader(&program, &compile(gl, Gl::FRAGMENT_SHADER, fs)?);
+        gl.link_program(&program);
+        if !gl
+            .get_program_parameter(&program, Gl::LINK_STATUS)
+            .as_bool()
+            .unwrap_or(false)
+        {
+            return Err(format!(
+                "program: {}",
+                gl.get_program_info_log(&program).unwrap_or_default()
+            )
+            .into());
+        }
+        Ok(Program {
+            program,
+            uniforms: Default::default(),
+        })
+    }
+
+    /// A uniform's location (cached).
+    pub fn uniform(&self, gl: &Gl, name: &'static str) -> Option<WebGlUniformLocation> {
+        let mut cache = self.uniforms.borrow_mut();
+        if let Some((_, loc)) = cache.iter().find(|(n, _)| *n == name) {
+            return loc.clone();
+        }
+        let loc = gl.get_uniform_location(&self.program, name);
+        cache.push((name, loc.clone()));
+        loc
+    }
+
+    pub fn attrib(&self, gl: &Gl, name: &str) -> i32 {
+        gl.get_attrib_location(&self.program, name)
+    }
+}
+
+fn compile(gl: &Gl, kind: u32, source: &str) -> Result<WebGlShader, JsValue> {
+    let shader = gl.create_shader(kind).ok_or("no shader")?;
+    gl.shader_source(&shader, source);
+    gl.compile_shader(&shader);
+    if !gl
+        .get_shader_parameter(&shader, Gl::COMPILE_STATUS)
+        .as_bool()
+        .unwrap_or(false)
+    {
+        return Err(format!(
+            "shader: {}",
+            gl.get_shader_info_log(&shader).unwrap_or_default()
+        )
+        .into());
+    }
+    Ok(shader)
+}
+
+/// A texture sampled exactly (nearest, clamped).
+pub fn texture(gl: &Gl) -> Result<WebGlTexture, JsValue> {
+    let tex = gl.create_texture().ok_or("no texture")?;
+    gl.bind_texture(Gl::TEXTURE_2D, Some(&tex));
+    for (p, v) in [
+        (Gl::TEXTURE_MIN_FILTER, Gl::NEAREST),
+        (Gl::TEXTURE_MAG_FILTER, Gl::NEAREST),
+        (Gl::TEXTURE_WRAP_S, Gl::CLAMP_TO_EDGE),
+        (Gl::TEXTURE_WRAP_T, Gl::CLAMP_TO_EDGE),
+    ] {
+        gl.tex_parameteri(Gl::TEXTURE_2D, p, v as i32);
+    }
+    Ok(tex)
+}
+
+/// Points attribute `loc` at the bound array buffer, advancing per instance when `divisor` is 1.
+pub fn attribute(gl: &Gl, loc: i32, size: i32, kind: u32, normalized: bool, divisor: u32) {
+    if loc < 0 {
+        return;
+    }
+    gl.enable_vertex_attrib_array(loc as u32);
+    gl.vertex_attrib_pointer_with_i32(loc as u32, size, kind, normalized, 0, 0);
+    gl.vertex_attrib_divisor(loc as u32, divisor);
+}
+
+/// Uploads a 256×1 RGBA lookup table into `tex`.
+pub fn upload_table(gl: &Gl, tex: &WebGlTexture, table: &[u8]) -> Result<(), JsValue> {
+    gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
+    gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
+        Gl::TEXTURE_2D,
+        0,
+        Gl::RGBA8 as i32,
+        256,
+        1,
+        0,
+        Gl::RGBA,
+        Gl::UNSIGNED_BYTE,
+        Some(table),
+    )
+}
