@@ -14,6 +14,14 @@ const HOVER_LIFT: f64 = 0.35;
 /// A unit marked for removal: tinted red.
 const REMOVE_TINT: [f64; 3] = [235.0, 80.0, 70.0];
 
+/// Colours both renderers draw the scene's extras in: the ghost, reachable cells, the add
+/// cursor, and the lamp with its arrow.
+pub const GHOST_COLOR: &str = "#bfe3ff";
+pub const REACH_COLOR: &str = "#f0b429";
+pub const ADD_COLOR: &str = "#3ddc84";
+pub const LAMP_COLOR: &str = "#ffd166";
+pub const ARROW_COLOR: &str = "#ffc23d";
+
 /// A bond between face-adjacent units: its midpoint and its axis (0 x, 1 y, 2 z).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bond {
