@@ -484,3 +484,72 @@ fn face_corners(c: [u32; 3], n: V3, size: f64) -> [V3; 4] {
         corner(-1.0, 1.0),
     ]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn camera() -> Camera3D {
+        let mut cam = Camera3D {
+            width: 640.0,
+            height: 400.0,
+            ..Camera3D::default()
+        };
+        cam.fit([6, 5, 4]);
+        cam.orbit(25.0, -10.0);
+        cam
+    }
+
+    #[test]
+    fn the_projector_agrees_with_the_camera() {
+        let cam = camera();
+        let pr = Projector::new(&cam);
+        for p in [[1.0, 2.0, 0.5], [5.5, 0.5, 3.0], cam.target] {
+            let [sx, sy, depth] = cam.project(p).unwrap();
+            let v = pr.view(p);
+            let [px, py] = pr.screen(v);
+            assert!((px - sx).abs() < 1e-9 && (py - sy).abs() < 1e-9, "{p:?}");
+            assert!((v[2] - depth).abs() < 1e-9);
+            assert!((pr.distance(p) - norm(sub(p, cam.eye()))).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn polygons_and_segments_are_clipped_at_the_near_plane() {
+        let cam = camera();
+        let pr = Projector::new(&cam);
+        let eye = cam.eye();
+        let fwd = normalize(sub(cam.target, eye));
+        let at = |k: f64, side: f64| -> V3 {
+            std::array::from_fn(|a| eye[a] + fwd[a] * k + pr.right[a] * side)
+        };
+        // Wholly behind the eye: nothing.
+        assert_eq!(
+            pr.polygon(&[at(-1.0, 0.0), at(-2.0, 1.0), at(-1.0, 1.0)]),
+            None
+        );
+        assert_eq!(pr.segment(at(-1.0, 0.0), at(-2.0, 0.0)), None);
+        // A triangle with one corner behind becomes a quadrilateral in front.
+        let tri = [at(-1.0, 0.0), at(3.0, 1.0), at(3.0, -1.0)];
+        let clipped = pr.polygon(&tri).unwrap();
+        assert_eq!(clipped.len(), 4);
+        assert!(clipped.iter().flatten().all(|v| v.is_finite()));
+        // A segment that crosses keeps its far end where it was.
+        let [_, far] = pr.segment(at(-1.0, 0.5), at(4.0, 0.5)).unwrap();
+        assert_eq!(far, pr.screen(pr.view(at(4.0, 0.5))));
+    }
+
+    #[test]
+    fn face_corners_lie_on_the_face() {
+        for n in NORMALS {
+            let corners = face_corners([2, 3, 4], n, 0.5);
+            let axis = n.iter().position(|&v| v != 0.0).unwrap();
+            let plane = [2.0, 3.0, 4.0][axis] + 0.5 + n[axis] * 0.25;
+            assert!(corners.iter().all(|c| c[axis] == plane), "{n:?}");
+            let side = norm(sub(corners[1], corners[0]));
+            assert!((side - 0.5).abs() < 1e-12);
+            let diagonal = norm(sub(corners[2], corners[0]));
+            assert!((diagonal - 0.5 * 2f64.sqrt()).abs() < 1e-12);
+        }
+    }
+}
