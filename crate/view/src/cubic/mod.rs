@@ -4,3 +4,7 @@
 pub mod canvas;
 pub mod gl;
 pub mod model;
+
+pub use canvas::CubicCanvas;
+pub use gl::CubicGl;
+pub use model::{lamp_placement, CubicModel, Lamp};
