@@ -8,9 +8,9 @@
 //!   counter-clockwise in steps of 60 degrees, so `(d + 1) % 6` is a 60 degree turn;
 //! - cubic: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z (up), 5 -z, so `d ^ 1` is the opposite face.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum LatticeKind {
     Square,

@@ -8,7 +8,7 @@
 use std::borrow::Cow;
 
 use serde::de::DeserializeOwned;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
@@ -61,7 +61,7 @@ impl Metric {
 pub type Action = Map<String, Value>;
 
 /// A code in the cell buffer, an agent kind or an event kind, with its name and colour.
-#[derive(Clone, Debug, Serialize, PartialEq)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
 pub struct LegendEntry {
     pub code: u8,
     pub name: String,
@@ -80,7 +80,7 @@ impl LegendEntry {
 }
 
 /// A scalar field defined on the cells, drawn as an overlay.
-#[derive(Clone, Debug, Serialize, PartialEq)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
 pub struct FieldInfo {
     pub name: String,
     pub label: String,
@@ -90,7 +90,7 @@ pub struct FieldInfo {
 
 /// A click tool the page offers for this model. Clicking a cell sends `action` with the cell's
 /// index added as `"cells": [i]`.
-#[derive(Clone, Debug, Serialize, PartialEq)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
 pub struct ToolInfo {
     pub name: String,
     pub label: String,
@@ -98,7 +98,7 @@ pub struct ToolInfo {
 }
 
 /// What a renderer needs to know once per run.
-#[derive(Clone, Debug, Serialize, PartialEq)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
 pub struct Layout {
     pub lattice: LatticeKind,
     /// Width, height, depth in cells.
@@ -122,7 +122,8 @@ pub struct Layout {
 /// Optional scene information for 3-D views, beyond the cells. Models without any return the
 /// default (nothing to draw). It may change between steps (a target switched, for instance), so a
 /// view reads it again after stepping.
-#[derive(Clone, Debug, Default, Serialize, PartialEq)]
+#[derive(Clone, Debug, Default, Serialize, PartialEq, Deserialize)]
+#[serde(default)]
 pub struct Scene {
     /// Cells of a reference shape (a target) to draw as a translucent ghost.
     #[serde(skip_serializing_if = "Vec::is_empty")]
