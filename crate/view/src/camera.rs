@@ -94,7 +94,7 @@ impl Camera2D {
         let x1 = v.x1.ceil().min(w - 1.0);
         let y0 = ((v.y0 / row).floor() - 1.0).max(0.0);
         let y1 = (v.y1 / row).ceil().min(h - 1.0);
-        (x1 >= x0 && y1 >= y0).then(|| [x0 as u32, x1 as u32, y0 as u32, y1 as u32])
+        (x1 >= x0 && y1 >= y0).then_some([x0 as u32, x1 as u32, y0 as u32, y1 as u32])
     }
 }
 
@@ -518,6 +518,39 @@ mod tests {
     }
 
     #[test]
+    fn a_planar_camera_pans_on_either_drag_and_an_orbit_camera_turns_on_an_orbit_drag() {
+        let mut c = Camera::Planar(Camera2D {
+            width: 800.0,
+            height: 600.0,
+            ..Camera2D::default()
+        });
+        c.drag(20.0, -10.0, true);
+        c.drag(20.0, -10.0, false);
+        let Camera::Planar(p) = &c else {
+            panic!("planar")
+        };
+        assert_eq!((p.cx, p.cy), (-4.0, 2.0));
+        let mut o = Camera::Orbit(Camera3D {
+            width: 800.0,
+            height: 600.0,
+            ..Camera3D::default()
+        });
+        o.drag(50.0, 0.0, true);
+        let Camera::Orbit(turned) = o.clone() else {
+            panic!("orbit")
+        };
+        assert!((turned.yaw - (YAW - 0.4)).abs() < 1e-12);
+        o.drag(50.0, 0.0, false);
+        o.zoom(2.0, 10.0, 10.0);
+        let Camera::Orbit(moved) = o else {
+            panic!("orbit")
+        };
+        assert_ne!(moved.target, turned.target, "a pan drag moves the target");
+        assert_eq!(moved.yaw, turned.yaw, "and does not turn");
+        assert!((moved.distance - 10.0).abs() < 1e-12, "zoom dollies");
+    }
+
+    #[test]
     fn a_fitted_lattice_is_all_in_view() {
         let grid = Grid::new(LatticeKind::Hex, [30, 10, 1]);
         let c = Camera::for_grid(&grid, 640.0, 480.0);
@@ -555,8 +588,8 @@ mod tests {
             ..Camera3D::default()
         };
         c.fit(dims);
-        let mut cells = vec![0u8; 64];
-        let centre = (1 * 4 + 1) * 4 + 1;
+        let mut cells = [0u8; 64];
+        let centre = (4 + 1) * 4 + 1;
         cells[centre] = 1;
         let [sx, sy, _] = c.project([1.5, 1.5, 1.5]).unwrap();
         let hit = c.pick(dims, |i| cells[i] != 0, sx, sy).unwrap();
