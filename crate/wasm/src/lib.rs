@@ -15,6 +15,9 @@ use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
 
+mod viewer;
+pub use viewer::{LatticeGeometry, Viewer};
+
 static PANIC: Mutex<Option<String>> = Mutex::new(None);
 
 /// Installs the panic hook: the message goes to the console and is kept for [`panic_message`],
@@ -501,6 +504,28 @@ impl Sim {
             .flat_map(|e| [e.cell, u32::from(e.kind)])
             .collect();
         Uint32Array::from(flat.as_slice())
+    }
+
+    /// The code of one cell (0: empty or off the lattice).
+    pub fn cell_code(&self, cell: u32) -> u8 {
+        self.run
+            .model()
+            .cells()
+            .get(cell as usize)
+            .copied()
+            .unwrap_or(0)
+    }
+
+    /// The middle occupied cell in memory order (where a keyboard cursor starts), or -1.
+    pub fn middle_occupied(&self) -> i64 {
+        let cells = self.run.model().cells();
+        let occupied = cells.iter().filter(|&&c| c != 0).count();
+        let nth = cells
+            .iter()
+            .enumerate()
+            .filter(|(_, &c)| c != 0)
+            .nth(occupied / 2);
+        nth.map_or(-1, |(i, _)| i as i64)
     }
 
     /// Applies an action now (a click tool) and records it in the scenario.
