@@ -1,10 +1,26 @@
 // The page in headless Chromium: load to interactive (first frame drawn), and for workloads with
 // a "page" entry ({"seconds": N}) the steps per second and frames per second while it plays at
-// full speed.
+// full speed, with where the worker's time went (stepping, uploading buffers, issuing draws). A
+// workload with {"orbit": true} is instead turned by a drag for N seconds while paused: the 3-D
+// view's frame rate as people orbit it.
 import { performance } from 'node:perf_hooks';
 import { launch, serve } from '../tests/e2e/harness.mjs';
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
+/** Rates between two readings, and the worker's milliseconds per frame drawn. */
+function rates(a, b) {
+  const dt = (b.t - a.t) / 1000;
+  const frames = b.work.frames - a.work.frames;
+  const per = (k) => (frames > 0 ? (b.work[k] - a.work[k]) / frames : 0);
+  return {
+    stepsPerSecond: (b.steps - a.steps) / dt,
+    framesPerSecond: frames / dt,
+    stepMsPerSecond: (b.work.stepMs - a.work.stepMs) / dt,
+    uploadMsPerFrame: per('uploadMs'),
+    drawMsPerFrame: per('drawMs'),
+  };
+}
 
 export async function benchPage(pageSpecs, linkFor) {
   const server = await serve('/');
@@ -32,18 +48,40 @@ export async function benchPage(pageSpecs, linkFor) {
         await page.click('#intro button.primary');
         await page.waitForSelector('#intro', { state: 'hidden' });
       }
-      await page.$eval('#speed', (s) => {
-        s.value = '8';
-        s.dispatchEvent(new Event('input'));
-      });
-      await page.click('#play');
-      await page.waitForTimeout(1500);
-      const read = () => page.evaluate(() => ({ steps: Number(document.querySelector('#step-count').textContent.replace(/,/g, '')), frames: Number(document.body.dataset.frames ?? 0), t: performance.now() }));
-      const a = await read();
-      await page.waitForTimeout(seconds * 1000);
-      const b = await read();
+      const read = () =>
+        page.evaluate(() => ({
+          steps: Number(document.querySelector('#step-count').textContent.replace(/,/g, '')),
+          work: JSON.parse(document.body.dataset.work ?? '{}'),
+          t: performance.now(),
+        }));
       const renderer = await page.evaluate(() => document.body.dataset.renderer);
-      runs.push({ name: spec.name, seconds, renderer, stepsPerSecond: ((b.steps - a.steps) * 1000) / (b.t - a.t), framesPerSecond: ((b.frames - a.frames) * 1000) / (b.t - a.t) });
+      if (spec.page.orbit) {
+        const box = await page.locator('#view').boundingBox();
+        const y = box.y + box.height / 2;
+        await page.mouse.move(box.x + box.width * 0.3, y);
+        await page.mouse.down();
+        const a = await read();
+        const until = Date.now() + seconds * 1000;
+        for (let k = 0; Date.now() < until; k++) {
+          await page.mouse.move(box.x + box.width * (0.3 + 0.4 * Math.abs(Math.sin(k / 30))), y);
+          await page.waitForTimeout(8);
+        }
+        await page.mouse.up();
+        await page.waitForTimeout(200);
+        const b = await read();
+        runs.push({ name: spec.name, seconds, renderer, orbit: true, ...rates(a, b) });
+      } else {
+        await page.$eval('#speed', (s) => {
+          s.value = '8';
+          s.dispatchEvent(new Event('input'));
+        });
+        await page.click('#play');
+        await page.waitForTimeout(1500);
+        const a = await read();
+        await page.waitForTimeout(seconds * 1000);
+        const b = await read();
+        runs.push({ name: spec.name, seconds, renderer, orbit: false, ...rates(a, b) });
+      }
       await context.close();
     }
     return { loads, loadMs: median(loads), runs };

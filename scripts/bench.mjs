@@ -53,7 +53,11 @@ const page = await benchPage(specs.filter((s) => s.page), (s) => {
 });
 console.log(`page load to interactive (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
 for (const r of page.runs) {
-  console.log(`in the page, ${r.name}: ${fmt(r.stepsPerSecond)} steps/s while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer})`);
+  const doing = r.orbit ? 'orbiting' : `${fmt(r.stepsPerSecond)} steps/s`;
+  console.log(
+    `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
+      `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
+  );
 }
 const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, page };
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));

@@ -38,7 +38,7 @@ let framesDrawn = 0;
 /** Called once with the next frame from the worker that the view draws (the recorder waits on them). */
 const drawnWaiters: ((frame: Frame) => void)[] = [];
 
-const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('annotations'), byId('canvas-wrap'), {
+const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('annotations'), byId('canvas-wrap'), () => sim, {
   click: (cell, hit) => void inspector.click(cell, hit),
   hover: (cell) => inspector.hover(cell),
   drawn: () => {
@@ -48,7 +48,7 @@ const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('
     if (frame) for (const waiter of drawnWaiters.splice(0)) waiter(frame);
   },
 });
-// The view follows the session before any panel does: the panels read its camera and overlay.
+// The view follows the session before any panel does: the panels read its overlay range.
 session.on('loaded', ({ layout, shapeChanged }) => {
   view.setLayout(layout);
   if (shapeChanged) view.fit();
@@ -86,12 +86,14 @@ const sim = new SimClient({
     }
     document.body.dataset.ready = 'true';
     framesDrawn++;
+    document.body.dataset.work = JSON.stringify(frame.work);
     session.setFrame(frame);
     announcer.frame(frame, run.playing, run.chartedMetric(), inspector.cellText);
     structure.frame(frame.steps);
     embed?.frame(frame);
   },
   playing: (on) => run.setPlaying(on),
+  viewer: (kind) => view.started(kind),
   scenario(json) {
     // A click recorded a disturbance (and, in the past, forked the run): undo brings back the
     // scenario before it.

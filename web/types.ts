@@ -81,7 +81,20 @@ export interface ChartBand {
   span: number;
 }
 
-/** One frame of a running simulation, as the worker sends it. */
+/** What a 3-D frame drew (kumiki_view::scene::RenderStats). */
+export interface RenderStats {
+  units: number;
+  bonds: number;
+  ghost: number;
+  highlight: number;
+  light: boolean;
+  ground: boolean;
+}
+
+/**
+ * One frame of a running simulation, as the worker reports it after drawing it. The lattice
+ * itself never crosses: the worker draws it (crate/view) and sends what the page's panels show.
+ */
 export interface Frame {
   steps: number;
   /** The furthest step reached since the last fork: where the timeline ends. */
@@ -91,17 +104,25 @@ export interface Frame {
   completed: boolean;
   hash: string | null;
   metrics: Metrics;
-  cells: Uint8Array;
-  field: { name: string; data: Float32Array } | null;
-  agents: Uint32Array;
-  events: Uint32Array;
-  /** One bit mask per cell (bit d: bonded to the neighbour in direction d), or null. */
-  bonds: Uint8Array | null;
   stepsPerSecond: number;
   /** The model's scene when it changed since the last frame (always in the first after a load), else null. */
   scene: SceneInfo | null;
   /** The charted metric's record, when the page asked for one. */
   chart: ChartBand | null;
+  /** The overlay's finite [min, max], for its legend; null without an overlay. */
+  overlayRange: [number, number] | null;
+  /** What a 3-D view drew; null for a planar one or before the view is attached. */
+  drawn: RenderStats | null;
+  /** Where the worker's time went since the view began (the page benchmark's breakdown). */
+  work: WorkerTiming;
+}
+
+/** Milliseconds the worker spent stepping, uploading buffers and issuing draws, and frames drawn. */
+export interface WorkerTiming {
+  stepMs: number;
+  frames: number;
+  uploadMs: number;
+  drawMs: number;
 }
 
 export interface ExperimentInfo {

@@ -89,3 +89,54 @@ export const experimentInfo = (json: string): ExperimentInfo => {
  */
 export const modelQuery = <T = Record<string, unknown>>(model: string, name: string, args: Record<string, unknown>): T =>
   JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
+
+/** A lattice's geometry, from the same Rust code the view draws with (crate/view). */
+export class Geometry {
+  private readonly g: core.LatticeGeometry;
+  /** Centre-to-corner radius of a hex cell (read once the module is loaded). */
+  static get hexRadius(): number {
+    return core.LatticeGeometry.hex_radius();
+  }
+  /** Distance between hex rows. */
+  static get hexRow(): number {
+    return core.LatticeGeometry.hex_row();
+  }
+
+  constructor(
+    readonly lattice: 'square' | 'hex' | 'cubic',
+    readonly dims: [number, number, number],
+  ) {
+    this.g = new core.LatticeGeometry(lattice, dims[0], dims[1], dims[2]);
+  }
+
+  /** Centre of a planar cell in world units. */
+  centre(cell: number): [number, number] {
+    const c = this.g.centre(cell);
+    return [c[0], c[1]];
+  }
+
+  /** The planar cell under a world point, or -1. */
+  cellAt(wx: number, wy: number): number {
+    return this.g.cell_at(wx, wy);
+  }
+
+  /** The world rectangle of the whole lattice. */
+  bounds(): { x0: number; y0: number; x1: number; y1: number } {
+    const [x0, y0, x1, y1] = this.g.bounds();
+    return { x0, y0, x1, y1 };
+  }
+
+  /** Corners of a hexagon of radius r around a point. */
+  static hexCorners(cx: number, cy: number, r: number): [number, number][] {
+    const flat = core.LatticeGeometry.hex_corners(cx, cy, r);
+    return Array.from({ length: 6 }, (_, k) => [flat[2 * k], flat[2 * k + 1]] as [number, number]);
+  }
+
+  free() {
+    this.g.free();
+  }
+}
+
+/** A view drawing on an OffscreenCanvas from this thread (an editor's); see crate/view. */
+export type Viewer = core.Viewer;
+export const newViewer = (canvas: OffscreenCanvas, prefer: 'webgl2' | 'canvas2d' | 'auto'): Viewer => new core.Viewer(canvas, undefined, prefer);

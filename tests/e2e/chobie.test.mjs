@@ -24,8 +24,13 @@ const metric = (page, name) =>
 
 /** The annotation layer's pixels, as one string to compare, and how many are drawn. */
 const annotations = (page) =>
-  page.$eval('#annotations', (c) => {
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  page.$eval('#annotations', async (c) => {
+    const d = await (async () => {
+      const bmp = await createImageBitmap(c);
+      const t = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+      t.drawImage(bmp, 0, 0);
+      return t.getImageData(0, 0, bmp.width, bmp.height).data;
+    })();
     let inked = 0;
     let sum = 0;
     for (let i = 3; i < d.length; i += 4) {
@@ -131,9 +136,14 @@ test('the deflected shape is drawn exaggerated by the typed factor', async () =>
   await settle(page);
   const plain = await annotations(page);
   await page.check('#deflection-view');
-  await page.waitForFunction((n) => {
+  await page.waitForFunction(async (n) => {
     const c = document.querySelector('#annotations');
-    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const d = await (async () => {
+      const bmp = await createImageBitmap(c);
+      const t = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+      t.drawImage(bmp, 0, 0);
+      return t.getImageData(0, 0, bmp.width, bmp.height).data;
+    })();
     let inked = 0;
     for (let i = 3; i < d.length; i += 4) if (d[i] > 0) inked++;
     return inked > n;

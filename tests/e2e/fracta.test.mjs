@@ -18,9 +18,14 @@ test('fracta draws hexagons with bonds and type labels that name each unit, and 
   const legend = await page.$$eval('#legend span', (spans) => spans.map((x) => x.textContent));
   assert.ok(legend.includes('K') && legend.includes('o') && legend.includes('s'), legend.join(','));
   // Labels are drawn on the annotation layer only when the structure is large on screen.
-  await page.waitForFunction(() => {
+  await page.waitForFunction(async () => {
     const c = document.querySelector('#annotations');
-    const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const data = await (async () => {
+      const bmp = await createImageBitmap(c);
+      const t = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+      t.drawImage(bmp, 0, 0);
+      return t.getImageData(0, 0, bmp.width, bmp.height).data;
+    })();
     for (let i = 3; i < data.length; i += 4) if (data[i] > 0) return true;
     return false;
   });

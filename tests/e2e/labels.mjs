@@ -7,13 +7,17 @@
  * { read, score, runnerUp, colour } per label: the best-matching name, its overlap (1 is a
  * pixel-perfect match), the next name's overlap, and the fill colour under the label.
  */
-export function readLabels(names) {
+export async function readLabels(names) {
   const ann = document.querySelector('#annotations');
   const view = document.querySelector('#view');
-  const W = ann.width;
-  const H = ann.height;
+  // The canvases are drawn by the worker: their pixels are read from what they show.
+  const bitmap = await createImageBitmap(ann);
+  const W = bitmap.width;
+  const H = bitmap.height;
   const dpr = W / ann.clientWidth;
-  const data = ann.getContext('2d').getImageData(0, 0, W, H).data;
+  const scratch = new OffscreenCanvas(W, H).getContext('2d');
+  scratch.drawImage(bitmap, 0, 0);
+  const data = scratch.getImageData(0, 0, W, H).data;
   // Label text is filled pure white; bonds are dark and arrows translucent.
   const white = (i) => data[i * 4] >= 200 && data[i * 4 + 1] >= 200 && data[i * 4 + 2] >= 200 && data[i * 4 + 3] >= 250;
   const label = new Int32Array(W * H).fill(-1);

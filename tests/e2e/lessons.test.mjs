@@ -26,6 +26,13 @@ async function listen(page) {
 }
 const heard = (page) => page.evaluate(() => window.liveTexts.join('\n'));
 
+/** Presses C and waits for the cursor: it starts on the structure, which the worker finds. */
+async function showCursor(page) {
+  await page.keyboard.press('c');
+  await page.waitForFunction(() => Number(document.querySelector('#view').dataset.cursor ?? -1) >= 0);
+  return Number(await page.getAttribute('#view', 'data-cursor'));
+}
+
 describe('lessons', () => {
   test('the gallery lists every lesson with its section; one opens with its exercise, fails, then meets its goal', async () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url);
@@ -98,10 +105,11 @@ describe('keyboard cell clicking', () => {
     const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${link}`);
     await page.click('#tools button[data-tool="fault"]');
     await page.locator('#view').focus();
-    await page.keyboard.press('c');
-    const start = Number(await page.getAttribute('#view', 'data-cursor'));
+    const start = await showCursor(page);
     assert.ok(start >= 0);
     // Messages less than 0.8 s apart are joined: on a slow machine the load's may come first.
+    // The cell's state comes from the worker, so the message follows the cursor by a moment.
+    await page.waitForFunction(() => /Cursor at/.test(document.querySelector('#run-live').textContent));
     assert.match(await page.textContent('#run-live'), /(^|\. )Cursor at cell \(\d+, \d+\), [^.]+\. Enter: Fault \(cut power\)\.$/);
 
     await page.keyboard.press('ArrowRight');
@@ -136,8 +144,7 @@ describe('keyboard cell clicking', () => {
       sim.free();
       const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
       await page.locator('#view').focus();
-      await page.keyboard.press('c');
-      const start = Number(await page.getAttribute('#view', 'data-cursor'));
+      const start = await showCursor(page);
       await page.keyboard.press(key);
       const moved = Number(await page.getAttribute('#view', 'data-cursor'));
       assert.equal(moved, start + cells(w, h), `${preset}: one row or one layer`);

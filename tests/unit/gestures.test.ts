@@ -1,5 +1,4 @@
 import { describe, expect, it } from 'vitest';
-import { Camera2D, Camera3D, cameraGestures } from '../../web/render/camera';
 import { type DragKind, type GestureHandlers, type GestureOptions, Gestures, type Modifiers, type Point, type PointerSample, type Timer } from '../../web/render/gestures';
 
 /** A timer the test fires by hand. */
@@ -219,41 +218,5 @@ describe('wheel', () => {
     expect(zooms[0][1]).toBeCloseTo(Math.exp(-0.15), 12);
     expect(zooms[0][2]).toEqual({ x: 12, y: 34 });
     expect(zooms[1][1]).toBeCloseTo(Math.exp(0.15), 12);
-  });
-});
-
-describe('cameraGestures', () => {
-  it('a planar camera pans on either drag kind and zooms about the centre given', () => {
-    const c = new Camera2D();
-    c.width = 800;
-    c.height = 600;
-    let changes = 0;
-    const steer = cameraGestures(() => c, () => changes++);
-    steer.drag(20, -10, 'orbit', { x: 0, y: 0 });
-    expect([c.cx, c.cy]).toEqual([-2, 1]);
-    steer.drag(20, -10, 'pan', { x: 0, y: 0 });
-    expect([c.cx, c.cy]).toEqual([-4, 2]);
-    const before = c.toWorld(120, 450);
-    steer.zoom(2, { x: 120, y: 450 });
-    const after = c.toWorld(120, 450);
-    expect(after[0]).toBeCloseTo(before[0], 10);
-    expect(after[1]).toBeCloseTo(before[1], 10);
-    expect(changes).toBe(3);
-  });
-
-  it('a 3-D camera turns on an orbit drag, pans on a pan drag and dollies on zoom', () => {
-    const c = new Camera3D();
-    c.width = 800;
-    c.height = 600;
-    const steer = cameraGestures(() => c, () => {});
-    const yaw = c.yaw;
-    steer.drag(50, 0, 'orbit', { x: 0, y: 0 });
-    expect(c.yaw).toBeCloseTo(yaw - 0.4, 12);
-    const target = [...c.target];
-    steer.drag(50, 0, 'pan', { x: 0, y: 0 });
-    expect(c.target).not.toEqual(target);
-    expect(c.yaw).toBeCloseTo(yaw - 0.4, 12);
-    steer.zoom(2, { x: 10, y: 10 });
-    expect(c.distance).toBeCloseTo(10, 12);
   });
 });

@@ -2,11 +2,10 @@
 // one finger; the gestures come from render/gestures.ts), move a cursor with the arrow keys and
 // toggle with Space, resize, trim, undo and redo, and edit the same shape as text. Shapes are read
 // and written by the core's own rules.
-import { HEX_RADIUS, HEX_ROW, cellAt, cellCentre, hexCorners } from '../render/geometry';
 import { bindGestures, type Point } from '../render/gestures';
 import { History } from '../store';
 import { clear, el } from '../ui/dom';
-import { formatShape, message, parseShape, type Shape } from '../wasm';
+import { Geometry, formatShape, message, parseShape, type Shape } from '../wasm';
 
 export interface GridEditorOptions {
   lattice: 'square' | 'hex';
@@ -231,10 +230,9 @@ export class GridEditor {
   }
 
   private layout() {
-    const { w, h } = this.shape;
-    const hex = this.opts.lattice === 'hex';
-    const worldW = hex ? w + 0.5 : w;
-    const worldH = (hex ? (h - 1) * HEX_ROW + 2 * HEX_RADIUS : h) + (this.opts.below ? 1.2 : 0);
+    const world = this.geometry().bounds();
+    const worldW = world.x1;
+    const worldH = world.y1 + (this.opts.below ? 1.2 : 0);
     const avail = Math.max(160, this.root.clientWidth || 320);
     // At least 3 px a cell for painting, unless that would make the canvas larger than
     // MAX_CANVAS_PX on a side: a huge shape from a link is shown whole, cells smaller than a pixel.
@@ -277,7 +275,7 @@ export class GridEditor {
       }
     }
     if (this.opts.below) {
-      const top = (this.opts.lattice === 'hex' ? (h - 1) * HEX_ROW + 2 * HEX_RADIUS : h) * s + 0.2 * s;
+      const top = this.geometry().bounds().y1 * s + 0.2 * s;
       ctx.fillStyle = this.opts.below.color;
       ctx.fillRect(0, top, cssW, s);
       ctx.fillStyle = '#1b232c';
@@ -321,7 +319,7 @@ export class GridEditor {
     bitmap.getContext('2d')!.putImageData(image, 0, 0);
     const s = this.scale;
     ctx.imageSmoothingEnabled = false;
-    if (hex) ctx.drawImage(bitmap, 0, (HEX_RADIUS - HEX_ROW / 2) * s, (w + 0.5) * s, h * HEX_ROW * s);
+    if (hex) ctx.drawImage(bitmap, 0, (Geometry.hexRadius - Geometry.hexRow / 2) * s, (w + 0.5) * s, h * Geometry.hexRow * s);
     else ctx.drawImage(bitmap, 0, 0, w * s, h * s);
   }
 
@@ -329,8 +327,8 @@ export class GridEditor {
     const s = this.scale;
     ctx.beginPath();
     if (this.opts.lattice === 'hex') {
-      const [cx, cy] = cellCentre('hex', x, y);
-      const c = hexCorners(cx * s, cy * s, HEX_RADIUS * s);
+      const [cx, cy] = this.geometry().centre(y * this.shape.w + x);
+      const c = Geometry.hexCorners(cx * s, cy * s, Geometry.hexRadius * s);
       ctx.moveTo(c[0][0], c[0][1]);
       for (let k = 1; k < 6; k++) ctx.lineTo(c[k][0], c[k][1]);
       ctx.closePath();
@@ -340,9 +338,19 @@ export class GridEditor {
   }
 
   private cellAt(at: Point): number {
-    const { w, h } = this.shape;
-    return cellAt({ lattice: this.opts.lattice, dims: [w, h, 1] } as never, at.x / this.scale, at.y / this.scale);
+    return this.geometry().cellAt(at.x / this.scale, at.y / this.scale);
   }
+
+  /** The geometry of the shape's lattice as it is now sized (kept until the size changes). */
+  private geometry(): Geometry {
+    const { w, h } = this.shape;
+    const g = this.geo;
+    if (g && g.lattice === this.opts.lattice && g.dims[0] === w && g.dims[1] === h) return g;
+    g?.free();
+    this.geo = new Geometry(this.opts.lattice, [w, h, 1]);
+    return this.geo;
+  }
+  private geo: Geometry | null = null;
 
   private paintCell(i: number, erase: boolean) {
     if (i < 0 || !this.stroke) return;

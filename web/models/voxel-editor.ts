@@ -5,13 +5,12 @@
 // change its layer, Space or Enter toggles a unit there. Undo and redo; the same shape as text
 // (cubic layers, read and written by the core). Shapes are applied through the page, which has the
 // core validate them: a refused shape stays on screen with the core's reason.
-import { Camera3D, type Hit, cameraGestures } from '../render/camera';
 import { bindGestures } from '../render/gestures';
-import { createRenderer, type Renderer, type Scene } from '../render/renderer';
-import type { Frame, Layout, SceneInfo } from '../types';
+import type { Picked } from '../sim/protocol';
+import type { Layout, SceneInfo } from '../types';
 import { History } from '../store';
 import { clear, el } from '../ui/dom';
-import { formatShape, message, parseShape } from '../wasm';
+import { formatShape, message, newViewer, parseShape, type Viewer } from '../wasm';
 
 export interface VoxelSubject {
   /** What is being edited, for labels and messages ("the initial shape"). */
@@ -46,10 +45,11 @@ export class VoxelEditor {
   private level = 0;
   /** The editing box in shape coordinates: origin (x, y) and size; z always starts at 0. */
   private box = { ox: -PAD, oy: -PAD, w: 6, h: 6, d: 3 };
-  private readonly camera = new Camera3D();
-  private renderer: Renderer | null = null;
+  /** Draws the box in 3-D and owns its camera (crate/view, on this thread). */
+  private viewer: Viewer | null = null;
   private layout: Layout;
-  private frame: Frame;
+  private cells: Uint8Array;
+  private cssWidth = 1;
   private world: SceneInfo = { ghost: [], ground: 0 };
   private pointerCursor: { cell: number; kind: 'add' | 'remove' } | null = null;
   private keyCursor: Cell = [0, 0, 0];
@@ -149,20 +149,18 @@ export class VoxelEditor {
     );
 
     this.layout = editorLayout([6, 6, 3]);
-    this.frame = emptyFrame(6 * 6 * 3);
+    this.cells = new Uint8Array(6 * 6 * 3);
     this.bind();
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(this.wrap);
-    void createRenderer(this.canvas, 'auto').then((r) => {
-      if (this.destroyed) {
-        r.destroy();
-        return;
-      }
-      this.renderer = r;
-      this.canvas.dataset.renderer = r.kind;
-      r.setLayout(this.layout);
-      this.resize();
-    });
+    try {
+      this.viewer = newViewer(this.canvas.transferControlToOffscreen(), 'auto');
+      this.canvas.dataset.renderer = this.viewer.kind();
+      this.viewer.set_layout(this.layout);
+    } catch (e) {
+      this.error.textContent = `The 3-D view cannot start: ${message(e)}`;
+    }
+    this.resize();
   }
 
   /** Edits another shape (the initial one, a target's): forgets the undo history. */
@@ -202,7 +200,8 @@ export class VoxelEditor {
     this.destroyed = true;
     this.resizeObserver.disconnect();
     this.gestures?.destroy();
-    this.renderer?.destroy();
+    this.viewer?.free();
+    this.viewer = null;
     clear(this.root);
   }
 
@@ -303,8 +302,7 @@ export class VoxelEditor {
     const old = this.box;
     const box = { ox: x0 - PAD, oy: y0 - PAD, w: x1 - x0 + 1 + 2 * PAD, h: y1 - y0 + 1 + 2 * PAD, d: z1 + 1 + PAD };
     // Keep what is on screen in place when the box grows or shrinks on the low side.
-    this.camera.target[0] += old.ox - box.ox;
-    this.camera.target[1] += old.oy - box.oy;
+    this.viewer?.shift_target(old.ox - box.ox, old.oy - box.oy, 0);
     this.box = box;
     this.level = Math.min(this.level, box.d - 1);
     this.keyCursor = this.clampCell(this.keyCursor);
@@ -320,9 +318,9 @@ export class VoxelEditor {
     }
     if (this.layout.dims.join() !== [w, h, d].join()) {
       this.layout = editorLayout([w, h, d]);
-      this.renderer?.setLayout(this.layout);
+      this.viewer?.set_layout(this.layout);
     }
-    this.frame = { ...emptyFrame(0), cells };
+    this.cells = cells;
     this.world = { ghost, ground: this.sliceMode === 'one' ? this.level : 0 };
     this.syncControls();
     this.request();
@@ -340,7 +338,7 @@ export class VoxelEditor {
     this.levelInput.disabled = this.sliceMode === 'all';
     this.levelOut.textContent = this.sliceMode === 'all' ? '' : `layer ${this.level + 1} of ${this.box.d}`;
     this.canvas.dataset.units = String(n);
-    this.canvas.dataset.visible = String(this.frame.cells.reduce((s, c) => s + (c ? 1 : 0), 0));
+    this.canvas.dataset.visible = String(this.cells.reduce((s, c) => s + (c ? 1 : 0), 0));
     if (document.activeElement !== this.text) this.text.value = formatUnits(this.units);
   }
 
@@ -382,27 +380,24 @@ export class VoxelEditor {
   }
 
   private draw() {
-    if (!this.renderer || this.destroyed) return;
+    const v = this.viewer;
+    if (!v || this.destroyed) return;
     let cursor = this.pointerCursor;
     if (!cursor && this.focused) cursor = { cell: this.index(this.keyCursor), kind: this.units.has(key(...this.keyCursor)) ? 'remove' : 'add' };
-    const scene: Scene = {
-      layout: this.layout,
-      frame: this.frame,
-      overlay: null,
-      camera: this.camera,
-      world: this.world,
-      marks: { arrows: false, labels: false, hover: -1, highlight: [], cursor: cursor ?? null },
-    };
-    this.renderer.draw(scene);
+    try {
+      v.set_marks({ arrows: false, labels: false, cursor: cursor ?? null });
+      this.canvas.dataset.scene = JSON.stringify(v.draw_cells(this.cells, this.world));
+    } catch (e) {
+      this.error.textContent = `The 3-D view cannot draw: ${message(e)}`;
+    }
   }
 
   private resize() {
     const rect = this.wrap.getBoundingClientRect();
     const w = Math.max(1, rect.width);
     const h = Math.max(1, rect.height);
-    this.camera.width = w;
-    this.camera.height = h;
-    this.renderer?.resize(w, h, Math.min(2, window.devicePixelRatio || 1));
+    this.cssWidth = w;
+    this.viewer?.resize(w, h, Math.min(2, window.devicePixelRatio || 1));
     if (!this.fitted && w > 1) this.fit();
     this.request();
   }
@@ -413,11 +408,11 @@ export class VoxelEditor {
     if (cs.length) {
       const lo = [0, 1, 2].map((a) => Math.min(...cs.map((c) => c[a])));
       const hi = [0, 1, 2].map((a) => Math.max(...cs.map((c) => c[a])) + 1);
-      this.camera.fitBox([lo[0] - b.ox - 0.5, lo[1] - b.oy - 0.5, 0], [hi[0] - b.ox + 0.5, hi[1] - b.oy + 0.5, hi[2] + 0.5], 0.92);
+      this.viewer?.fit_box(new Float64Array([lo[0] - b.ox - 0.5, lo[1] - b.oy - 0.5, 0]), new Float64Array([hi[0] - b.ox + 0.5, hi[1] - b.oy + 0.5, hi[2] + 0.5]), 0.92);
     } else {
-      this.camera.fitBox([0, 0, 0], [b.w, b.h, 1]);
+      this.viewer?.fit_box(new Float64Array([0, 0, 0]), new Float64Array([b.w, b.h, 1]), 1.08);
     }
-    this.fitted = this.camera.width > 1;
+    this.fitted = this.cssWidth > 1;
     this.request();
   }
 
@@ -426,15 +421,16 @@ export class VoxelEditor {
   /** What a click at (sx, sy) would do: add a unit in an empty cell or remove the one hit. */
   private target(sx: number, sy: number, remove: boolean): { cell: number; kind: 'add' | 'remove' } | null {
     const b = this.box;
-    const cells = this.frame.cells;
-    const hit: Hit | null = this.camera.pick([b.w, b.h, b.d], (i) => cells[i] !== 0, sx, sy);
+    const v = this.viewer;
+    if (!v) return null;
+    const hit = (v.pick_cells(this.cells, sx, sy) as Picked).hit;
     if (remove) return hit ? { cell: hit.cell, kind: 'remove' } : null;
     let cell = -1;
     if (hit) {
       cell = hit.front;
     } else {
       const floor = this.sliceMode === 'one' ? this.level : 0;
-      const p = this.camera.hitPlaneZ(sx, sy, floor);
+      const p = v.hit_plane_z(sx, sy, floor);
       if (p) {
         const x = Math.floor(p[0]);
         const y = Math.floor(p[1]);
@@ -479,7 +475,7 @@ export class VoxelEditor {
 
   /** Arrow keys move the cursor along the lattice axis nearest to the screen direction. */
   private moveCursor(right: number, upScreen: number) {
-    const yaw = this.camera.yaw;
+    const yaw = this.viewer?.yaw() ?? 0;
     // Screen right is (-sin yaw, cos yaw) in the ground plane; screen up (away) is -(cos, sin).
     const rx = -Math.sin(yaw);
     const ry = Math.cos(yaw);
@@ -495,16 +491,19 @@ export class VoxelEditor {
 
   private bind() {
     const c = this.canvas;
-    const camera = cameraGestures(() => this.camera, () => this.request());
     this.gestures = bindGestures(
       c,
       {
         press: () => c.focus({ preventScroll: true }),
-        drag: (dx, dy, kind, at) => {
+        drag: (dx, dy, kind) => {
           this.pointerCursor = null;
-          camera.drag(dx, dy, kind, at);
+          this.viewer?.drag(dx, dy, kind === 'orbit');
+          this.request();
         },
-        zoom: camera.zoom,
+        zoom: (factor, at) => {
+          this.viewer?.zoom(factor, at.x, at.y);
+          this.request();
+        },
         tap: (at, button, mods) => {
           const removing = this.tool === 'remove' || mods.altKey || button === 2;
           const t = this.target(at.x, at.y, removing);
@@ -550,7 +549,7 @@ export class VoxelEditor {
       return;
     } else if (e.shiftKey && e.key.startsWith('Arrow')) {
       const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[e.key] ?? [0, 0];
-      this.camera.orbit(d[0] * 24, d[1] * 24);
+      this.viewer?.drag(d[0] * 24, d[1] * 24, true);
       this.request();
     } else {
       switch (e.key) {
@@ -588,11 +587,11 @@ export class VoxelEditor {
           break;
         case '+':
         case '=':
-          this.camera.zoom(1.25);
+          this.viewer?.zoom(1.25, 0, 0);
           this.request();
           break;
         case '-':
-          this.camera.zoom(0.8);
+          this.viewer?.zoom(0.8, 0, 0);
           this.request();
           break;
         case '0':
@@ -654,26 +653,6 @@ function editorLayout(dims: [number, number, number]): Layout {
     cell_labels: false,
     chart: '',
     goal: true,
-  };
-}
-
-function emptyFrame(n: number): Frame {
-  return {
-    steps: 0,
-    furthest: 0,
-    maxSteps: 0,
-    finished: false,
-    completed: false,
-    hash: null,
-    metrics: {},
-    cells: new Uint8Array(n),
-    field: null,
-    agents: new Uint32Array(0),
-    events: new Uint32Array(0),
-    bonds: null,
-    stepsPerSecond: 0,
-    scene: null,
-    chart: null,
   };
 }
 

@@ -1,7 +1,7 @@
 // The inspector: what a click on the lattice does (inspect a cell or apply the selected tool), the
 // facts of the cell under the pointer or the keyboard cursor, and, in 3-D, where the unit under
 // the pointer (else the selected one) could move.
-import type { Hit } from '../render/camera';
+import type { Hit } from '../render/view';
 import { cellCoords } from '../render/geometry';
 import type { Announcer } from '../ui/announce';
 import { KeyCursor } from '../ui/cursor';
@@ -26,13 +26,14 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
 
   const coords = (cell: number): string => (session.layout ? cellCoords(session.layout, cell) : '');
   const cellText = (cell: number) => `cell ${coords(cell)}`;
-  function cellName(cell: number): string {
-    const { layout, frame } = session;
-    if (!layout || !frame) return '';
-    const code = frame.cells[cell];
-    return layout.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
+  /** What is on a cell as the run stands, asked of the worker (which holds the lattice). */
+  async function cellName(cell: number): Promise<string> {
+    const code = await sim.code(cell);
+    return session.layout?.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
   }
-  const cellFacts = (cell: number) => el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: cellName(cell) }));
+  const cellFacts = (cell: number, name: string) => el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: name }));
+  /** The cell whose facts the panel shows (or is about to): answers for another arrive too late. */
+  let shown = -1;
 
   async function click(cell: number, hit: Hit | null) {
     const layout = session.layout;
@@ -52,15 +53,19 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
       return;
     }
     const facts = await sim.inspect(cell);
-    showInspector(cell, facts);
+    await showInspector(cell, facts);
   }
 
   function hover(cell: number) {
+    shown = cell;
     if (cell < 0) {
       inspector.hidden = true;
     } else {
-      inspector.hidden = false;
-      inspector.replaceChildren(cellFacts(cell));
+      void cellName(cell).then((name) => {
+        if (shown !== cell) return;
+        inspector.hidden = false;
+        inspector.replaceChildren(cellFacts(cell, name));
+      });
     }
     if (view.is3d) hoverProbe.request(cell);
   }
@@ -75,7 +80,7 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     (cell, facts) => {
       if (cell !== view.marks.hover) return;
       hoverReach = reachOf(facts);
-      if (facts && cell >= 0) showHoverFacts(cell, facts);
+      if (facts && cell >= 0) void showHoverFacts(cell, facts);
       showReach();
     },
   );
@@ -95,8 +100,10 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     view.marks.highlightValues = reach?.values ?? [];
     view.request();
   }
-  function showHoverFacts(cell: number, facts: Facts) {
-    const dl = cellFacts(cell);
+  async function showHoverFacts(cell: number, facts: Facts) {
+    shown = cell;
+    const dl = cellFacts(cell, await cellName(cell));
+    if (shown !== cell) return;
     if (typeof facts.type_list === 'string') dl.append(el('dt', { text: 'type-list' }), el('dd', { text: facts.type_list }));
     if (typeof facts.difference === 'number') dl.append(el('dt', { text: 'difference' }), el('dd', { text: formatNumber(facts.difference) }));
     if (Array.isArray(facts.reachable)) dl.append(el('dt', { text: 'reachable' }), el('dd', { text: facts.movable === false ? 'cannot move' : `${facts.reachable.length} position${facts.reachable.length === 1 ? '' : 's'}` }));
@@ -115,8 +122,10 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     hoverReach = null;
     selectReach = null;
   }
-  function showInspector(cell: number, facts: Record<string, unknown>) {
-    const dl = cellFacts(cell);
+  async function showInspector(cell: number, facts: Record<string, unknown>) {
+    shown = cell;
+    const dl = cellFacts(cell, await cellName(cell));
+    if (shown !== cell) return;
     for (const [k, v] of Object.entries(facts)) {
       if (STRUCTURE_FACTS.includes(k)) continue;
       dl.append(el('dt', { text: k.replace(/_/g, ' ') }), el('dd', { text: typeof v === 'object' ? JSON.stringify(v) : formatNumber(v) }));
@@ -138,7 +147,7 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
   // The keyboard way to click: a cursor cell moved with the arrows.
   const keyCursor = new KeyCursor(byId('canvas-wrap'), {
     layout: () => session.layout,
-    cells: () => session.frame?.cells ?? null,
+    middle: () => sim.middle(),
     show(cell) {
       view.marks.cursor = cell >= 0 ? { cell, kind: 'cursor' } : null;
       view.request();
@@ -151,7 +160,7 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
         announcer.say('Cursor hidden; the arrows step the run again.');
         return;
       }
-      announcer.say(`Cursor at ${cellText(cell)}, ${cellName(cell)}. Enter: ${run.toolLabel()}.`);
+      void cellName(cell).then((name) => announcer.say(`Cursor at ${cellText(cell)}, ${name}. Enter: ${run.toolLabel()}.`));
     },
   });
 

@@ -1,50 +1,91 @@
-// The lattice view: owns the canvases, the renderer and the camera; turns gestures (pointer,
-// wheel, pinch: see gestures.ts) and keyboard input into camera moves and cell clicks; draws at
-// most once per animation frame.
-import type { Frame, Layout, SceneInfo } from '../types';
-import { annotate, type Marks } from './annotate';
-import { Camera2D, Camera3D, type Camera, type Hit, cameraGestures, fitCamera, occupiedBox } from './camera';
-import { lampPlacement } from './cubic-scene';
-import { type Bounds, HEX_RADIUS, cellCentre, is3d, sameLattice } from './geometry';
+// The lattice view in the page: the canvases, the gestures and the marks. The drawing itself
+// happens in the simulation worker (crate/view, through the wasm Viewer), on OffscreenCanvases
+// transferred from here, next to the model's buffers: this side sends sizes, camera moves and
+// marks, asks what is under the pointer, and learns from each frame what was drawn.
+import type { Picked, RendererChoice, ViewMarks } from '../sim/protocol';
+import type { SimClient } from '../sim/client';
+import type { Frame, Layout } from '../types';
+import { is3d } from './geometry';
 import { bindGestures } from './gestures';
-import { range } from './palette';
-import { createRenderer, type Overlay, type Renderer, type RendererKind } from './renderer';
+
+export type RendererKind = 'webgl2' | 'canvas2d';
+
+/** A 3-D pick: the unit hit and the empty cell in front of the face hit (-1 off the lattice). */
+export type Hit = NonNullable<Picked['hit']>;
+
+/** The page's marks; -1 is "none" for the cells. */
+export interface Marks {
+  arrows: boolean;
+  labels: boolean;
+  hover: number;
+  highlight: number[];
+  /** A value per highlighted cell (the difference at a reachable position), labelled in 3-D. */
+  highlightValues?: number[];
+  /** The cell picked with the inspector, outlined. */
+  selected?: number;
+  /** An editing cursor in 3-D (where a unit would be added or removed), or the keyboard cursor. */
+  cursor?: { cell: number; kind: 'add' | 'remove' | 'cursor' } | null;
+  /** One slot's signals: pairs (cell, lit faces as a mask of lattice directions). */
+  signals?: number[];
+  /** Units drawn displaced over the view: triples (cell, dx, dy) in cells, y down. */
+  displaced?: number[];
+  /** 3-D view options (default on). */
+  ghost?: boolean;
+  bonds?: boolean;
+}
 
 export interface ViewEvents {
   /** A click (or tap) on a cell; `hit` carries the 3-D face information. */
   click(cell: number, hit: Hit | null): void;
   hover(cell: number): void;
-  /** A frame from the worker was drawn; the worker may send the next. */
+  /** A frame from the worker was shown; the worker may send the next. */
   drawn(): void;
 }
 
+/** The marks as the worker's view reads them. */
+function forWorker(m: Marks): ViewMarks {
+  const cell = (i: number | undefined) => (i !== undefined && i >= 0 ? i : null);
+  return {
+    arrows: m.arrows,
+    labels: m.labels,
+    hover: cell(m.hover),
+    highlight: m.highlight,
+    highlightValues: m.highlightValues ?? [],
+    selected: cell(m.selected),
+    cursor: m.cursor && m.cursor.cell >= 0 ? m.cursor : null,
+    signals: m.signals ?? [],
+    displaced: m.displaced ?? [],
+    ghost: m.ghost !== false,
+    bonds: m.bonds !== false,
+  };
+}
+
 export class View {
-  private renderer: Renderer | null = null;
-  private camera: Camera = new Camera2D();
   private layout: Layout | null = null;
-  private frame: Frame | null = null;
-  private world: SceneInfo | null = null;
-  /** Fit frames what is on the lattice, so after a new lattice it waits for the first frame. */
-  private fitPending = false;
-  private overlay: Overlay | null = null;
-  private pendingFrame = false;
+  private kind: RendererKind | null = null;
+  private range: [number, number] | null = null;
+  private transferred = false;
+  private prefer: RendererChoice = 'auto';
   private scheduled = false;
+  private sentMarks = '';
   private cssWidth = 1;
   private cssHeight = 1;
-  private dpr = 1;
   /** Drawing-buffer multiple used while recording at 2×; 1 otherwise. */
   private captureScale = 1;
+  /** One hover pick in flight at a time; the latest point waits for it. */
+  private hoverBusy = false;
+  private hoverNext: { x: number; y: number } | null = null;
   private gestures: { destroy(): void } | null = null;
+  private kindKnown: ((kind: RendererKind) => void) | null = null;
   readonly marks: Marks = { arrows: true, labels: true, hover: -1, highlight: [], selected: -1, ghost: true, bonds: true };
-  private readonly annotations: CanvasRenderingContext2D;
 
   constructor(
     private canvas: HTMLCanvasElement,
-    annotationCanvas: HTMLCanvasElement,
+    private annotations: HTMLCanvasElement,
     private readonly wrap: HTMLElement,
+    private readonly sim: () => SimClient,
     private readonly on: ViewEvents,
   ) {
-    this.annotations = annotationCanvas.getContext('2d')!;
     new ResizeObserver(() => this.resize()).observe(wrap);
     this.bind(canvas);
   }
@@ -55,104 +96,85 @@ export class View {
   }
 
   get rendererKind(): RendererKind | null {
-    return this.renderer?.kind ?? null;
+    return this.kind;
   }
 
-  /** Creates the renderer, replacing the canvas when switching (a canvas keeps its first context). */
-  async useRenderer(prefer: RendererKind | 'auto') {
-    if (this.renderer) {
-      this.renderer.destroy();
+  /** The worker's view started drawing with `kind`. */
+  started(kind: RendererKind) {
+    this.kind = kind;
+    this.canvas.dataset.renderer = kind;
+    this.kindKnown?.(kind);
+    this.kindKnown = null;
+  }
+
+  /**
+   * Gives the worker the canvases to draw on with the preferred renderer. A canvas transfers
+   * once, so each new renderer (and each restarted worker) gets fresh canvases in place of the old.
+   */
+  useRenderer(prefer: RendererChoice): Promise<RendererKind> {
+    this.prefer = prefer;
+    const known = new Promise<RendererKind>((resolve) => {
+      this.kindKnown = resolve;
+    });
+    this.sim().useView(() => this.canvases());
+    this.resize();
+    this.sentMarks = '';
+    this.request();
+    return known;
+  }
+
+  private canvases() {
+    if (this.transferred) {
       const fresh = this.canvas.cloneNode(false) as HTMLCanvasElement;
       this.canvas.replaceWith(fresh);
       this.canvas = fresh;
       this.bind(fresh);
+      const notes = this.annotations.cloneNode(false) as HTMLCanvasElement;
+      this.annotations.replaceWith(notes);
+      this.annotations = notes;
     }
-    this.renderer = await createRenderer(this.canvas, prefer);
-    this.resize();
-    if (this.layout) this.renderer.setLayout(this.layout);
-    this.request();
+    this.transferred = true;
+    delete this.canvas.dataset.scene;
+    return { canvas: this.canvas.transferControlToOffscreen(), annotations: this.annotations.transferControlToOffscreen(), prefer: this.prefer };
   }
 
   setLayout(layout: Layout) {
-    const sameShape = sameLattice(this.layout, layout);
     this.layout = layout;
-    this.frame = null;
-    this.world = null;
-    if (!sameShape) {
-      this.camera = is3d(layout) ? new Camera3D() : new Camera2D();
-      this.sizeCamera();
-      fitCamera(this.camera, layout);
-      this.fitPending = true;
-    }
-    this.renderer?.setLayout(layout);
-    this.request();
   }
 
+  /** A frame was drawn in the worker: what it drew, for the page and its tests. */
   setFrame(frame: Frame) {
-    this.frame = frame;
-    if (frame.scene) this.world = frame.scene;
-    if (this.fitPending) this.fit();
-    if (frame.field) {
-      const [min, max] = range(frame.field.data);
-      this.overlay = { name: frame.field.name, data: frame.field.data, min, max };
-    } else {
-      this.overlay = null;
-    }
-    this.pendingFrame = true;
-    this.request();
+    this.range = frame.overlayRange;
+    if (frame.drawn) this.canvas.dataset.scene = JSON.stringify(frame.drawn);
+    else delete this.canvas.dataset.scene;
+    this.on.drawn();
   }
 
   get overlayRange(): [number, number] | null {
-    return this.overlay ? [this.overlay.min, this.overlay.max] : null;
+    return this.range;
   }
 
-  /**
-   * Frames what is on the lattice with a margin: the units (and in 3-D the ghost and the lamp),
-   * or the whole lattice when it is empty. Before the first frame of a run it waits for it.
-   */
+  /** Frames what is on the lattice with a margin (in 3-D with the ghost and the lamp). */
   fit() {
-    if (!this.layout) return;
-    const c = this.camera;
-    if (!this.frame) {
-      this.fitPending = true;
-      return;
-    }
-    this.fitPending = false;
-    if (c.kind === '3d') {
-      const box = occupiedBox(this.layout.dims, this.frame.cells, this.marks.ghost === false ? [] : this.world?.ghost ?? []);
-      if (box) {
-        // The lamp of a light source is part of the picture.
-        const lamp = this.world?.light ? lampPlacement(box, this.world.light, this.layout.dims) : null;
-        if (lamp) {
-          const r = lamp.size * 0.9;
-          for (let a = 0; a < 3; a++) {
-            box.min[a] = Math.min(box.min[a], lamp.at[a] - r);
-            box.max[a] = Math.max(box.max[a], lamp.at[a] + r);
-          }
-        }
-        c.fitBox(box.min, box.max);
-      } else {
-        fitCamera(c, this.layout);
-      }
-    } else {
-      const content = contentBounds(this.layout, this.frame.cells);
-      if (content) c.fit(content);
-      else fitCamera(c, this.layout);
-    }
-    this.request();
+    this.sim().camera({ op: 'fit' });
   }
 
   zoom(factor: number) {
-    this.camera.zoom(factor);
-    this.request();
+    this.sim().camera({ op: 'zoom', factor, x: this.cssWidth / 2, y: this.cssHeight / 2 });
   }
 
+  /** Sends the marks to the worker's view if they changed (at most once per animation frame). */
   request() {
     if (this.scheduled) return;
     this.scheduled = true;
     requestAnimationFrame(() => {
       this.scheduled = false;
-      this.draw();
+      const marks = forWorker(this.marks);
+      const text = JSON.stringify(marks);
+      if (text !== this.sentMarks) {
+        this.sentMarks = text;
+        this.sim().setMarks(marks);
+      }
     });
   }
 
@@ -166,89 +188,51 @@ export class View {
     this.resize();
   }
 
-  /**
-   * The view as a picture: the lattice and its annotations drawn now, at the drawing buffer's
-   * resolution, composited into one bitmap. Drawing just before copying makes the copy independent
-   * of when the browser last presented the canvas.
-   */
+  /** The view as a picture, lattice and annotations, drawn by the worker just before copying. */
   captureFrame(): Promise<ImageBitmap> {
-    if (!this.drawScene()) return Promise.reject(new Error('nothing is drawn yet'));
-    const out = new OffscreenCanvas(this.canvas.width, this.canvas.height);
-    const ctx = out.getContext('2d')!;
-    ctx.drawImage(this.canvas, 0, 0);
-    ctx.drawImage(this.annotations.canvas, 0, 0, out.width, out.height);
-    return Promise.resolve(out.transferToImageBitmap());
-  }
-
-  /** Draws the lattice and its annotations as they stand; false when there is nothing to draw. */
-  private drawScene(): boolean {
-    if (!(this.renderer && this.layout && this.frame)) return false;
-    const scene = { layout: this.layout, frame: this.frame, overlay: this.overlay, camera: this.camera, world: this.world, marks: this.marks };
-    this.renderer.draw(scene);
-    annotate(this.annotations, this.dpr, scene, this.marks);
-    return true;
-  }
-
-  private draw() {
-    this.drawScene();
-    if (this.pendingFrame) {
-      this.pendingFrame = false;
-      this.on.drawn();
-    }
-  }
-
-  private sizeCamera() {
-    this.camera.width = this.cssWidth;
-    this.camera.height = this.cssHeight;
+    return this.sim().capture();
   }
 
   private resize() {
     const rect = this.wrap.getBoundingClientRect();
     this.cssWidth = Math.max(1, rect.width);
     this.cssHeight = Math.max(1, rect.height);
-    this.dpr = Math.min(2, window.devicePixelRatio || 1) * this.captureScale;
-    const c = this.camera;
-    const hadSize = c.width > 1;
-    const [wx, wy] = c.kind === '2d' && hadSize ? c.toWorld(c.width / 2, c.height / 2) : [0, 0];
-    this.sizeCamera();
-    if (c.kind === '2d' && hadSize) {
-      c.cx = wx;
-      c.cy = wy;
-    } else if (this.layout && !(c.kind === '3d' && hadSize)) {
-      this.fit();
-    }
-    this.renderer?.resize(this.cssWidth, this.cssHeight, this.dpr);
-    const a = this.annotations.canvas;
-    a.width = Math.round(this.cssWidth * this.dpr);
-    a.height = Math.round(this.cssHeight * this.dpr);
-    this.request();
+    const dpr = Math.min(2, window.devicePixelRatio || 1) * this.captureScale;
+    this.sim().resize(this.cssWidth, this.cssHeight, dpr);
   }
 
-  private pick(x: number, y: number): { cell: number; hit: Hit | null } {
-    if (!this.layout || !this.frame) return { cell: -1, hit: null };
-    if (this.camera.kind === '2d') return { cell: this.camera.pick(this.layout, x, y), hit: null };
-    const cells = this.frame.cells;
-    const hit = this.camera.pick(this.layout.dims, (i) => cells[i] !== 0, x, y);
-    return { cell: hit?.cell ?? -1, hit };
+  private async hoverAt(x: number, y: number) {
+    if (this.hoverBusy) {
+      this.hoverNext = { x, y };
+      return;
+    }
+    this.hoverBusy = true;
+    const picked = await this.sim().pick(x, y);
+    this.hoverBusy = false;
+    const cell = picked?.cell ?? -1;
+    if (cell !== this.marks.hover) {
+      this.marks.hover = cell;
+      this.on.hover(cell);
+      this.request();
+    }
+    const next = this.hoverNext;
+    this.hoverNext = null;
+    if (next) void this.hoverAt(next.x, next.y);
   }
 
   private bind(canvas: HTMLCanvasElement) {
     this.gestures?.destroy();
     this.gestures = bindGestures(canvas, {
-      ...cameraGestures(() => this.camera, () => this.request()),
+      drag: (dx, dy, kind) => this.sim().camera({ op: 'drag', dx, dy, orbit: kind === 'orbit' }),
+      zoom: (factor, at) => this.sim().camera({ op: 'zoom', factor, x: at.x, y: at.y }),
       tap: (at) => {
-        const { cell, hit } = this.pick(at.x, at.y);
-        this.on.click(cell, hit);
+        void this.sim()
+          .pick(at.x, at.y)
+          .then((picked) => this.on.click(picked?.cell ?? -1, picked?.hit ?? null));
       },
-      hover: (at) => {
-        const { cell } = this.pick(at.x, at.y);
-        if (cell !== this.marks.hover) {
-          this.marks.hover = cell;
-          this.on.hover(cell);
-          this.request();
-        }
-      },
+      hover: (at) => void this.hoverAt(at.x, at.y),
       leave: () => {
+        this.hoverNext = null;
         if (this.marks.hover !== -1) {
           this.marks.hover = -1;
           this.on.hover(-1);
@@ -262,29 +246,9 @@ export class View {
       if (!dir || !(e.shiftKey || e.altKey) || e.ctrlKey || e.metaKey) return;
       e.preventDefault();
       e.stopPropagation();
-      if (e.shiftKey && this.camera.kind === '3d') this.camera.orbit(dir[0] * 24, dir[1] * 24);
-      else this.camera.pan(-dir[0] * 40, -dir[1] * 40);
-      this.request();
+      const orbit = e.shiftKey && this.is3d;
+      const step = orbit ? 24 : -40;
+      this.sim().camera({ op: 'drag', dx: dir[0] * step, dy: dir[1] * step, orbit });
     });
   }
-}
-
-/** World bounds of the non-empty cells of a planar lattice, two cells wider all round. */
-function contentBounds(layout: Layout, cells: Uint8Array): Bounds | null {
-  const w = layout.dims[0];
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (let i = 0; i < cells.length; i++) {
-    if (!cells[i]) continue;
-    const [cx, cy] = cellCentre(layout.lattice, i % w, Math.floor(i / w));
-    if (cx < x0) x0 = cx;
-    if (cx > x1) x1 = cx;
-    if (cy < y0) y0 = cy;
-    if (cy > y1) y1 = cy;
-  }
-  if (x1 < x0) return null;
-  const pad = 2 + (layout.lattice === 'hex' ? HEX_RADIUS : 0.5);
-  return { x0: x0 - pad, y0: y0 - pad, x1: x1 + pad, y1: y1 + pad };
 }

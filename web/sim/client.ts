@@ -1,7 +1,7 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable.
 import type { Frame, Layout } from '../types';
-import type { FromWorker, ToWorker } from './protocol';
+import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
 
 export interface SimEvents {
   loaded(layout: Layout, scenario: string): void;
@@ -14,7 +14,12 @@ export interface SimEvents {
   goal(met: boolean, because: string, steps: number): void;
   /** The worker has not answered for `ms` milliseconds (`ms` is 0 once it answers again). */
   stalled(ms: number): void;
+  /** The worker's view started drawing with this renderer. */
+  viewer(kind: 'webgl2' | 'canvas2d'): void;
 }
+
+/** Canvases for a (new) worker's view: each worker needs fresh ones, a canvas transfers once. */
+export type ViewCanvases = () => { canvas: OffscreenCanvas; annotations: OffscreenCanvas; prefer: RendererChoice };
 
 /** How long the worker may leave a ping unanswered before the page says so. */
 const STALL_MS = 4000;
@@ -25,6 +30,10 @@ export class SimClient {
   private pendingLoad: string | null = null;
   private inspectId = 0;
   private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
+  private answers = new Map<number, (value: unknown) => void>();
+  private askId = 0;
+  private canvases: ViewCanvases | null = null;
+  private viewState: { size: { width: number; height: number; dpr: number } | null; marks: ViewMarks | null } = { size: null, marks: null };
   private speed = 30;
   private overlay: string | null = null;
   private chart: { metric: string | null; points: number } = { metric: null, points: 400 };
@@ -62,6 +71,60 @@ export class SimClient {
     this.send({ type: 'speed', stepsPerSecond: this.speed });
     this.send({ type: 'overlay', field: this.overlay });
     this.send({ type: 'chart', ...this.chart });
+    this.attachView();
+  }
+
+  /** Gives the worker its view: now, and again after every restart. */
+  useView(canvases: ViewCanvases) {
+    this.canvases = canvases;
+    this.attachView();
+  }
+
+  private attachView() {
+    if (!this.canvases) return;
+    const { canvas, annotations, prefer } = this.canvases();
+    const { size, marks } = this.viewState;
+    if (size) this.send({ type: 'resize', ...size });
+    if (marks) this.send({ type: 'marks', marks });
+    this.worker.postMessage({ type: 'view', canvas, annotations, prefer } satisfies ToWorker, [canvas, annotations]);
+  }
+
+  resize(width: number, height: number, dpr: number) {
+    this.viewState.size = { width, height, dpr };
+    this.send({ type: 'resize', width, height, dpr });
+  }
+  setMarks(marks: ViewMarks) {
+    this.viewState.marks = marks;
+    this.send({ type: 'marks', marks });
+  }
+  camera(move: CameraMove) {
+    this.send({ type: 'camera', move });
+  }
+  /** What is under a point of the view (CSS pixels). */
+  pick(x: number, y: number): Promise<Picked> {
+    return this.ask((id) => ({ type: 'pick', id, x, y })) as Promise<Picked>;
+  }
+  /** The code of one cell as the run stands. */
+  code(cell: number): Promise<number> {
+    return this.ask((id) => ({ type: 'code', id, cell })) as Promise<number>;
+  }
+  /** The middle occupied cell (in memory order), or -1. */
+  middle(): Promise<number> {
+    return this.ask((id) => ({ type: 'middle', id })) as Promise<number>;
+  }
+  /** The view drawn now, lattice and annotations, as one bitmap. */
+  async capture(): Promise<ImageBitmap> {
+    const bitmap = (await this.ask((id) => ({ type: 'capture', id }))) as ImageBitmap | null;
+    if (!bitmap) throw new Error('nothing is drawn yet');
+    return bitmap;
+  }
+
+  private ask(message: (id: number) => ToWorker): Promise<unknown> {
+    const id = ++this.askId;
+    return new Promise((resolve) => {
+      this.answers.set(id, resolve);
+      this.send(message(id));
+    });
   }
 
   private send(msg: ToWorker) {
@@ -96,6 +159,15 @@ export class SimClient {
       case 'scenario':
         this.on.scenario(msg.scenario);
         return;
+      case 'viewer':
+        this.on.viewer(msg.kind);
+        return;
+      case 'answer': {
+        const waiter = this.answers.get(msg.id);
+        this.answers.delete(msg.id);
+        waiter?.(msg.value);
+        return;
+      }
       case 'inspected': {
         const waiter = this.inspectWaiters.get(msg.id);
         this.inspectWaiters.delete(msg.id);
@@ -117,6 +189,8 @@ export class SimClient {
   private restart() {
     this.worker.terminate();
     this.inspectWaiters.clear();
+    for (const waiter of this.answers.values()) waiter(null);
+    this.answers.clear();
     this.unanswered = null;
     if (this.stalledFor) {
       this.stalledFor = 0;

@@ -1,5 +1,37 @@
-// Messages between the page and the simulation worker.
+// Messages between the page and the simulation worker. The worker also draws the lattice: the
+// page transfers its canvases once ('view') and then sends sizes, gestures and marks; frames
+// carry only what the panels show, never the lattice's buffers.
 import type { Frame, Layout } from '../types';
+
+export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
+
+/** The page's marks over the lattice, as the view reads them (kumiki_view::scene::Marks). */
+export interface ViewMarks {
+  arrows: boolean;
+  labels: boolean;
+  hover: number | null;
+  highlight: number[];
+  highlightValues: number[];
+  selected: number | null;
+  cursor: { cell: number; kind: 'add' | 'remove' | 'cursor' } | null;
+  signals: number[];
+  displaced: number[];
+  ghost: boolean;
+  bonds: boolean;
+}
+
+export type CameraMove =
+  | { op: 'drag'; dx: number; dy: number; orbit: boolean }
+  | { op: 'zoom'; factor: number; x: number; y: number }
+  | { op: 'fit' };
+
+export interface Picked {
+  cell: number;
+  /** The cell's code in the frame drawn (0: empty). */
+  code: number;
+  /** In 3-D, the face hit: the empty cell in front of it (-1 off the lattice). */
+  hit: { cell: number; front: number } | null;
+}
 
 export type ToWorker =
   | { type: 'load'; scenario: string }
@@ -15,7 +47,15 @@ export type ToWorker =
   | { type: 'inspect'; cell: number; id: number }
   | { type: 'ack' }
   | { type: 'crash' }
-  | { type: 'ping'; id: number };
+  | { type: 'ping'; id: number }
+  | { type: 'view'; canvas: OffscreenCanvas; annotations: OffscreenCanvas; prefer: RendererChoice }
+  | { type: 'resize'; width: number; height: number; dpr: number }
+  | { type: 'camera'; move: CameraMove }
+  | { type: 'marks'; marks: ViewMarks }
+  | { type: 'pick'; id: number; x: number; y: number }
+  | { type: 'code'; id: number; cell: number }
+  | { type: 'middle'; id: number }
+  | { type: 'capture'; id: number };
 
 export type FromWorker =
   | { type: 'ready' }
@@ -27,4 +67,6 @@ export type FromWorker =
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
   | { type: 'panic'; message: string }
   | { type: 'pong'; id: number }
-  | { type: 'goal'; met: boolean; because: string; steps: number };
+  | { type: 'goal'; met: boolean; because: string; steps: number }
+  | { type: 'viewer'; kind: 'webgl2' | 'canvas2d' }
+  | { type: 'answer'; id: number; value: unknown };

@@ -1,9 +1,11 @@
-// The simulation worker: owns the wasm Sim, runs steps at the requested pace and posts frames.
-// Frames are flow-controlled: the next is sent only after the page has drawn the last one, so a
+// The simulation worker: owns the wasm Sim and the lattice view (a wasm Viewer drawing on the
+// page's transferred OffscreenCanvas), runs steps at the requested pace and draws at most once
+// per animation frame, reading the model's buffers in place. What the page's panels show goes
+// out as frames, flow-controlled: the next is sent only after the page has taken the last, so a
 // fast simulation never floods the page. Timing here paces the run; it never enters the model.
-import init, { Sim, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
+import init, { Sim, Viewer, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
 import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
-import type { ChartBand, Frame, Metrics, SceneInfo } from '../types';
+import type { ChartBand, Frame, Metrics, RenderStats, SceneInfo } from '../types';
 import type { FromWorker, ToWorker } from './protocol';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -15,9 +17,8 @@ const SLICE_MS = 12;
 const HASH_EVERY_MS = 250;
 
 let sim: Sim | null = null;
+let viewer: Viewer | null = null;
 let maxSteps = 0;
-/** Whether the model reports bonds (an empty list on the first frame means it never will). */
-let hasBonds = false;
 let playing = false;
 let stepsPerSecond = 30;
 let overlay: string | null = null;
@@ -25,7 +26,13 @@ let overlay: string | null = null;
 let chartMetric: string | null = null;
 let chartPoints = 400;
 let awaitingAck = false;
+/** The page has not been told of the state as it stands. */
 let dirty = false;
+/** The state changed since the view last drew it. */
+let changed = false;
+let drawScheduled = false;
+/** What the last draw reported, for the next frame. */
+let drawn: RenderStats | null = null;
 let lastHashAt = 0;
 let budget = 0;
 let lastTick = 0;
@@ -79,8 +86,8 @@ function sendFrame(force = false) {
     const now = performance.now();
     const withHash = !playing || now - lastHashAt >= HASH_EVERY_MS;
     if (withHash) lastHashAt = now;
-    const data = overlay ? s.field(overlay) : undefined;
     const scene = s.scene_if_changed() as SceneInfo | null;
+    const range = overlay ? viewer?.overlay_range() : undefined;
     return {
       steps: s.steps(),
       furthest: s.furthest(),
@@ -89,21 +96,17 @@ function sendFrame(force = false) {
       completed: s.completed(),
       hash: withHash ? s.hash() : null,
       metrics: s.metrics() as Metrics,
-      cells: s.cells(),
-      field: overlay && data ? { name: overlay, data } : null,
-      agents: s.agents(),
-      events: s.events(),
-      bonds: hasBonds ? s.bonds() : null,
       stepsPerSecond: playing ? measuredRate() : 0,
       scene,
       chart: chartMetric ? chartBand(s, chartMetric) : null,
+      overlayRange: range ? [range[0], range[1]] : null,
+      drawn,
+      work: work(),
     };
   });
   if (!frame) return;
-  const transfer: Transferable[] = [frame.cells.buffer, frame.agents.buffer, frame.events.buffer];
+  const transfer: Transferable[] = [];
   if (frame.chart) transfer.push(frame.chart.steps.buffer, frame.chart.min.buffer, frame.chart.max.buffer);
-  if (frame.field) transfer.push(frame.field.data.buffer);
-  if (frame.bonds) transfer.push(frame.bonds.buffer);
   awaitingAck = true;
   dirty = false;
   post({ type: 'frame', frame }, transfer);
@@ -111,6 +114,49 @@ function sendFrame(force = false) {
     goalJudged = true;
     judge(s);
   } else if (!frame.finished) goalJudged = false;
+}
+
+/** Milliseconds spent in the model's steps since the worker started. */
+let stepMs = 0;
+
+function work(): Frame['work'] {
+  const [frames, uploadMs, drawMs] = viewer ? viewer.timing() : [0, 0, 0];
+  return { stepMs, frames, uploadMs, drawMs };
+}
+
+/** Draws the lattice as it stands, now. */
+function draw() {
+  if (!viewer || !sim) return;
+  const v = viewer;
+  const s = sim;
+  if (changed) v.frame_changed();
+  changed = false;
+  const stats = guard('step', () => v.draw_sim(s, overlay ?? undefined) as RenderStats | null);
+  if (stats === undefined) return;
+  // What was drawn changed (marks hid the ghost, a hover highlighted cells): the page is told.
+  if (JSON.stringify(stats) !== JSON.stringify(drawn)) dirty = true;
+  drawn = stats;
+}
+
+const frameTimer: (f: () => void) => void =
+  typeof scope.requestAnimationFrame === 'function' ? (f) => scope.requestAnimationFrame(f) : (f) => setTimeout(f, 16);
+
+/** Draws at the next animation frame, then tells the page (once it took the last frame). */
+function redraw() {
+  if (drawScheduled) return;
+  drawScheduled = true;
+  frameTimer(() => {
+    drawScheduled = false;
+    draw();
+    if (dirty) sendFrame();
+  });
+}
+
+/** The run's state changed: draw it and tell the page. */
+function touched() {
+  changed = true;
+  dirty = true;
+  redraw();
 }
 
 /** The charted metric's record of every step so far, merged to about one point per pixel. */
@@ -133,7 +179,7 @@ function setPlaying(on: boolean) {
   lastTick = performance.now();
   rateWindow = [];
   post({ type: 'playing', playing });
-  if (!playing) dirty = true;
+  if (!playing) touched();
   schedule();
 }
 
@@ -144,7 +190,7 @@ function tick() {
     const step = seekTo;
     seekTo = null;
     if (guard('step', () => s.seek(step)) === undefined && !sim) return;
-    dirty = true;
+    touched();
   }
   if (playing) {
     const s = sim;
@@ -161,6 +207,7 @@ function tick() {
       const n = guard('step', () => s.advance(want));
       if (n === undefined) return;
       const dt = performance.now() - t0;
+      stepMs += dt;
       if (n > 0) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
       taken += n;
       budget -= n;
@@ -168,17 +215,17 @@ function tick() {
     }
     if (!sim) return;
     if (taken > 0) {
-      dirty = true;
+      touched();
       rateWindow.push({ t: performance.now(), steps: s.steps() });
       while (rateWindow.length > 2 && rateWindow[rateWindow.length - 1].t - rateWindow[0].t > 2000) rateWindow.shift();
     }
     if (s.finished()) {
       playing = false;
       post({ type: 'playing', playing: false });
+      draw();
       sendFrame(true);
     }
   }
-  if (dirty) sendFrame();
   if (playing) {
     if (Number.isFinite(stepsPerSecond) && budget < 1) {
       setTimeout(schedule, Math.max(1, Math.min(50, ((1 - budget) * 1000) / stepsPerSecond)));
@@ -197,10 +244,13 @@ function handle(msg: ToWorker) {
       sim?.free();
       sim = created;
       maxSteps = (JSON.parse(created.scenario_json()) as { max_steps: number }).max_steps;
-      hasBonds = created.bonds().length > 0;
       post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
       post({ type: 'playing', playing: false });
       awaitingAck = false;
+      drawn = null;
+      attachLayout();
+      changed = true;
+      draw();
       sendFrame(true);
       return;
     }
@@ -215,8 +265,7 @@ function handle(msg: ToWorker) {
       const s = sim;
       setPlaying(false);
       guard('step', () => s.advance(msg.count));
-      dirty = true;
-      schedule();
+      touched();
       return;
     }
     case 'check':
@@ -235,14 +284,13 @@ function handle(msg: ToWorker) {
       return;
     case 'overlay':
       overlay = msg.field;
-      dirty = true;
-      schedule();
+      touched();
       return;
     case 'chart':
       chartMetric = msg.metric;
       chartPoints = Math.max(1, Math.min(4096, Math.round(msg.points)));
       dirty = true;
-      schedule();
+      redraw();
       return;
     case 'apply': {
       if (!sim) return;
@@ -253,8 +301,7 @@ function handle(msg: ToWorker) {
       });
       if (ok) {
         post({ type: 'scenario', scenario: s.scenario_json() });
-        dirty = true;
-        schedule();
+        touched();
       }
       return;
     }
@@ -267,14 +314,80 @@ function handle(msg: ToWorker) {
     }
     case 'ack':
       awaitingAck = false;
-      if (dirty) schedule();
+      if (dirty) redraw();
       return;
     case 'crash':
       guard('step', () => simulate_panic());
       return;
     case 'ping':
       return;
+    case 'view': {
+      viewer?.free();
+      viewer = null;
+      const created = guard('load', () => new Viewer(msg.canvas, msg.annotations, msg.prefer));
+      if (!created) return;
+      viewer = created;
+      if (size) viewer.resize(size.width, size.height, size.dpr);
+      post({ type: 'viewer', kind: viewer.kind() as 'webgl2' | 'canvas2d' });
+      attachLayout();
+      touched();
+      return;
+    }
+    case 'resize':
+      size = msg;
+      viewer?.resize(msg.width, msg.height, msg.dpr);
+      redraw();
+      return;
+    case 'camera': {
+      const v = viewer;
+      if (!v) return;
+      const m = msg.move;
+      if (m.op === 'drag') v.drag(m.dx, m.dy, m.orbit);
+      else if (m.op === 'zoom') v.zoom(m.factor, m.x, m.y);
+      else v.fit();
+      redraw();
+      return;
+    }
+    case 'marks':
+      viewer?.set_marks(msg.marks);
+      redraw();
+      return;
+    case 'pick': {
+      const v = viewer;
+      const s = sim;
+      const value = v && s ? guard('step', () => v.pick_sim(s, msg.x, msg.y)) : null;
+      post({ type: 'answer', id: msg.id, value: value ?? { cell: -1, code: 0, hit: null } });
+      return;
+    }
+    case 'code':
+      post({ type: 'answer', id: msg.id, value: sim ? sim.cell_code(msg.cell) : 0 });
+      return;
+    case 'middle':
+      post({ type: 'answer', id: msg.id, value: sim ? sim.middle_occupied() : -1 });
+      return;
+    case 'capture': {
+      draw();
+      const v = viewer;
+      let bitmap: ImageBitmap | null = null;
+      try {
+        bitmap = v ? v.capture() : null;
+      } catch (e) {
+        post({ type: 'error', message: `the view could not be captured: ${String(e)}`, context: 'step' });
+      }
+      post({ type: 'answer', id: msg.id, value: bitmap }, bitmap ? [bitmap] : []);
+      return;
+    }
   }
+}
+
+/** The view's size in CSS pixels and its pixel ratio, kept for a view attached later. */
+let size: { width: number; height: number; dpr: number } | null = null;
+
+/** Tells the view the run's lattice and legends. */
+function attachLayout() {
+  const v = viewer;
+  const s = sim;
+  if (v && s) guard('load', () => v.set_layout_of(s));
 }
 
 const queue: ToWorker[] = [];

@@ -8,8 +8,8 @@ import type { Layout } from '../types';
 
 export interface CursorHooks {
   layout(): Layout | null;
-  /** The cells of the frame in view, to start on the structure. */
-  cells(): Uint8Array | null;
+  /** The middle occupied cell of the run in view (-1: none), to start on the structure. */
+  middle(): Promise<number>;
   /** Shows the cursor (or hides it, for -1) in the view. */
   show(cell: number): void;
   /** Clicks a cell with the selected tool, as the pointer does. */
@@ -58,9 +58,15 @@ export class KeyCursor {
     const layout = this.hooks.layout();
     if (!layout) return false;
     if (key === 'c' || key === 'C') {
-      if (this.cell >= 0) this.hide();
-      else this.place(this.start(layout));
-      this.hooks.announce(this.cell);
+      if (this.cell >= 0) {
+        this.hide();
+        this.hooks.announce(-1);
+      } else {
+        void this.start(layout).then((cell) => {
+          this.place(cell);
+          this.hooks.announce(cell);
+        });
+      }
       return true;
     }
     if (this.cell < 0) return false;
@@ -90,11 +96,9 @@ export class KeyCursor {
   }
 
   /** Where the cursor appears: on the structure (its middle cell in memory order), else the middle. */
-  private start(layout: Layout): number {
-    const cells = this.hooks.cells();
-    const occupied: number[] = [];
-    if (cells) for (let i = 0; i < cells.length; i++) if (cells[i]) occupied.push(i);
-    if (occupied.length) return occupied[Math.floor(occupied.length / 2)];
+  private async start(layout: Layout): Promise<number> {
+    const middle = await this.hooks.middle();
+    if (middle >= 0) return middle;
     const [w, h] = layout.dims;
     return Math.floor(h / 2) * w + Math.floor(w / 2);
   }
