@@ -15,9 +15,9 @@ export async function readLabels(names) {
   const W = bitmap.width;
   const H = bitmap.height;
   const dpr = W / ann.clientWidth;
-  const scratch = new OffscreenCanvas(W, H).getContext('2d');
-  scratch.drawImage(bitmap, 0, 0);
-  const data = scratch.getImageData(0, 0, W, H).data;
+  const shown = new OffscreenCanvas(W, H).getContext('2d');
+  shown.drawImage(bitmap, 0, 0);
+  const data = shown.getImageData(0, 0, W, H).data;
   // Label text is filled pure white; bonds are dark and arrows translucent.
   const white = (i) => data[i * 4] >= 200 && data[i * 4 + 1] >= 200 && data[i * 4 + 2] >= 200 && data[i * 4 + 3] >= 250;
   const label = new Int32Array(W * H).fill(-1);

@@ -1,6 +1,7 @@
-//! The page's window into the core: one simulation handle ([`Sim`]), one experiment handle
-//! ([`ExperimentRunner`]) and a few free functions. Buffers are copied into typed arrays; small
-//! records go through serde-wasm-bindgen. No simulation logic lives here.
+//! The page's window into the core: one simulation handle ([`Sim`]), one view handle
+//! ([`Viewer`], which draws a `Sim` from its buffers in place), one experiment handle
+//! ([`ExperimentRunner`]) and a few free functions. Small records go through serde-wasm-bindgen.
+//! No simulation logic lives here.
 
 use std::sync::Mutex;
 
@@ -469,7 +470,8 @@ impl Sim {
         to_js(&self.run.model().metrics())
     }
 
-    /// One code per cell (a copy).
+    /// One code per cell (a copy, for tests and tools: the page's view reads the model in place,
+    /// see [`Viewer`]).
     pub fn cells(&self) -> Uint8Array {
         Uint8Array::from(self.run.model().cells().as_ref())
     }
@@ -517,7 +519,7 @@ impl Sim {
     }
 
     /// The middle occupied cell in memory order (where a keyboard cursor starts), or -1.
-    pub fn middle_occupied(&self) -> i64 {
+    pub fn middle_occupied(&self) -> f64 {
         let cells = self.run.model().cells();
         let occupied = cells.iter().filter(|&&c| c != 0).count();
         let nth = cells
@@ -525,7 +527,7 @@ impl Sim {
             .enumerate()
             .filter(|(_, &c)| c != 0)
             .nth(occupied / 2);
-        nth.map_or(-1, |(i, _)| i as i64)
+        nth.map_or(-1.0, |(i, _)| i as f64)
     }
 
     /// Applies an action now (a click tool) and records it in the scenario.

@@ -57,8 +57,10 @@ impl Viewer {
         prefer: &str,
     ) -> Result<Viewer, JsValue> {
         let prefer = (prefer == "canvas2d").then_some(Kind::Canvas2d);
+        let mut view = View::new(canvas, annotations, prefer)?;
+        view.set_clock(performance_now);
         Ok(Viewer {
-            view: View::new(canvas, annotations, prefer)?,
+            view,
             overlay_range: None,
         })
     }
@@ -208,6 +210,8 @@ impl Viewer {
             overlay: None,
             world: &world,
         };
+        // An editor's cells change between calls without saying so: upload them every time.
+        self.view.frame_changed();
         let stats = self.view.draw(&frame)?;
         Ok(to_js(&stats)?)
     }
