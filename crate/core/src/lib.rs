@@ -10,12 +10,14 @@
 //! - [`presets`] and [`lessons`]: the built-in scenarios and classroom exercises;
 //! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`reproduce`]: the papers'
 //!   claims beside the figures of those runs;
-//! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses.
+//! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
+//! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
 
 pub mod error;
 pub mod exercise;
 pub mod experiment;
 pub mod hash;
+pub mod json;
 pub mod lattice;
 pub mod lessons;
 pub mod limits;

@@ -11,7 +11,7 @@ use kumiki_core::models::Scene;
 use kumiki_core::scenario::Disturbance;
 use kumiki_core::series::{self, Series};
 use kumiki_core::timeline::Timeline;
-use kumiki_core::{hash, lessons, link, models, presets, shape, Run, Scenario};
+use kumiki_core::{hash, json, lessons, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
@@ -154,7 +154,7 @@ pub fn link_model_versions(link_text: &str) -> Result<JsValue, JsError> {
 /// Saturates at 2^53 so it stays a JavaScript number.
 #[wasm_bindgen]
 pub fn estimate_cells(json: &str) -> f64 {
-    serde_json::from_str::<Value>(json)
+    json::parse(json)
         .map(|doc| shape::estimate_cells(&doc).min(1 << 53) as f64)
         .unwrap_or(0.0)
 }
@@ -174,7 +174,7 @@ pub fn unpack_link(link_text: &str) -> Result<JsValue, JsError> {
     let model = doc.get("model").and_then(Value::as_str).unwrap_or_default();
     let current = models::entry(model).map_or(made_with, |e| e.model_version);
     to_js(&Unpacked {
-        scenario: serde_json::to_string_pretty(&doc).map_err(js_err)?,
+        scenario: json::pretty(&doc).map_err(js_err)?,
         made_with,
         current,
     })
@@ -184,9 +184,7 @@ pub fn unpack_link(link_text: &str) -> Result<JsValue, JsError> {
 /// without building its model again.
 #[wasm_bindgen]
 pub fn pack_link(json: &str) -> Result<String, JsError> {
-    serde_json::from_str::<Value>(json)
-        .map(link::pack)
-        .map_err(js_err)
+    json::parse(json).map(link::pack).map_err(js_err)
 }
 
 /// Sets one dotted path of scenario JSON without validating the result: the page changes a large
@@ -194,10 +192,10 @@ pub fn pack_link(json: &str) -> Result<String, JsError> {
 #[wasm_bindgen]
 pub fn set_scenario_path(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
     let value: Value =
-        serde_json::from_str(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
-    let mut doc: Value = serde_json::from_str(json).map_err(js_err)?;
+        json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
+    let mut doc: Value = json::parse(json).map_err(js_err)?;
     kumiki_core::scenario::set_path(&mut doc, path, value).map_err(js_err)?;
-    serde_json::to_string_pretty(&doc).map_err(js_err)
+    json::pretty(&doc).map_err(js_err)
 }
 
 /// A fresh seed from the system's entropy (`crypto.getRandomValues`), 0 to 2^53 − 1: the page's
@@ -213,7 +211,7 @@ pub fn fresh_seed() -> Result<f64, JsError> {
 #[wasm_bindgen]
 pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
     let value: Value =
-        serde_json::from_str(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
+        json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
     Scenario::from_json(json)
         .and_then(|s| s.with_override(path, value))
         .map(|s| s.to_json_pretty())
@@ -532,7 +530,7 @@ impl Sim {
 
     /// Applies an action now (a click tool) and records it in the scenario.
     pub fn apply(&mut self, action_json: &str) -> Result<(), JsError> {
-        let action: Value = serde_json::from_str(action_json).map_err(js_err)?;
+        let action: Value = json::parse(action_json).map_err(js_err)?;
         let Value::Object(action) = action else {
             return Err(JsError::new("an action is a JSON object"));
         };
@@ -625,7 +623,7 @@ pub fn goal_problem(text: &str) -> Option<String> {
 /// text; a bad argument is an error that names it.
 #[wasm_bindgen]
 pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, JsError> {
-    let args: Value = serde_json::from_str(args_json).map_err(js_err)?;
+    let args: Value = json::parse(args_json).map_err(js_err)?;
     models::query(model, name, &args)
         .map(|v| v.to_string())
         .map_err(js_err)
@@ -735,6 +733,6 @@ pub fn experiment_json(name: &str) -> Result<String, JsError> {
 /// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
 #[wasm_bindgen]
 pub fn rows_to_csv(rows_json: &str) -> Result<String, JsError> {
-    let rows: Vec<kumiki_core::Row> = serde_json::from_str(rows_json).map_err(js_err)?;
+    let rows = json::parse_rows(rows_json).map_err(js_err)?;
     Ok(kumiki_core::experiment::to_csv(&rows))
 }
