@@ -53,7 +53,7 @@ const page = await benchPage(specs.filter((s) => s.page), (s) => {
 });
 console.log(`page load to interactive (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
 for (const r of page.runs) {
-  const doing = r.orbit ? 'orbiting' : `${fmt(r.stepsPerSecond)} steps/s`;
+  const doing = r.moving === 'playing' ? `${fmt(r.stepsPerSecond)} steps/s` : `${r.moving}, paused,`;
   console.log(
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,

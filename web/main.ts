@@ -94,6 +94,9 @@ const sim = new SimClient({
   },
   playing: (on) => run.setPlaying(on),
   viewer: (kind) => view.started(kind),
+  drew(work) {
+    document.body.dataset.work = JSON.stringify(work);
+  },
   scenario(json) {
     // A click recorded a disturbance (and, in the past, forked the run): undo brings back the
     // scenario before it.

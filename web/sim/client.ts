@@ -1,6 +1,6 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable.
-import type { Frame, Layout } from '../types';
+import type { Frame, Layout, WorkerTiming } from '../types';
 import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
 
 export interface SimEvents {
@@ -16,6 +16,8 @@ export interface SimEvents {
   stalled(ms: number): void;
   /** The worker's view started drawing with this renderer. */
   viewer(kind: 'webgl2' | 'canvas2d'): void;
+  /** The view was drawn again (a camera move), with the worker's timing so far. */
+  drew(work: WorkerTiming): void;
 }
 
 /** Canvases for a (new) worker's view: each worker needs fresh ones, a canvas transfers once. */
@@ -161,6 +163,9 @@ export class SimClient {
         return;
       case 'viewer':
         this.on.viewer(msg.kind);
+        return;
+      case 'drew':
+        this.on.drew(msg.work);
         return;
       case 'answer': {
         const waiter = this.answers.get(msg.id);

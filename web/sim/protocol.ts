@@ -1,7 +1,7 @@
 // Messages between the page and the simulation worker. The worker also draws the lattice: the
 // page transfers its canvases once ('view') and then sends sizes, gestures and marks; frames
 // carry only what the panels show, never the lattice's buffers.
-import type { Frame, Layout } from '../types';
+import type { Frame, Layout, WorkerTiming } from '../types';
 
 export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
 
@@ -69,4 +69,6 @@ export type FromWorker =
   | { type: 'pong'; id: number }
   | { type: 'goal'; met: boolean; because: string; steps: number }
   | { type: 'viewer'; kind: 'webgl2' | 'canvas2d' }
+  /** The view was drawn again with nothing new for the panels (a camera move). */
+  | { type: 'drew'; work: WorkerTiming }
   | { type: 'answer'; id: number; value: unknown };

@@ -149,6 +149,7 @@ function redraw() {
     drawScheduled = false;
     draw();
     if (dirty) sendFrame();
+    else post({ type: 'drew', work: work() });
   });
 }
 

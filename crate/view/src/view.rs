@@ -138,7 +138,7 @@ impl View {
         let opts = options(&[
             ("antialias", true),
             ("alpha", false),
-            ("preserveDrawingBuffer", true),
+            ("preserveDrawingBuffer", false),
         ]);
         let gl = canvas
             .get_context_with_context_options("webgl2", &opts)

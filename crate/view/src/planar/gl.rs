@@ -1,6 +1,7 @@
 //! Square and hex lattices in WebGL2: one full-screen pass that finds each pixel's cell and looks
-//! its code and its agent up in two integer textures, so a 1024×1024 lattice with thousands of
-//! robots costs two texture uploads and no geometry per frame.
+//! its code up in an integer texture, then one instanced pass that puts a disc on each agent's
+//! cell. A 1024×1024 lattice with thousands of robots costs the upload of the rows of codes that
+//! changed and a few kilobytes of agents per frame.
 
 use crate::camera::Camera2D;
 use crate::gl::{attribute, texture, upload_table, Program};
@@ -9,7 +10,7 @@ use crate::scene::{Frame, SceneRef};
 use kumiki_core::lattice::LatticeKind;
 use kumiki_core::models::Layout;
 use wasm_bindgen::JsValue;
-use web_sys::{WebGl2RenderingContext as Gl, WebGlTexture, WebGlVertexArrayObject};
+use web_sys::{WebGl2RenderingContext as Gl, WebGlBuffer, WebGlTexture, WebGlVertexArrayObject};
 
 const VS: &str = "#version 300 es
 in vec2 a_pos;
@@ -20,9 +21,7 @@ precision highp float;
 precision highp int;
 precision highp usampler2D;
 uniform usampler2D u_cells;
-uniform usampler2D u_agents;
 uniform sampler2D u_palette;
-uniform sampler2D u_agentPalette;
 uniform sampler2D u_field;
 uniform sampler2D u_heat;
 uniform vec2 u_viewport;
@@ -75,34 +74,92 @@ void main() {
     edge = min(p.x, p.y);
   }
   if (u_cam.z > 6.0 && edge < 1.0 / u_cam.z) col.rgb *= 0.62;
-  // An agent on this cell: a disc with a dark rim, or the whole cell when cells are too small
-  // on screen for a disc to show.
-  uint agent = texelFetch(u_agents, c, 0).r;
-  if (agent > 0u) {
-    vec4 a = texelFetch(u_agentPalette, ivec2(int(agent - 1u), 0), 0);
-    float r = length(local);
-    if (u_cam.z < 5.0) col = a;
-    else if (r < 0.3) col = a;
-    else if (r < 0.37) col = vec4(0.0, 0.0, 0.0, 1.0);
-  }
   if (col.a == 0.0) discard;
   outColor = col;
 }";
 
-/// The planar pass and its textures.
+/// One quad per agent, on its cell (none on an empty cell).
+const AGENT_VS: &str = "#version 300 es
+precision highp float;
+precision highp int;
+precision highp usampler2D;
+layout(location = 0) in vec2 a_corner;
+layout(location = 1) in uvec2 a_agent;
+uniform usampler2D u_cells;
+uniform vec2 u_viewport;
+uniform vec3 u_cam;
+uniform ivec2 u_dims;
+uniform int u_hex;
+out vec2 v_local;
+flat out uint v_kind;
+const float ROW = 0.8660254;
+const float RAD = 0.5773503;
+void main() {
+  int cell = int(a_agent.x);
+  ivec2 c = ivec2(cell % u_dims.x, cell / u_dims.x);
+  vec2 centre = u_hex == 1
+    ? vec2(float(c.x) + 0.5 + ((c.y & 1) == 1 ? 0.5 : 0.0), float(c.y) * ROW + RAD)
+    : vec2(c) + 0.5;
+  v_local = a_corner;
+  v_kind = a_agent.y;
+  vec2 s = (centre + a_corner - u_cam.xy) * u_cam.z + 0.5 * u_viewport;
+  bool empty = texelFetch(u_cells, c, 0).r == 0u;
+  gl_Position = empty ? vec4(2.0, 2.0, 2.0, 1.0) : vec4(2.0 * s.x / u_viewport.x - 1.0, 1.0 - 2.0 * s.y / u_viewport.y, 0.0, 1.0);
+}";
+
+/// A disc with a dark rim, or the whole cell when cells are too small on screen for a disc.
+const AGENT_FS: &str = "#version 300 es
+precision highp float;
+precision highp int;
+uniform sampler2D u_agentPalette;
+uniform vec3 u_cam;
+in vec2 v_local;
+flat in uint v_kind;
+out vec4 outColor;
+void main() {
+  vec4 a = texelFetch(u_agentPalette, ivec2(int(v_kind), 0), 0);
+  float r = length(v_local);
+  if (u_cam.z < 5.0 || r < 0.3) outColor = a;
+  else if (r < 0.37) outColor = vec4(0.0, 0.0, 0.0, 1.0);
+  else discard;
+  if (outColor.a == 0.0) discard;
+}";
+
+/// One frame's textures: a code per cell, and the overlay's values.
+struct Frames {
+    cells: WebGlTexture,
+    field: WebGlTexture,
+    /// The codes `cells` holds, so an upload sends only the rows that changed since.
+    shadow: Vec<u8>,
+}
+
+impl Frames {
+    fn new(gl: &Gl) -> Result<Frames, JsValue> {
+        Ok(Frames {
+            cells: texture(gl)?,
+            field: texture(gl)?,
+            shadow: Vec::new(),
+        })
+    }
+}
+
+/// The planar passes and their textures and buffers.
 pub struct PlanarGl {
     program: Program,
     quad: WebGlVertexArrayObject,
-    cells: WebGlTexture,
-    agents: WebGlTexture,
-    field: WebGlTexture,
+    agent_program: Program,
+    agent_vao: WebGlVertexArrayObject,
+    agent_buffer: WebGlBuffer,
+    /// (cell, kind) per agent, as last uploaded.
+    agent_data: Vec<u32>,
+    /// Two sets of the per-frame textures, used in turn: a frame uploads into the set the
+    /// previous draw is not reading, so the upload need not wait for that draw to finish.
+    sets: [Frames; 2],
+    /// The set drawn from.
+    current: usize,
     palette: WebGlTexture,
     agent_palette: WebGlTexture,
     heat: WebGlTexture,
-    /// Agent kind + 1 per cell, kept in step with the agent list.
-    agent_cells: Vec<u8>,
-    /// The cells `agent_cells` marks, to clear before the next frame's agents.
-    agent_at: Vec<u32>,
     dims: [i32; 2],
     /// The frame revision last uploaded: redrawing for a camera move uploads nothing.
     uploaded: Option<u64>,
@@ -119,20 +176,39 @@ impl PlanarGl {
         let bytes: Vec<u8> = corners.iter().flat_map(|v| v.to_le_bytes()).collect();
         gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
         attribute(gl, program.attrib(gl, "a_pos"), 2, Gl::FLOAT, false, 0);
+
+        let agent_program = Program::link(gl, AGENT_VS, AGENT_FS)?;
+        let agent_vao = gl.create_vertex_array().ok_or("no vertex array")?;
+        gl.bind_vertex_array(Some(&agent_vao));
+        let square = gl.create_buffer().ok_or("no buffer")?;
+        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&square));
+        let corners: [f32; 12] = [
+            -0.5, -0.5, 0.5, -0.5, 0.5, 0.5, -0.5, -0.5, 0.5, 0.5, -0.5, 0.5,
+        ];
+        let bytes: Vec<u8> = corners.iter().flat_map(|v| v.to_le_bytes()).collect();
+        gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
+        attribute(gl, 0, 2, Gl::FLOAT, false, 0);
+        let agent_buffer = gl.create_buffer().ok_or("no buffer")?;
+        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&agent_buffer));
+        gl.enable_vertex_attrib_array(1);
+        gl.vertex_attrib_i_pointer_with_i32(1, 2, Gl::UNSIGNED_INT, 0, 0);
+        gl.vertex_attrib_divisor(1, 1);
         gl.bind_vertex_array(None);
+
         let heat = texture(gl)?;
         upload_table(gl, &heat, &heat_table())?;
         Ok(PlanarGl {
             program,
             quad,
-            cells: texture(gl)?,
-            agents: texture(gl)?,
-            field: texture(gl)?,
+            agent_program,
+            agent_vao,
+            agent_buffer,
+            agent_data: Vec::new(),
+            sets: [Frames::new(gl)?, Frames::new(gl)?],
+            current: 0,
             palette: texture(gl)?,
             agent_palette: texture(gl)?,
             heat,
-            agent_cells: Vec::new(),
-            agent_at: Vec::new(),
             dims: [0, 0],
             uploaded: None,
         })
@@ -145,94 +221,91 @@ impl PlanarGl {
         let [w, h, _] = layout.dims.map(|d| d as i32);
         self.dims = [w, h];
         gl.pixel_storei(Gl::UNPACK_ALIGNMENT, 1);
-        for (tex, internal, format, kind) in [
-            (&self.cells, Gl::R8UI, Gl::RED_INTEGER, Gl::UNSIGNED_BYTE),
-            (&self.agents, Gl::R8UI, Gl::RED_INTEGER, Gl::UNSIGNED_BYTE),
-            (&self.field, Gl::R32F, Gl::RED, Gl::FLOAT),
-        ] {
-            gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
-            gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
-                Gl::TEXTURE_2D,
-                0,
-                internal as i32,
-                w,
-                h,
-                0,
-                format,
-                kind,
-                None,
-            )?;
+        for set in &mut self.sets {
+            for (tex, internal, format, kind) in [
+                (&set.cells, Gl::R8UI, Gl::RED_INTEGER, Gl::UNSIGNED_BYTE),
+                (&set.field, Gl::R32F, Gl::RED, Gl::FLOAT),
+            ] {
+                gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
+                gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
+                    Gl::TEXTURE_2D,
+                    0,
+                    internal as i32,
+                    w,
+                    h,
+                    0,
+                    format,
+                    kind,
+                    None,
+                )?;
+            }
+            // A fresh texture holds zeros: empty cells.
+            set.shadow = vec![0; (w * h) as usize];
         }
-        self.agent_cells = vec![0; (w * h) as usize];
-        self.agent_at.clear();
         self.uploaded = None;
         Ok(())
     }
 
-    /// Uploads the frame's cells, field and agents, unless this revision already was.
+    /// Uploads the frame: the rows of codes that changed since this texture set last held a
+    /// frame, the overlay, and the agents; nothing when this revision already was.
     pub fn upload(&mut self, gl: &Gl, frame: &Frame, revision: u64) -> Result<(), JsValue> {
         let [w, h] = self.dims;
         if frame.cells.len() != (w * h) as usize || self.uploaded == Some(revision) {
             return Ok(());
         }
+        self.uploaded = Some(revision);
+        self.current ^= 1;
         gl.pixel_storei(Gl::UNPACK_ALIGNMENT, 1);
-        {
-            self.uploaded = Some(revision);
-            gl.bind_texture(Gl::TEXTURE_2D, Some(&self.cells));
+        let set = &mut self.sets[self.current];
+        let row = w as usize;
+        let differs =
+            |y: &usize| frame.cells[y * row..(y + 1) * row] != set.shadow[y * row..(y + 1) * row];
+        if let Some(first) = (0..h as usize).find(differs) {
+            let last = (first..h as usize).rev().find(differs).unwrap_or(first);
+            let band = first * row..(last + 1) * row;
+            gl.bind_texture(Gl::TEXTURE_2D, Some(&set.cells));
             gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_u8_array(
                 Gl::TEXTURE_2D,
                 0,
                 0,
-                0,
+                first as i32,
                 w,
-                h,
+                (last + 1 - first) as i32,
                 Gl::RED_INTEGER,
                 Gl::UNSIGNED_BYTE,
-                Some(frame.cells),
+                Some(&frame.cells[band.clone()]),
             )?;
-            if let Some(o) = frame.overlay.filter(|o| o.data.len() == frame.cells.len()) {
-                gl.bind_texture(Gl::TEXTURE_2D, Some(&self.field));
-                // A view of wasm memory, handed straight to WebGL: nothing allocates meanwhile.
-                let view = unsafe { js_sys::Float32Array::view(o.data) };
-                gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_array_buffer_view(
-                    Gl::TEXTURE_2D,
-                    0,
-                    0,
-                    0,
-                    w,
-                    h,
-                    Gl::RED,
-                    Gl::FLOAT,
-                    Some(&view),
-                )?;
-            }
-            for &i in &self.agent_at {
-                self.agent_cells[i as usize] = 0;
-            }
-            self.agent_at.clear();
-            for a in frame.agents {
-                if let Some(slot) = self.agent_cells.get_mut(a.cell as usize) {
-                    *slot = a.kind.saturating_add(1);
-                    self.agent_at.push(a.cell);
-                }
-            }
-            gl.bind_texture(Gl::TEXTURE_2D, Some(&self.agents));
-            gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_u8_array(
+            set.shadow[band.clone()].copy_from_slice(&frame.cells[band]);
+        }
+        if let Some(o) = frame.overlay.filter(|o| o.data.len() == frame.cells.len()) {
+            gl.bind_texture(Gl::TEXTURE_2D, Some(&set.field));
+            // A view of wasm memory, handed straight to WebGL: nothing allocates meanwhile.
+            let view = unsafe { js_sys::Float32Array::view(o.data) };
+            gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_array_buffer_view(
                 Gl::TEXTURE_2D,
                 0,
                 0,
                 0,
                 w,
                 h,
-                Gl::RED_INTEGER,
-                Gl::UNSIGNED_BYTE,
-                Some(&self.agent_cells),
+                Gl::RED,
+                Gl::FLOAT,
+                Some(&view),
             )?;
         }
+        self.agent_data.clear();
+        let cells = frame.cells.len() as u32;
+        for a in frame.agents.iter().filter(|a| a.cell < cells) {
+            self.agent_data.extend([a.cell, u32::from(a.kind)]);
+        }
+        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&self.agent_buffer));
+        // A view of wasm memory, copied by WebGL at once.
+        let view = unsafe { js_sys::Uint32Array::view(&self.agent_data) };
+        gl.buffer_data_with_array_buffer_view(Gl::ARRAY_BUFFER, &view, Gl::STREAM_DRAW);
         Ok(())
     }
 
-    /// Draws the lattice from the textures last uploaded.
+    /// Draws the lattice and its agents from what was last uploaded.
     pub fn draw(&self, gl: &Gl, scene: &SceneRef, cam: &Camera2D, dpr: f64, viewport: [i32; 2]) {
         let [w, h] = self.dims;
         let frame = &scene.frame;
@@ -240,21 +313,32 @@ impl PlanarGl {
             return;
         }
         gl.disable(Gl::DEPTH_TEST);
-        let p = &self.program;
-        gl.use_program(Some(&p.program));
-        for (unit, tex, name) in [
-            (0, &self.cells, "u_cells"),
-            (1, &self.palette, "u_palette"),
-            (2, &self.field, "u_field"),
-            (3, &self.heat, "u_heat"),
-            (4, &self.agents, "u_agents"),
-            (5, &self.agent_palette, "u_agentPalette"),
+        gl.disable(Gl::CULL_FACE);
+        gl.disable(Gl::BLEND);
+        let set = &self.sets[self.current];
+        let hex = i32::from(scene.layout.lattice == LatticeKind::Hex);
+        let camera = [cam.cx as f32, cam.cy as f32, (cam.scale * dpr) as f32];
+        for (unit, tex) in [
+            (0, &set.cells),
+            (1, &self.palette),
+            (2, &set.field),
+            (3, &self.heat),
+            (5, &self.agent_palette),
         ] {
             gl.active_texture(Gl::TEXTURE0 + unit);
             gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
-            gl.uniform1i(p.uniform(gl, name).as_ref(), unit as i32);
         }
         gl.active_texture(Gl::TEXTURE0);
+        let p = &self.program;
+        gl.use_program(Some(&p.program));
+        for (name, unit) in [
+            ("u_cells", 0),
+            ("u_palette", 1),
+            ("u_field", 2),
+            ("u_heat", 3),
+        ] {
+            gl.uniform1i(p.uniform(gl, name).as_ref(), unit);
+        }
         gl.uniform2f(
             p.uniform(gl, "u_viewport").as_ref(),
             viewport[0] as f32,
@@ -262,15 +346,12 @@ impl PlanarGl {
         );
         gl.uniform3f(
             p.uniform(gl, "u_cam").as_ref(),
-            cam.cx as f32,
-            cam.cy as f32,
-            (cam.scale * dpr) as f32,
+            camera[0],
+            camera[1],
+            camera[2],
         );
         gl.uniform2i(p.uniform(gl, "u_dims").as_ref(), w, h);
-        gl.uniform1i(
-            p.uniform(gl, "u_hex").as_ref(),
-            i32::from(scene.layout.lattice == LatticeKind::Hex),
-        );
+        gl.uniform1i(p.uniform(gl, "u_hex").as_ref(), hex);
         let overlay = frame.overlay.filter(|o| o.data.len() == frame.cells.len());
         gl.uniform1i(
             p.uniform(gl, "u_overlay").as_ref(),
@@ -280,6 +361,29 @@ impl PlanarGl {
         gl.uniform2f(p.uniform(gl, "u_range").as_ref(), lo, hi);
         gl.bind_vertex_array(Some(&self.quad));
         gl.draw_arrays(Gl::TRIANGLES, 0, 3);
+
+        let agents = (self.agent_data.len() / 2) as i32;
+        if agents > 0 {
+            let a = &self.agent_program;
+            gl.use_program(Some(&a.program));
+            gl.uniform1i(a.uniform(gl, "u_cells").as_ref(), 0);
+            gl.uniform1i(a.uniform(gl, "u_agentPalette").as_ref(), 5);
+            gl.uniform2f(
+                a.uniform(gl, "u_viewport").as_ref(),
+                viewport[0] as f32,
+                viewport[1] as f32,
+            );
+            gl.uniform3f(
+                a.uniform(gl, "u_cam").as_ref(),
+                camera[0],
+                camera[1],
+                camera[2],
+            );
+            gl.uniform2i(a.uniform(gl, "u_dims").as_ref(), w, h);
+            gl.uniform1i(a.uniform(gl, "u_hex").as_ref(), hex);
+            gl.bind_vertex_array(Some(&self.agent_vao));
+            gl.draw_arrays_instanced(Gl::TRIANGLES, 0, 6, agents);
+        }
         gl.bind_vertex_array(None);
     }
 }
