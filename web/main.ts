@@ -251,7 +251,8 @@ async function start() {
     banner.report('A new version of Kumiki is ready.', { label: 'Reload', run: reload });
   });
   await core.loadCore();
-  await useRenderer();
+  // The worker reports its renderer when its view is ready; the first scenario need not wait.
+  void useRenderer();
   byId('diag-version').textContent = core.version();
   setupGallery(
     core.presets(),
