@@ -50,6 +50,8 @@ export class GridEditor {
   private readonly resizeObserver: ResizeObserver;
   private gestures: { destroy(): void } | null = null;
   private scale = 10;
+  /** The shape's lattice geometry at its current size (see `geometry()`). */
+  private geo: Geometry | null = null;
   private readonly maxSide: number;
 
   constructor(private readonly root: HTMLElement, private readonly opts: GridEditorOptions) {
@@ -350,7 +352,6 @@ export class GridEditor {
     this.geo = new Geometry(this.opts.lattice, [w, h, 1]);
     return this.geo;
   }
-  private geo: Geometry | null = null;
 
   private paintCell(i: number, erase: boolean) {
     if (i < 0 || !this.stroke) return;

@@ -85,10 +85,11 @@ export class SimClient {
   private attachView() {
     if (!this.canvases) return;
     const { canvas, annotations, prefer } = this.canvases();
+    this.worker.postMessage({ type: 'view', canvas, annotations, prefer } satisfies ToWorker, [canvas, annotations]);
+    // The new view starts with the size and marks the page last gave.
     const { size, marks } = this.viewState;
     if (size) this.send({ type: 'resize', ...size });
     if (marks) this.send({ type: 'marks', marks });
-    this.worker.postMessage({ type: 'view', canvas, annotations, prefer } satisfies ToWorker, [canvas, annotations]);
   }
 
   resize(width: number, height: number, dpr: number) {

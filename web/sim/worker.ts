@@ -328,14 +328,12 @@ function handle(msg: ToWorker) {
       const created = guard('load', () => new Viewer(msg.canvas, msg.annotations, msg.prefer));
       if (!created) return;
       viewer = created;
-      if (size) viewer.resize(size.width, size.height, size.dpr);
       post({ type: 'viewer', kind: viewer.kind() as 'webgl2' | 'canvas2d' });
       attachLayout();
       touched();
       return;
     }
     case 'resize':
-      size = msg;
       viewer?.resize(msg.width, msg.height, msg.dpr);
       redraw();
       return;
@@ -380,9 +378,6 @@ function handle(msg: ToWorker) {
     }
   }
 }
-
-/** The view's size in CSS pixels and its pixel ratio, kept for a view attached later. */
-let size: { width: number; height: number; dpr: number } | null = null;
 
 /** Tells the view the run's lattice and legends. */
 function attachLayout() {

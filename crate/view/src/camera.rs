@@ -408,7 +408,7 @@ impl Camera {
         }
     }
 
-    /// A new size in CSS pixels. A planar camera keeps the world point at the view's centre.
+    /// A new size in CSS pixels (the view keeps a planar camera's centre; see `View::resize`).
     pub fn set_size(&mut self, width: f64, height: f64) {
         match self {
             Camera::Planar(c) => {

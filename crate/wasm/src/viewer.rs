@@ -37,13 +37,11 @@ pub struct Viewer {
     overlay_range: Option<(f32, f32)>,
 }
 
+/// A lattice by the name scenarios and layouts use ("square", "hex", "cubic").
 fn lattice(name: &str) -> Result<LatticeKind, JsError> {
-    match name {
-        "square" => Ok(LatticeKind::Square),
-        "hex" => Ok(LatticeKind::Hex),
-        "cubic" => Ok(LatticeKind::Cubic),
-        other => Err(JsError::new(&format!("unknown lattice {other:?}"))),
-    }
+    use serde::de::{value::Error, Deserialize, IntoDeserializer};
+    LatticeKind::deserialize(IntoDeserializer::<Error>::into_deserializer(name))
+        .map_err(|e| JsError::new(&format!("lattice: {e}")))
 }
 
 #[wasm_bindgen]

@@ -114,18 +114,15 @@ impl PlanarCanvas {
     fn draw_hex(&self, ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
         let cells = scene.frame.cells;
         let [w, h, _] = scene.grid.dims;
-        let v = cam.visible();
-        let row = crate::geometry::HEX_ROW;
-        let y_from = ((v.y0 / row).floor() - 1.0).max(0.0) as u32;
-        let y_to = ((v.y1 / row).ceil() + 1.0).min(f64::from(h) - 1.0);
-        let x_from = (v.x0.floor() - 1.0).max(0.0) as u32;
-        let x_to = (v.x1.ceil() + 1.0).min(f64::from(w) - 1.0);
-        if y_to < 0.0 || x_to < 0.0 {
+        // The cells in view, one more row and column on the far sides: a hexagon reaches past
+        // its cell's box.
+        let Some([x_from, x1, y_from, y1]) = cam.visible_cells(&scene.grid) else {
             return;
-        }
+        };
+        let (x_to, y_to) = ((x1 + 1).min(w - 1), (y1 + 1).min(h - 1));
         let r = HEX_RADIUS * cam.scale * if cam.scale > 8.0 { 0.96 } else { 1.02 };
-        for y in y_from..=y_to as u32 {
-            for x in x_from..=x_to as u32 {
+        for y in y_from..=y_to {
+            for x in x_from..=x_to {
                 let i = (y * w + x) as usize;
                 let code = cells[i];
                 if code == 0 {

@@ -339,19 +339,13 @@ impl PlanarGl {
         ] {
             gl.uniform1i(p.uniform(gl, name).as_ref(), unit);
         }
-        gl.uniform2f(
-            p.uniform(gl, "u_viewport").as_ref(),
-            viewport[0] as f32,
-            viewport[1] as f32,
-        );
-        gl.uniform3f(
-            p.uniform(gl, "u_cam").as_ref(),
-            camera[0],
-            camera[1],
-            camera[2],
-        );
-        gl.uniform2i(p.uniform(gl, "u_dims").as_ref(), w, h);
-        gl.uniform1i(p.uniform(gl, "u_hex").as_ref(), hex);
+        let view = Shared {
+            viewport,
+            camera,
+            dims: [w, h],
+            hex,
+        };
+        view.set(gl, p);
         let overlay = frame.overlay.filter(|o| o.data.len() == frame.cells.len());
         gl.uniform1i(
             p.uniform(gl, "u_overlay").as_ref(),
@@ -368,22 +362,33 @@ impl PlanarGl {
             gl.use_program(Some(&a.program));
             gl.uniform1i(a.uniform(gl, "u_cells").as_ref(), 0);
             gl.uniform1i(a.uniform(gl, "u_agentPalette").as_ref(), 5);
-            gl.uniform2f(
-                a.uniform(gl, "u_viewport").as_ref(),
-                viewport[0] as f32,
-                viewport[1] as f32,
-            );
-            gl.uniform3f(
-                a.uniform(gl, "u_cam").as_ref(),
-                camera[0],
-                camera[1],
-                camera[2],
-            );
-            gl.uniform2i(a.uniform(gl, "u_dims").as_ref(), w, h);
-            gl.uniform1i(a.uniform(gl, "u_hex").as_ref(), hex);
+            view.set(gl, a);
             gl.bind_vertex_array(Some(&self.agent_vao));
             gl.draw_arrays_instanced(Gl::TRIANGLES, 0, 6, agents);
         }
         gl.bind_vertex_array(None);
+    }
+}
+
+/// The uniforms both planar passes read: the drawing buffer's size, the camera (centre and
+/// pixels per cell), the lattice's size and whether it is hex.
+struct Shared {
+    viewport: [i32; 2],
+    camera: [f32; 3],
+    dims: [i32; 2],
+    hex: i32,
+}
+
+impl Shared {
+    fn set(&self, gl: &Gl, p: &Program) {
+        let [x, y, z] = self.camera;
+        gl.uniform2f(
+            p.uniform(gl, "u_viewport").as_ref(),
+            self.viewport[0] as f32,
+            self.viewport[1] as f32,
+        );
+        gl.uniform3f(p.uniform(gl, "u_cam").as_ref(), x, y, z);
+        gl.uniform2i(p.uniform(gl, "u_dims").as_ref(), self.dims[0], self.dims[1]);
+        gl.uniform1i(p.uniform(gl, "u_hex").as_ref(), self.hex);
     }
 }
