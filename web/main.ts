@@ -5,7 +5,6 @@ import { View } from './render/view';
 import { Session } from './session';
 import { SimClient } from './sim/client';
 import { loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
-import type { Frame } from './types';
 import { Announcer, type Disturbance } from './ui/announce';
 import { Banner } from './ui/banner';
 import { byId, displayText, download } from './ui/dom';
@@ -35,17 +34,12 @@ let framesDrawn = 0;
 
 // ---- the view and the worker ------------------------------------------------------------------
 
-/** Called once with the next frame from the worker that the view draws (the recorder waits on them). */
-const drawnWaiters: ((frame: Frame) => void)[] = [];
-
 const view = new View(byId<HTMLCanvasElement>('view'), byId<HTMLCanvasElement>('annotations'), byId('canvas-wrap'), () => sim, {
   click: (cell, hit) => void inspector.click(cell, hit),
   hover: (cell) => inspector.hover(cell),
   drawn: () => {
     document.body.dataset.frames = String(framesDrawn);
     sim.ack();
-    const frame = session.frame;
-    if (frame) for (const waiter of drawnWaiters.splice(0)) waiter(frame);
   },
 });
 // The view follows the session before any panel does: the panels read its overlay range.
@@ -54,16 +48,6 @@ session.on('loaded', ({ layout, shapeChanged }) => {
   if (shapeChanged) view.fit();
 });
 session.on('frame', (frame) => view.setFrame(frame));
-
-/** Steps the run and resolves once the frame `count` steps on (or the run's last) has been drawn. */
-function stepAndDraw(count: number): Promise<{ steps: number; finished: boolean }> {
-  const target = (session.frame?.steps ?? 0) + count;
-  return new Promise((resolve) => {
-    const wait = (frame: Frame) => (frame.steps >= target || frame.finished ? resolve({ steps: frame.steps, finished: frame.finished }) : drawnWaiters.push(wait));
-    drawnWaiters.push(wait);
-    sim.step(count);
-  });
-}
 
 const sim = new SimClient({
   loaded(layout, json) {
@@ -265,12 +249,10 @@ async function start() {
   setupRecordDialog({
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };
-      return { name: String(doc.name || 'scenario'), seed: Number(doc.seed ?? 0), steps: session.frame?.steps ?? 0 };
+      return { name: String(doc.name || 'scenario'), seed: Number(doc.seed ?? 0) };
     },
-    pause: () => sim.pause(),
-    advance: stepAndDraw,
     setScale: (scale) => view.setCaptureScale(scale),
-    captureFrame: () => view.captureFrame(),
+    record: (settings, signal, progress) => sim.record(settings, signal, progress),
   });
   keys.selectTab(TABS.includes(prefs.tab) ? prefs.tab : 'run');
   if (embedded) {

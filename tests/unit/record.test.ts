@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { frameCount, recordingName, sanitizeName } from '../../web/ui/record';
+import { frameCount } from '../../web/sim/record';
+import { recordingName, sanitizeName } from '../../web/ui/record';
 
 describe('recording file names', () => {
   it('carry the scenario, the seed and the step range', () => {

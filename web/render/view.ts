@@ -188,11 +188,6 @@ export class View {
     this.resize();
   }
 
-  /** The view as a picture, lattice and annotations, drawn by the worker just before copying. */
-  captureFrame(): Promise<ImageBitmap> {
-    return this.sim().capture();
-  }
-
   private resize() {
     const rect = this.wrap.getBoundingClientRect();
     this.cssWidth = Math.max(1, rect.width);

@@ -2,6 +2,7 @@
 // scenario that loaded, so the page stays usable.
 import type { Frame, Layout, WorkerTiming } from '../types';
 import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
+import { Cancelled, type Progress, type Recorded, type RecordSettings } from './record';
 
 export interface SimEvents {
   loaded(layout: Layout, scenario: string): void;
@@ -34,6 +35,9 @@ export class SimClient {
   private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
   private answers = new Map<number, (value: unknown) => void>();
   private askId = 0;
+  private recordId = 0;
+  /** Recordings under way, by id (the dialog starts one only after the last has settled). */
+  private recordings = new Map<number, { progress: Progress; resolve: (r: Recorded) => void; reject: (e: Error) => void }>();
   private canvases: ViewCanvases | null = null;
   private viewState: { size: { width: number; height: number; dpr: number } | null; marks: ViewMarks | null } = { size: null, marks: null };
   private speed = 30;
@@ -115,11 +119,35 @@ export class SimClient {
   middle(): Promise<number> {
     return this.ask((id) => ({ type: 'middle', id })) as Promise<number>;
   }
-  /** The view drawn now, lattice and annotations, as one bitmap. */
-  async capture(): Promise<ImageBitmap> {
-    const bitmap = (await this.ask((id) => ({ type: 'capture', id }))) as ImageBitmap | null;
-    if (!bitmap) throw new Error('nothing is drawn yet');
-    return bitmap;
+  /**
+   * Records the view: the worker pauses the run, steps it, draws and encodes each frame, and
+   * sends back the file. Rejects with Cancelled as soon as `signal` aborts, without waiting for
+   * the worker (it may be inside a long step); the worker is told to stop.
+   */
+  record(settings: RecordSettings, signal: AbortSignal, progress: Progress): Promise<Recorded> {
+    if (signal.aborted) return Promise.reject(new Cancelled());
+    const id = ++this.recordId;
+    return new Promise((resolve, reject) => {
+      const abort = () => {
+        this.recordings.delete(id);
+        this.send({ type: 'record-cancel', id });
+        reject(new Cancelled());
+      };
+      signal.addEventListener('abort', abort, { once: true });
+      const settle = () => signal.removeEventListener('abort', abort);
+      this.recordings.set(id, {
+        progress,
+        resolve: (r) => {
+          settle();
+          resolve(r);
+        },
+        reject: (e) => {
+          settle();
+          reject(e);
+        },
+      });
+      this.send({ type: 'record', id, settings });
+    });
   }
 
   private ask(message: (id: number) => ToWorker): Promise<unknown> {
@@ -174,6 +202,17 @@ export class SimClient {
         waiter?.(msg.value);
         return;
       }
+      case 'record-progress':
+        this.recordings.get(msg.id)?.progress(msg.done, msg.total);
+        return;
+      case 'recorded':
+        this.recordings.get(msg.id)?.resolve({ blob: msg.blob, from: msg.from, to: msg.to });
+        this.recordings.delete(msg.id);
+        return;
+      case 'record-failed':
+        this.recordings.get(msg.id)?.reject(msg.cancelled ? new Cancelled() : new Error(msg.message));
+        this.recordings.delete(msg.id);
+        return;
       case 'inspected': {
         const waiter = this.inspectWaiters.get(msg.id);
         this.inspectWaiters.delete(msg.id);
@@ -197,6 +236,8 @@ export class SimClient {
     this.inspectWaiters.clear();
     for (const waiter of this.answers.values()) waiter(null);
     this.answers.clear();
+    for (const r of this.recordings.values()) r.reject(new Error('the simulation stopped and was restarted'));
+    this.recordings.clear();
     this.unanswered = null;
     if (this.stalledFor) {
       this.stalledFor = 0;

@@ -1,7 +1,11 @@
 // Messages between the page and the simulation worker. The worker also draws the lattice: the
 // page transfers its canvases once ('view') and then sends sizes, gestures and marks; frames
-// carry only what the panels show, never the lattice's buffers.
+// carry only what the panels show, never the lattice's buffers. A recording ('record') is made in
+// the worker too: only its progress and the finished file come back. While it runs, the worker
+// takes only 'ack' and 'record-cancel' (and answers pings); every other message waits, in order,
+// until the recording ends, so nothing moves the run or the view under the recording.
 import type { Frame, Layout, WorkerTiming } from '../types';
+import type { RecordSettings } from './record';
 
 export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
 
@@ -55,7 +59,9 @@ export type ToWorker =
   | { type: 'pick'; id: number; x: number; y: number }
   | { type: 'code'; id: number; cell: number }
   | { type: 'middle'; id: number }
-  | { type: 'capture'; id: number };
+  | { type: 'record'; id: number; settings: RecordSettings }
+  /** Stops the recording `id`, or drops it if it has not started; it ends with 'record-failed'. */
+  | { type: 'record-cancel'; id: number };
 
 export type FromWorker =
   | { type: 'ready' }
@@ -71,4 +77,8 @@ export type FromWorker =
   | { type: 'viewer'; kind: 'webgl2' | 'canvas2d' }
   /** The view was drawn again with nothing new for the panels (a camera move). */
   | { type: 'drew'; work: WorkerTiming }
-  | { type: 'answer'; id: number; value: unknown };
+  | { type: 'answer'; id: number; value: unknown }
+  | { type: 'record-progress'; id: number; done: number; total: number }
+  /** A recording finished: the file, and the steps it shows. */
+  | { type: 'recorded'; id: number; blob: Blob; from: number; to: number }
+  | { type: 'record-failed'; id: number; message: string; cancelled: boolean };

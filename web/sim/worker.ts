@@ -3,10 +3,14 @@
 // per animation frame, reading the model's buffers in place. What the page's panels show goes
 // out as frames, flow-controlled: the next is sent only after the page has taken the last, so a
 // fast simulation never floods the page. Timing here paces the run; it never enters the model.
+// Recordings are made here too (web/sim/encode.ts): each frame is stepped, drawn and encoded next
+// to the view, and only the finished file goes to the page.
 import init, { Sim, Viewer, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
 import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
 import type { ChartBand, Frame, Metrics, RenderStats, SceneInfo } from '../types';
 import type { FromWorker, ToWorker } from './protocol';
+import { encode, type RecordHost } from './encode';
+import { Cancelled, type RecordSettings } from './record';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessage(msg, transfer);
@@ -184,16 +188,20 @@ function setPlaying(on: boolean) {
   schedule();
 }
 
+/** Goes to the step a seek asked for, if one is waiting. False if the run was lost doing it. */
+function seekNow(): boolean {
+  if (!sim || seekTo === null) return !!sim;
+  const s = sim;
+  const step = seekTo;
+  seekTo = null;
+  if (guard('step', () => s.seek(step)) === undefined && !sim) return false;
+  touched();
+  return true;
+}
+
 function tick() {
-  if (!sim) return;
-  if (seekTo !== null) {
-    const s = sim;
-    const step = seekTo;
-    seekTo = null;
-    if (guard('step', () => s.seek(step)) === undefined && !sim) return;
-    touched();
-  }
-  if (playing) {
+  if (!seekNow()) return;
+  if (playing && sim) {
     const s = sim;
     const start = performance.now();
     const unlimited = !Number.isFinite(stepsPerSecond);
@@ -364,18 +372,103 @@ function handle(msg: ToWorker) {
     case 'middle':
       post({ type: 'answer', id: msg.id, value: sim ? sim.middle_occupied() : -1 });
       return;
-    case 'capture': {
-      draw();
-      const v = viewer;
-      let bitmap: ImageBitmap | null = null;
-      try {
-        bitmap = v ? v.capture() : null;
-      } catch (e) {
-        post({ type: 'error', message: `the view could not be captured: ${String(e)}`, context: 'step' });
+    case 'record':
+      void record(msg.id, msg.settings);
+      return;
+    case 'record-cancel': {
+      if (recording?.id === msg.id) {
+        recording.stop.abort();
+        return;
       }
-      post({ type: 'answer', id: msg.id, value: bitmap }, bitmap ? [bitmap] : []);
+      // Cancelled before it started: it never will.
+      const waiting = held.findIndex((m) => m.type === 'record' && m.id === msg.id);
+      if (waiting >= 0) {
+        held.splice(waiting, 1);
+        post({ type: 'record-failed', id: msg.id, message: 'cancelled', cancelled: true });
+      }
       return;
     }
+  }
+}
+
+// ---- recording ----------------------------------------------------------------------------------
+
+/** The recording under way, and how to stop it. */
+let recording: { id: number; stop: AbortController } | null = null;
+/**
+ * What came in during a recording, other than acks and cancels: kept in order and handled
+ * once it ends. Holding rather than refusing keeps the page's requests (a hover pick, a play from
+ * a course page) meaningful, and nothing can move the run or resize the view under the recording.
+ */
+const held: ToWorker[] = [];
+/** Messages a recording does not hold back (pings never wait): the page's panels follow it, and Cancel stops it. */
+const DURING_RECORDING = new Set<ToWorker['type']>(['ack', 'record-cancel']);
+
+/** Resolves in a later task, after the messages already waiting have been handled. */
+const yielder = new MessageChannel();
+const yielded: (() => void)[] = [];
+yielder.port1.onmessage = () => yielded.shift()?.();
+function nextTask(): Promise<void> {
+  return new Promise((resolve) => {
+    yielded.push(resolve);
+    yielder.port2.postMessage(null);
+  });
+}
+
+/** The run and the view, as the recorder steps and copies them. */
+const recordHost: RecordHost = {
+  steps: () => sim?.steps() ?? 0,
+  async advance(count) {
+    const s = sim;
+    if (!s) throw new Error('the simulation stopped');
+    const t0 = performance.now();
+    const taken = guard('step', () => s.advance(count));
+    stepMs += performance.now() - t0;
+    if (taken === undefined) throw new Error('the run could not be stepped');
+    changed = true;
+    dirty = true;
+    // The GIF encoder never waits on anything: without this task boundary the worker would read
+    // no message until the recording ended. Here the page's Cancel and acks get in.
+    await nextTask();
+    return { steps: s.steps(), finished: s.finished() };
+  },
+  async captureFrame() {
+    draw();
+    const v = viewer;
+    if (!v) throw new Error('the view is gone');
+    let bitmap: ImageBitmap;
+    try {
+      // In the task that drew: WebGL keeps no drawing buffer past it.
+      bitmap = v.capture();
+    } catch (e) {
+      throw new Error(`the view could not be captured: ${String(e)}`);
+    }
+    // The page follows the recording (step counter, panels) as fast as it takes frames.
+    if (dirty) sendFrame();
+    return bitmap;
+  },
+};
+
+/**
+ * Records the view from the step the run stands at, as the page's dialog asked (it has already
+ * resized the view to the recording's scale), and sends back the file or why there is none.
+ */
+async function record(id: number, settings: RecordSettings) {
+  recording = { id, stop: new AbortController() };
+  try {
+    setPlaying(false);
+    // A seek the page asked for before recording is where the recording starts.
+    seekNow();
+    if (!sim || !viewer) throw new Error('nothing is drawn yet');
+    const progress = (done: number, total: number) => post({ type: 'record-progress', id, done, total });
+    const { blob, from, to } = await encode(recordHost, settings, recording.stop.signal, progress);
+    post({ type: 'recorded', id, blob, from, to });
+  } catch (e) {
+    post({ type: 'record-failed', id, message: e instanceof Error ? e.message : String(e), cancelled: e instanceof Cancelled });
+  } finally {
+    recording = null;
+    // A held 'record' starts the next recording, which holds what follows it.
+    while (!recording && held.length > 0) handle(held.shift()!);
   }
 }
 
@@ -388,11 +481,16 @@ function attachLayout() {
 
 const queue: ToWorker[] = [];
 let ready = false;
+/** Handles a message now, or holds it until the recording under way ends. */
+function take(msg: ToWorker) {
+  if (recording && !DURING_RECORDING.has(msg.type)) held.push(msg);
+  else handle(msg);
+}
 scope.onmessage = (e: MessageEvent<ToWorker>) => {
   // Answered at once, even before the wasm is ready: the page's watchdog asks whether this
   // thread still takes messages at all.
   if (e.data.type === 'ping') post({ type: 'pong', id: e.data.id });
-  else if (ready) handle(e.data);
+  else if (ready) take(e.data);
   else queue.push(e.data);
 };
 
@@ -400,6 +498,6 @@ init({ module_or_path: wasmUrl })
   .then(() => {
     ready = true;
     post({ type: 'ready' });
-    for (const m of queue.splice(0)) handle(m);
+    for (const m of queue.splice(0)) take(m);
   })
   .catch((e: unknown) => post({ type: 'error', message: `the simulation could not start: ${String(e)}`, context: 'load' }));

@@ -1,0 +1,39 @@
+// What the page and the simulation worker agree on about a recording: its settings, its frames,
+// what it yields, and how a cancelled one ends. The recording is made in the worker, where the
+// view is drawn (web/sim/encode.ts); the page's dialog (web/ui/record.ts) sends the settings and
+// receives the file.
+export type RecordFormat = 'png' | 'webm' | 'gif';
+
+export interface RecordSettings {
+  format: RecordFormat;
+  /** Steps to record, from the step in view. */
+  steps: number;
+  /** Steps between two frames. */
+  every: number;
+  /** Drawing-buffer multiple, 1 (the canvas's own resolution) or 2: the page resizes the view to it before recording. */
+  scale: number;
+  /** Frames per second of the video or GIF. */
+  fps: number;
+}
+
+/** A finished recording: the file, and the steps it shows (the name's range). */
+export interface Recorded {
+  blob: Blob;
+  from: number;
+  to: number;
+}
+
+/**
+ * The frames of a recording of `steps` steps every `every`: one per interval, the first showing the
+ * step in view. A video frame stands for the time until the next, so frame i shows step
+ * from + i·every and the video's duration covers the `steps` steps (the file name's range).
+ */
+export function frameCount(steps: number, every: number): number {
+  return Math.max(1, Math.floor(steps / every));
+}
+
+/** Raised by the recorder when the user cancels. */
+export class Cancelled extends Error {}
+
+/** Frames done, of the recording's total: what the dialog's progress bar shows. */
+export type Progress = (done: number, total: number) => void;
