@@ -89,9 +89,10 @@ export function launch() {
 
 /**
  * A page that records console errors, page errors and CSP violations. A shared link opens with
- * its introduction; it is closed unless `keepIntro` is set.
+ * its introduction; it is closed unless `keepIntro` is set. `init`, if given, runs in the page
+ * before its own scripts (to watch what they do).
  */
-export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false } = {}) {
+export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false, init = null } = {}) {
   const context = await browser.newContext({ viewport: { width, height } });
   const page = await context.newPage();
   const problems = [];
@@ -102,6 +103,7 @@ export async function openPage(browser, url, { width = 1280, height = 800, keepI
   await page.addInitScript(() => {
     document.addEventListener('securitypolicyviolation', (e) => console.error(`CSP violation: ${e.violatedDirective} ${e.blockedURI}`));
   });
+  if (init) await page.addInitScript(init);
   await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
   if (!keepIntro && (await page.isVisible('#intro'))) {

@@ -1,12 +1,13 @@
 // Recording: a PNG, a WebM and a GIF of the view download under names that carry the scenario, the
 // seed and the steps, and decode: the PNG's size is the canvas's (or twice it), the GIF has one
 // image per frame, the WebM one block per frame and a duration. The run is stepped frame by frame,
-// so the frame counts are exact. Both the 2-D and the 3-D view are recorded.
+// so the frame counts are exact. Both the 2-D and the 3-D view are recorded. The frames are encoded
+// in the worker: the page receives the file and no picture.
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { describe, test } from 'node:test';
 import { inflateSync } from 'node:zlib';
-import { loadWasm, openPage, session, stepCount } from './harness.mjs';
+import { loadWasm, openPage, session, settle, stepCount } from './harness.mjs';
 
 const wasm = loadWasm();
 const s = session();
@@ -196,6 +197,32 @@ describe('recording the 2-D view (amas-L)', () => {
     await context.close();
   });
 
+  test('the frames are encoded in the worker: no picture crosses to the page, only the file', async () => {
+    // Counts the pictures and files in what the page's workers send it.
+    const watch = () => {
+      const crossed = { pictures: 0, files: 0 };
+      window.crossed = crossed;
+      const Base = window.Worker;
+      window.Worker = class extends Base {
+        constructor(...args) {
+          super(...args);
+          this.addEventListener('message', (e) => {
+            const values = e.data !== null && typeof e.data === 'object' ? Object.values(e.data) : [];
+            crossed.pictures += values.filter((v) => v instanceof ImageBitmap || v instanceof ImageData || (typeof VideoFrame !== 'undefined' && v instanceof VideoFrame)).length;
+            crossed.files += values.filter((v) => v instanceof Blob).length;
+          });
+        }
+      };
+    };
+    const { page, context, problems } = await openPage(s.browser, linkTo('amas-L'), { init: watch });
+    const { bytes } = await recordFile(page, { format: 'webm', steps: 40, every: 4, fps: 10 });
+    const webm = readWebm(bytes);
+    assert.equal(webm.simpleBlocks + webm.blockGroups, 10, 'ten frames were recorded');
+    assert.deepEqual(await page.evaluate(() => window.crossed), { pictures: 0, files: 1 });
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
   test('a GIF of 12 steps every 3: four images of the view', async () => {
     const { page, context, problems } = await openPage(s.browser, linkTo('amas-L'));
     const { name, bytes } = await recordFile(page, { format: 'gif', steps: 12, every: 3 });
@@ -208,12 +235,13 @@ describe('recording the 2-D view (amas-L)', () => {
     await context.close();
   });
 
-  test('a recording can be cancelled, and saves nothing', async () => {
+  test('a recording can be cancelled, and saves nothing; the run then takes requests again', async () => {
     const { page, context, problems } = await openPage(s.browser, linkTo('amas-L'));
     let downloads = 0;
     page.on('download', () => downloads++);
     await page.click('#open-record');
     await page.selectOption('#record-format', 'gif');
+    await page.selectOption('#record-scale', '2');
     await page.fill('#record-steps', '100000');
     await page.fill('#record-every', '1');
     await page.click('#record-start');
@@ -222,6 +250,16 @@ describe('recording the 2-D view (amas-L)', () => {
     await page.waitForFunction(() => /Cancelled/.test(document.querySelector('#record-status').textContent));
     assert.equal(downloads, 0);
     assert.equal(await page.isEnabled('#record-start'), true);
+    // The worker held the page's resize back to 1× while it recorded, and takes it once stopped.
+    await page.waitForFunction(([w, h]) => {
+      const c = document.querySelector('#view');
+      return c.width === w && c.height === h;
+    }, await bufferSize(page, 1));
+    await page.click('#record-cancel');
+    await settle(page);
+    const before = await stepCount(page);
+    await page.click('#step');
+    await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) === n + 1, before);
     assert.deepEqual(problems, []);
     await context.close();
   });
