@@ -52,6 +52,8 @@ export type ToWorker =
   | { type: 'ack' }
   | { type: 'crash' }
   | { type: 'ping'; id: number }
+  /** Whether the page is shown (a hidden page draws nothing, so the run need not wait for it). */
+  | { type: 'visible'; visible: boolean }
   | { type: 'view'; canvas: OffscreenCanvas; annotations: OffscreenCanvas; prefer: RendererChoice }
   | { type: 'resize'; width: number; height: number; dpr: number }
   | { type: 'camera'; move: CameraMove }

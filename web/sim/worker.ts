@@ -19,6 +19,14 @@ const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessa
 const SLICE_MS = 12;
 /** The state hash costs a pass over the state: refresh it at most this often while playing. */
 const HASH_EVERY_MS = 250;
+/**
+ * While playing, the longest a requested draw waits: past it, stepping holds until the next
+ * animation frame has drawn. A worker's animation frames run only when its task queue is idle, so
+ * a run that steps without pause (a large lattice, a slow machine) would otherwise never be drawn.
+ */
+const FRAME_GAP_MS = 100;
+/** The longest stepping holds for an animation frame that does not come. */
+const HOLD_MAX_MS = 1000;
 
 let sim: Sim | null = null;
 let viewer: Viewer | null = null;
@@ -35,6 +43,12 @@ let dirty = false;
 /** The state changed since the view last drew it. */
 let changed = false;
 let drawScheduled = false;
+/** When the pending draw was asked for. */
+let drawAskedAt = 0;
+/** Stepping waits for the pending draw's animation frame. */
+let holding = false;
+/** The page is shown: a hidden page gets no animation frames, so stepping never waits for one. */
+let visible = true;
 /** What the last draw reported, for the next frame. */
 let drawn: RenderStats | null = null;
 let lastHashAt = 0;
@@ -149,12 +163,34 @@ const frameTimer: (f: () => void) => void =
 function redraw() {
   if (drawScheduled) return;
   drawScheduled = true;
+  drawAskedAt = performance.now();
   frameTimer(() => {
     drawScheduled = false;
     draw();
     if (dirty) sendFrame();
     else post({ type: 'drew', work: work() });
+    if (holding) {
+      holding = false;
+      schedule();
+    }
   });
+}
+
+/** A draw has waited long enough that stepping should make way for it. */
+function drawOverdue(): boolean {
+  return drawScheduled && visible && performance.now() - drawAskedAt > FRAME_GAP_MS;
+}
+
+/** Stops stepping until the pending draw's animation frame, or for HOLD_MAX_MS if none comes. */
+function hold() {
+  holding = true;
+  setTimeout(() => {
+    if (!holding) return;
+    holding = false;
+    // Step another FRAME_GAP_MS before waiting again.
+    drawAskedAt = performance.now();
+    schedule();
+  }, HOLD_MAX_MS);
 }
 
 /** The run's state changed: draw it and tell the page. */
@@ -208,7 +244,7 @@ function tick() {
     budget = unlimited ? Infinity : Math.min(budget + ((start - lastTick) * stepsPerSecond) / 1000, stepsPerSecond + 1);
     lastTick = start;
     let taken = 0;
-    while (budget >= 1 && performance.now() - start < SLICE_MS) {
+    while (budget >= 1 && performance.now() - start < SLICE_MS && !drawOverdue()) {
       const want = unlimited
         ? Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))
         : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4))));
@@ -236,7 +272,9 @@ function tick() {
     }
   }
   if (playing) {
-    if (Number.isFinite(stepsPerSecond) && budget < 1) {
+    if (drawOverdue()) {
+      hold();
+    } else if (Number.isFinite(stepsPerSecond) && budget < 1) {
       setTimeout(schedule, Math.max(1, Math.min(50, ((1 - budget) * 1000) / stepsPerSecond)));
     } else {
       schedule();
@@ -329,6 +367,10 @@ function handle(msg: ToWorker) {
       guard('step', () => simulate_panic());
       return;
     case 'ping':
+      return;
+    case 'visible':
+      visible = msg.visible;
+      schedule();
       return;
     case 'view': {
       viewer?.free();
