@@ -51,6 +51,7 @@ export class SimClient {
   constructor(private readonly on: SimEvents) {
     this.start();
     setInterval(() => this.watch(), 1000);
+    document.addEventListener('visibilitychange', () => this.send({ type: 'visible', visible: !document.hidden }));
   }
 
   /** The watchdog: one ping at a time; a ping left unanswered too long is reported. */
@@ -62,6 +63,19 @@ export class SimClient {
     } else if (now - this.unanswered > STALL_MS) {
       this.stalledFor = now - this.unanswered;
       this.on.stalled(this.stalledFor);
+    }
+  }
+
+  /**
+   * Any message shows the worker's thread runs: a stall shown is over, and an unanswered ping is
+   * timed from now. (Without this, a stall noticed just as a long task ended would be reported
+   * after that task's own message, and would take its place in the banner.)
+   */
+  private heard() {
+    if (this.unanswered !== null) this.unanswered = performance.now();
+    if (this.stalledFor) {
+      this.stalledFor = 0;
+      this.on.stalled(0);
     }
   }
 
@@ -77,6 +91,7 @@ export class SimClient {
     this.send({ type: 'speed', stepsPerSecond: this.speed });
     this.send({ type: 'overlay', field: this.overlay });
     this.send({ type: 'chart', ...this.chart });
+    this.send({ type: 'visible', visible: !document.hidden });
     this.attachView();
   }
 
@@ -163,6 +178,7 @@ export class SimClient {
   }
 
   private receive(msg: FromWorker) {
+    this.heard();
     switch (msg.type) {
       case 'ready':
         return;
@@ -171,10 +187,6 @@ export class SimClient {
         return;
       case 'pong':
         this.unanswered = null;
-        if (this.stalledFor) {
-          this.stalledFor = 0;
-          this.on.stalled(0);
-        }
         return;
       case 'loaded':
         this.lastGood = this.pendingLoad ?? msg.scenario;
