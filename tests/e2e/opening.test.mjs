@@ -18,10 +18,10 @@ const s = session();
 /** A share link for any scenario text, valid or not, made the way the page makes them. */
 const linkOf = (text) => `k1.${deflateRawSync(Buffer.from(text)).toString('base64url')}`;
 
-/** The page's largest AMAS: 2048 cells wide and, with its 8 supply rows, 2048 high. */
+/** The page's largest AMAS: 4096 cells wide and, with its 8 supply rows, 4096 high. */
 function largestAmas(keys = {}) {
   const bench = JSON.parse(readFileSync(new URL('../bench/amas-square1024.json', import.meta.url), 'utf8')).scenario;
-  return JSON.stringify({ ...bench, name: 'amas-2048', target: { rect: [2048, 2040] }, initial: { rect: [2048, 2000] }, ...keys });
+  return JSON.stringify({ ...bench, name: 'amas-4096', target: { rect: [4096, 4088] }, initial: { rect: [4096, 4000] }, ...keys });
 }
 
 /**
@@ -54,7 +54,7 @@ describe('large scenarios', () => {
       location.hash = l;
     }, link);
     await page.waitForSelector('#opening:not([hidden])', { timeout: 5000 });
-    assert.match(await page.textContent('#opening-text'), /^This scenario is large \(4,177,920 cells\); opening it…/);
+    assert.match(await page.textContent('#opening-text'), /^This scenario is large \(16,744,448 cells\); opening it…/);
     assert.equal(await page.getAttribute('#opening .progress', 'role'), 'progressbar');
     // A click is handled while the worker builds the run: another tab opens at once.
     await page.click('#tab-about');
@@ -63,10 +63,10 @@ describe('large scenarios', () => {
     await page.waitForSelector('#opening', { state: 'hidden', timeout: 120000 });
     // Its introduction comes once it has opened.
     await page.waitForSelector('#intro[open]');
-    assert.equal(await page.textContent('#intro-title'), 'amas-2048');
+    assert.equal(await page.textContent('#intro-title'), 'amas-4096');
     await page.click('#intro button.primary');
     await page.click('#tab-run');
-    await page.waitForFunction(() => document.querySelector('#scenario-name').textContent === 'amas-2048', null, { timeout: 30000 });
+    await page.waitForFunction(() => document.querySelector('#scenario-name').textContent === 'amas-4096', null, { timeout: 30000 });
     await page.click('#step');
     await waitForSteps(page, 1, 60000);
     const { tasks, clicks } = await watch.done();
@@ -84,9 +84,9 @@ describe('large scenarios', () => {
     const name = await page.textContent('#scenario-name');
     await page.evaluate((l) => {
       location.hash = l;
-    }, linkOf(largestAmas({ supply_rows: 1 })));
+    }, linkOf(largestAmas({ supply_rows: 1, robots: 4097 })));
     await page.waitForSelector('#banner:not([hidden])', { timeout: 60000 });
-    assert.match(await page.textContent('#banner-text'), /^This scenario cannot run: robots: 4096 robots do not fit/);
+    assert.match(await page.textContent('#banner-text'), /^This scenario cannot run: robots: 4097 robots do not fit/);
     assert.ok(await page.isHidden('#opening'), 'the notice is gone');
     assert.equal(await page.textContent('#state-hash'), before, 'the scenario in view is kept');
     assert.equal(await page.textContent('#scenario-name'), name);

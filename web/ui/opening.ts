@@ -1,5 +1,5 @@
 // Large scenarios open in the simulation worker first. Validating a scenario builds its model,
-// which for a 2048 × 2048 lattice takes seconds; on the main thread that would freeze the page.
+// which for a 4096 × 4096 lattice takes seconds; on the main thread that would freeze the page.
 // A scenario whose shapes span more than LARGE_CELLS cells (read from its text, nothing built) is
 // therefore sent straight to the worker, which validates it while it builds its run, and the page
 // shows a notice with an indeterminate bar and a way to stop until the worker answers. Its changes
@@ -10,7 +10,7 @@ import * as core from '../wasm';
 /**
  * Above this many cells the main thread does not build a scenario. Building costs about 0.2 µs a
  * cell natively and about twice that in wasm: 2^18 cells stay well under 0.1 s on the main thread
- * of a busy machine; the largest (2048 × 2048, 16 times more) take seconds.
+ * of a busy machine; the largest (4096 × 4096, 64 times more) take seconds.
  */
 const LARGE_CELLS = 1 << 18;
 

@@ -17,7 +17,7 @@ fn allow_large_accepts_what_the_page_refuses() {
     let file = dir.join("wide.json");
     let scenario = serde_json::json!({
         "version": 1, "model": "amas", "name": "wide", "robots": 2, "max_steps": 3,
-        "target": format!("{}\n", "#".repeat(3000)),
+        "target": format!("{}\n", "#".repeat(5000)),
     });
     std::fs::write(&file, scenario.to_string()).unwrap();
     let file = file.to_str().unwrap();
@@ -27,7 +27,7 @@ fn allow_large_accepts_what_the_page_refuses() {
     let message = String::from_utf8_lossy(&refused.stderr);
     assert!(
         message
-            .contains("target: 3000×2 cells (with the supply rows) exceeds the limit of 2048×2048"),
+            .contains("target: 5000×2 cells (with the supply rows) exceeds the limit of 4096×4096"),
         "{message}"
     );
 

@@ -70,11 +70,13 @@ pub struct FractaLimits {
 }
 
 impl Limits {
-    /// What the page can draw and run responsively: every link opens under these.
+    /// What the page can draw and run responsively: every link opens under these. AMAS alone
+    /// reaches 4096 a side (16 M cells, about 10 bytes a cell in the core; docs/benchmarks.md
+    /// gives what the page holds and draws at that size).
     pub const PAGE: Limits = Limits {
         shape_cells: 1 << 24,
         amas: AmasLimits {
-            side: 2048,
+            side: 4096,
             supply_rows: 64,
             stages: 64,
             stage_cells: 1 << 26,
@@ -146,11 +148,11 @@ mod tests {
 
     #[test]
     fn an_amas_target_wider_than_the_page_allows_is_refused_by_size_and_limit() {
-        let wide = format!("{}\n", "#".repeat(3000));
+        let wide = format!("{}\n", "#".repeat(5000));
         let (page, large) = under_both("amas-L", "target", json!(wide));
         assert_eq!(
             page,
-            "target: 3000×2 cells (with the supply rows) exceeds the limit of 2048×2048"
+            "target: 5000×2 cells (with the supply rows) exceeds the limit of 4096×4096"
         );
         assert!(large);
     }
@@ -213,7 +215,7 @@ mod tests {
             .unwrap()
             .with_limits(&Limits::LARGE)
             .unwrap();
-        let wide = json!(format!("{}\n", "#".repeat(3000)));
+        let wide = json!(format!("{}\n", "#".repeat(5000)));
         assert!(large.with_override("target", wide.clone()).is_ok());
         let page = presets::scenario("amas-L").unwrap();
         assert!(page.with_override("target", wide).is_err());
