@@ -1,7 +1,9 @@
 //! Square and hex lattices in WebGL2: one full-screen pass that finds each pixel's cell and looks
-//! its code up in an integer texture, then one instanced pass that puts a disc on each agent's
-//! cell. A 1024×1024 lattice with thousands of robots costs the upload of the rows of codes that
-//! changed and a few kilobytes of agents per frame.
+//! its code up in an integer texture, then one pass that puts a disc on each agent's cell: an
+//! instanced quad, or a point when cells are too small on screen for a disc (a point is one vertex
+//! where a quad is six, which a software rasteriser feels with thousands of robots). A 1024×1024
+//! lattice with thousands of robots costs the upload of the rows of codes that changed and a few
+//! kilobytes of agents per frame.
 
 use crate::camera::Camera2D;
 use crate::gl::{attribute, texture, upload_table, Program};
@@ -78,7 +80,8 @@ void main() {
   outColor = col;
 }";
 
-/// One quad per agent, on its cell (none on an empty cell).
+/// One quad per agent, on its cell (none on an empty cell); as a point, `a_corner` is left at 0 and
+/// the point covers the cell.
 const AGENT_VS: &str = "#version 300 es
 precision highp float;
 precision highp int;
@@ -102,12 +105,17 @@ void main() {
     : vec2(c) + 0.5;
   v_local = a_corner;
   v_kind = a_agent.y;
+  gl_PointSize = u_cam.z;
   vec2 s = (centre + a_corner - u_cam.xy) * u_cam.z + 0.5 * u_viewport;
   bool empty = texelFetch(u_cells, c, 0).r == 0u;
   gl_Position = empty ? vec4(2.0, 2.0, 2.0, 1.0) : vec4(2.0 * s.x / u_viewport.x - 1.0, 1.0 - 2.0 * s.y / u_viewport.y, 0.0, 1.0);
 }";
 
-/// A disc with a dark rim, or the whole cell when cells are too small on screen for a disc.
+/// Below this many pixels a cell, an agent fills its whole cell (a square) instead of a disc.
+const DISC_PX: f32 = 5.0;
+
+/// A disc with a dark rim, or the whole cell when cells are too small on screen for a disc
+/// (below DISC_PX, as written in the shader).
 const AGENT_FS: &str = "#version 300 es
 precision highp float;
 precision highp int;
@@ -116,14 +124,33 @@ uniform vec3 u_cam;
 in vec2 v_local;
 flat in uint v_kind;
 out vec4 outColor;
+const float DISC_PX = 5.0;
 void main() {
   vec4 a = texelFetch(u_agentPalette, ivec2(int(v_kind), 0), 0);
   float r = length(v_local);
-  if (u_cam.z < 5.0 || r < 0.3) outColor = a;
+  if (u_cam.z < DISC_PX || r < 0.3) outColor = a;
   else if (r < 0.37) outColor = vec4(0.0, 0.0, 0.0, 1.0);
   else discard;
   if (outColor.a == 0.0) discard;
 }";
+
+/// Changed rows this close together are uploaded as one band: a call per row would cost more than
+/// the few unchanged rows between them.
+const ROW_GAP: usize = 16;
+
+/// The bands of rows to upload, first and last row of each, for the rows that changed (in
+/// increasing order): rows at most `gap` apart share a band. A model that changes a row at the
+/// lattice's top and one at its bottom uploads two rows, not the lattice.
+fn row_bands(changed: &[usize], gap: usize) -> Vec<(usize, usize)> {
+    let mut bands: Vec<(usize, usize)> = Vec::new();
+    for &y in changed {
+        match bands.last_mut() {
+            Some((_, last)) if y - *last <= gap => *last = y,
+            _ => bands.push((y, y)),
+        }
+    }
+    bands
+}
 
 /// One frame's textures: a code per cell, and the overlay's values.
 struct Frames {
@@ -149,6 +176,8 @@ pub struct PlanarGl {
     quad: WebGlVertexArrayObject,
     agent_program: Program,
     agent_vao: WebGlVertexArrayObject,
+    /// The same agents as one point each, for cells smaller than DISC_PX on screen.
+    agent_points: WebGlVertexArrayObject,
     agent_buffer: WebGlBuffer,
     /// (cell, kind) per agent, as last uploaded.
     agent_data: Vec<u32>,
@@ -193,7 +222,14 @@ impl PlanarGl {
         gl.enable_vertex_attrib_array(1);
         gl.vertex_attrib_i_pointer_with_i32(1, 2, Gl::UNSIGNED_INT, 0, 0);
         gl.vertex_attrib_divisor(1, 1);
+        // Points: one vertex per agent, with no corner (attribute 0 keeps its constant 0).
+        let agent_points = gl.create_vertex_array().ok_or("no vertex array")?;
+        gl.bind_vertex_array(Some(&agent_points));
+        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&agent_buffer));
+        gl.enable_vertex_attrib_array(1);
+        gl.vertex_attrib_i_pointer_with_i32(1, 2, Gl::UNSIGNED_INT, 0, 0);
         gl.bind_vertex_array(None);
+        gl.vertex_attrib2f(0, 0.0, 0.0);
 
         let heat = texture(gl)?;
         upload_table(gl, &heat, &heat_table())?;
@@ -202,6 +238,7 @@ impl PlanarGl {
             quad,
             agent_program,
             agent_vao,
+            agent_points,
             agent_buffer,
             agent_data: Vec::new(),
             sets: [Frames::new(gl)?, Frames::new(gl)?],
@@ -258,12 +295,14 @@ impl PlanarGl {
         gl.pixel_storei(Gl::UNPACK_ALIGNMENT, 1);
         let set = &mut self.sets[self.current];
         let row = w as usize;
-        let differs =
-            |y: &usize| frame.cells[y * row..(y + 1) * row] != set.shadow[y * row..(y + 1) * row];
-        if let Some(first) = (0..h as usize).find(differs) {
-            let last = (first..h as usize).rev().find(differs).unwrap_or(first);
-            let band = first * row..(last + 1) * row;
+        let changed: Vec<usize> = (0..h as usize)
+            .filter(|y| frame.cells[y * row..(y + 1) * row] != set.shadow[y * row..(y + 1) * row])
+            .collect();
+        if !changed.is_empty() {
             gl.bind_texture(Gl::TEXTURE_2D, Some(&set.cells));
+        }
+        for (first, last) in row_bands(&changed, ROW_GAP) {
+            let band = first * row..(last + 1) * row;
             gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_u8_array(
                 Gl::TEXTURE_2D,
                 0,
@@ -363,8 +402,13 @@ impl PlanarGl {
             gl.uniform1i(a.uniform(gl, "u_cells").as_ref(), 0);
             gl.uniform1i(a.uniform(gl, "u_agentPalette").as_ref(), 5);
             view.set(gl, a);
-            gl.bind_vertex_array(Some(&self.agent_vao));
-            gl.draw_arrays_instanced(Gl::TRIANGLES, 0, 6, agents);
+            if camera[2] < DISC_PX {
+                gl.bind_vertex_array(Some(&self.agent_points));
+                gl.draw_arrays(Gl::POINTS, 0, agents);
+            } else {
+                gl.bind_vertex_array(Some(&self.agent_vao));
+                gl.draw_arrays_instanced(Gl::TRIANGLES, 0, 6, agents);
+            }
         }
         gl.bind_vertex_array(None);
     }
@@ -390,5 +434,26 @@ impl Shared {
         gl.uniform3f(p.uniform(gl, "u_cam").as_ref(), x, y, z);
         gl.uniform2i(p.uniform(gl, "u_dims").as_ref(), self.dims[0], self.dims[1]);
         gl.uniform1i(p.uniform(gl, "u_hex").as_ref(), self.hex);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn changed_rows_close_together_share_a_band_and_far_ones_do_not() {
+        assert_eq!(row_bands(&[], 16), vec![]);
+        assert_eq!(row_bands(&[3], 16), vec![(3, 3)]);
+        assert_eq!(
+            row_bands(&[0, 1, 17, 40, 1023], 16),
+            vec![(0, 17), (40, 40), (1023, 1023)]
+        );
+    }
+
+    /// The pass that draws points must switch where the shader stops drawing discs.
+    #[test]
+    fn the_shader_and_the_draw_agree_on_when_agents_fill_their_cell() {
+        assert!(AGENT_FS.contains(&format!("const float DISC_PX = {DISC_PX:.1};")));
     }
 }
