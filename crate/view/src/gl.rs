@@ -1,8 +1,10 @@
-//! WebGL2 helpers shared by the renderers: shader programs, textures and attributes.
+//! WebGL2 helpers shared by the renderers: shader programs, textures, attributes, and the
+//! multisampled target the 3-D view draws into.
 
 use wasm_bindgen::JsValue;
 use web_sys::{
-    WebGl2RenderingContext as Gl, WebGlProgram, WebGlShader, WebGlTexture, WebGlUniformLocation,
+    WebGl2RenderingContext as Gl, WebGlFramebuffer, WebGlProgram, WebGlRenderbuffer, WebGlShader,
+    WebGlTexture, WebGlUniformLocation,
 };
 
 /// A linked program and its uniform locations, looked up once each.
@@ -107,4 +109,77 @@ pub fn upload_table(gl: &Gl, tex: &WebGlTexture, table: &[u8]) -> Result<(), JsV
         Gl::UNSIGNED_BYTE,
         Some(table),
     )
+}
+
+/// Samples per pixel of the 3-D view's target (fewer where the context allows fewer).
+const SAMPLES: i32 = 4;
+
+/// A multisampled colour and depth target, resolved into the canvas after drawing. The context
+/// itself is made without antialiasing: the flat lattices gain nothing from it (their cells are
+/// found per pixel in one full-screen pass) and a software rasteriser pays for every sample, so
+/// only the 3-D view, whose cube edges need it, draws multisampled.
+pub struct Multisample {
+    framebuffer: WebGlFramebuffer,
+    colour: WebGlRenderbuffer,
+    depth: WebGlRenderbuffer,
+    size: [i32; 2],
+    /// The framebuffer was complete at this size.
+    complete: bool,
+}
+
+impl Multisample {
+    pub fn new(gl: &Gl) -> Result<Multisample, JsValue> {
+        Ok(Multisample {
+            framebuffer: gl.create_framebuffer().ok_or("no framebuffer")?,
+            colour: gl.create_renderbuffer().ok_or("no renderbuffer")?,
+            depth: gl.create_renderbuffer().ok_or("no renderbuffer")?,
+            size: [0, 0],
+            complete: false,
+        })
+    }
+
+    /// Binds the target at `w`×`h` (sized again when that changed) for drawing. False when the
+    /// context cannot make it: the caller then draws into the canvas directly.
+    pub fn begin(&mut self, gl: &Gl, w: i32, h: i32) -> bool {
+        gl.bind_framebuffer(Gl::FRAMEBUFFER, Some(&self.framebuffer));
+        if self.size != [w, h] {
+            let max = gl
+                .get_parameter(Gl::MAX_SAMPLES)
+                .ok()
+                .and_then(|v| v.as_f64())
+                .map_or(0, |v| v as i32);
+            let samples = SAMPLES.min(max);
+            // RGB8, the canvas's own format (it has no alpha): a multisampled blit must keep it.
+            for (buffer, format, attachment) in [
+                (&self.colour, Gl::RGB8, Gl::COLOR_ATTACHMENT0),
+                (&self.depth, Gl::DEPTH_COMPONENT24, Gl::DEPTH_ATTACHMENT),
+            ] {
+                gl.bind_renderbuffer(Gl::RENDERBUFFER, Some(buffer));
+                gl.renderbuffer_storage_multisample(Gl::RENDERBUFFER, samples, format, w, h);
+                gl.framebuffer_renderbuffer(
+                    Gl::FRAMEBUFFER,
+                    attachment,
+                    Gl::RENDERBUFFER,
+                    Some(buffer),
+                );
+            }
+            gl.bind_renderbuffer(Gl::RENDERBUFFER, None);
+            self.size = [w, h];
+            self.complete =
+                gl.check_framebuffer_status(Gl::FRAMEBUFFER) == Gl::FRAMEBUFFER_COMPLETE;
+        }
+        if !self.complete {
+            gl.bind_framebuffer(Gl::FRAMEBUFFER, None);
+        }
+        self.complete
+    }
+
+    /// Resolves what was drawn into the canvas, and leaves the canvas bound.
+    pub fn resolve(&self, gl: &Gl) {
+        let [w, h] = self.size;
+        gl.bind_framebuffer(Gl::READ_FRAMEBUFFER, Some(&self.framebuffer));
+        gl.bind_framebuffer(Gl::DRAW_FRAMEBUFFER, None);
+        gl.blit_framebuffer(0, 0, w, h, 0, 0, w, h, Gl::COLOR_BUFFER_BIT, Gl::NEAREST);
+        gl.bind_framebuffer(Gl::FRAMEBUFFER, None);
+    }
 }

@@ -9,6 +9,7 @@ use crate::cubic::canvas::CubicCanvas;
 use crate::cubic::gl::CubicGl;
 use crate::cubic::model::lamp_placement;
 use crate::geometry::Grid;
+use crate::gl::Multisample;
 use crate::palette::{css, BACKGROUND};
 use crate::planar::canvas::PlanarCanvas;
 use crate::planar::gl::PlanarGl;
@@ -42,6 +43,8 @@ enum Backend {
         gl: Gl,
         planar: Box<PlanarGl>,
         cubic: Option<Box<CubicGl>>,
+        /// Where the 3-D view draws, multisampled (the context has no antialiasing).
+        multisample: Multisample,
     },
     Canvas {
         ctx: Ctx,
@@ -136,7 +139,8 @@ impl View {
 
     fn webgl(canvas: &OffscreenCanvas) -> Option<Backend> {
         let opts = options(&[
-            ("antialias", true),
+            // Only the 3-D view is antialiased, through its own multisampled target.
+            ("antialias", false),
             ("alpha", false),
             ("preserveDrawingBuffer", false),
         ]);
@@ -145,11 +149,12 @@ impl View {
             .ok()??
             .dyn_into::<Gl>()
             .ok()?;
-        match PlanarGl::new(&gl) {
-            Ok(planar) => Some(Backend::Gl {
+        match PlanarGl::new(&gl).and_then(|p| Ok((p, Multisample::new(&gl)?))) {
+            Ok((planar, multisample)) => Some(Backend::Gl {
                 gl,
                 planar: Box::new(planar),
                 cubic: None,
+                multisample,
             }),
             Err(e) => {
                 web_sys::console::warn_2(&"WebGL2 renderer unavailable:".into(), &e);
@@ -202,7 +207,9 @@ impl View {
         }
         self.grid = grid;
         match &mut self.backend {
-            Backend::Gl { gl, planar, cubic } => {
+            Backend::Gl {
+                gl, planar, cubic, ..
+            } => {
                 if layout.lattice == LatticeKind::Cubic {
                     if cubic.is_none() {
                         *cubic = Some(Box::new(CubicGl::new(gl)?));
@@ -336,14 +343,26 @@ impl View {
         let start = now();
         let mut uploaded = start;
         let stats = match &mut self.backend {
-            Backend::Gl { gl, planar, cubic } => {
+            Backend::Gl {
+                gl,
+                planar,
+                cubic,
+                multisample,
+            } => {
+                let resolve = matches!(self.camera, Camera::Orbit(_))
+                    && cubic.is_some()
+                    && multisample.begin(gl, pw, ph);
                 gl.viewport(0, 0, pw, ph);
                 let [r, g, b, _] = BACKGROUND.map(|c| f32::from(c) / 255.0);
                 gl.clear_color(r, g, b, 1.0);
                 gl.clear(Gl::COLOR_BUFFER_BIT | Gl::DEPTH_BUFFER_BIT);
                 match (&self.camera, cubic) {
                     (Camera::Orbit(cam), Some(cubic)) => {
-                        Some(cubic.draw(gl, &scene, cam, revision))
+                        let stats = cubic.draw(gl, &scene, cam, revision);
+                        if resolve {
+                            multisample.resolve(gl);
+                        }
+                        Some(stats)
                     }
                     (Camera::Planar(cam), _) => {
                         planar.upload(gl, frame, revision)?;
