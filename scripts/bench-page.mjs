@@ -3,7 +3,8 @@
 // full speed, with where the worker's time went (stepping, uploading buffers, issuing draws), and
 // then the frames per second while its view is dragged for N seconds with the run paused (panned,
 // or with {"orbit": true} turned, and then not played at all): what the renderer alone keeps up
-// with.
+// with. With {"trace": true} the drag is then repeated under a Chromium trace, which shows where
+// each process's time goes (see `profile`).
 import { performance } from 'node:perf_hooks';
 import { launch, serve } from '../tests/e2e/harness.mjs';
 
@@ -20,6 +21,66 @@ function rates(a, b) {
     stepMsPerSecond: (b.work.stepMs - a.work.stepMs) / dt,
     uploadMsPerFrame: per('uploadMs'),
     drawMsPerFrame: per('drawMs'),
+  };
+}
+
+/** How long a traced drag lasts, in seconds. */
+const TRACE_SECONDS = 4;
+
+/**
+ * Drags the view for TRACE_SECONDS under a Chromium trace and sums, per second of the drag, the
+ * busy time of the threads that make a frame: the worker's, the page's main thread, and the GPU
+ * process's main thread, split into what it spent presenting frames (SwapBuffers, where the
+ * software rasteriser's work for the whole frame is waited for) and running the WebGL commands
+ * the worker sent. The CPU time of each process over the same seconds says how much of the two
+ * cores each one took.
+ */
+async function profile(browser, drag) {
+  const cdp = await browser.newBrowserCDPSession();
+  // CPU seconds so far by process type (all renderers together: closed pages' stay constant).
+  const cpu = async () => {
+    const byType = {};
+    for (const p of (await cdp.send('SystemInfo.getProcessInfo')).processInfo) byType[p.type] = (byType[p.type] ?? 0) + p.cpuTime;
+    return byType;
+  };
+  const events = [];
+  cdp.on('Tracing.dataCollected', (e) => events.push(...e.value));
+  const complete = new Promise((resolve) => cdp.once('Tracing.tracingComplete', resolve));
+  await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['toplevel', 'gpu', 'viz', '__metadata'] }, transferMode: 'ReportEvents' });
+  const before = await cpu();
+  const t = performance.now();
+  await drag(TRACE_SECONDS);
+  const seconds = (performance.now() - t) / 1000;
+  const after = await cpu();
+  await cdp.send('Tracing.end');
+  await complete;
+  await cdp.detach();
+  const thread = {};
+  const process = {};
+  for (const e of events) {
+    if (e.ph === 'M' && e.name === 'thread_name') thread[`${e.pid}:${e.tid}`] = e.args.name;
+    if (e.ph === 'M' && e.name === 'process_name') process[e.pid] = e.args.name;
+  }
+  // Each thread's busy time: its complete events that are not nested inside another.
+  const busy = {};
+  const names = {};
+  const openUntil = {};
+  for (const e of events.filter((x) => x.ph === 'X' && x.dur > 0).sort((a, b) => a.ts - b.ts)) {
+    const key = `${process[e.pid]}/${thread[`${e.pid}:${e.tid}`]}`;
+    if (key.startsWith('GPU')) names[`${key}/${e.name}`] = (names[`${key}/${e.name}`] ?? 0) + e.dur;
+    if ((openUntil[key] ?? 0) > e.ts) continue;
+    openUntil[key] = e.ts + e.dur;
+    busy[key] = (busy[key] ?? 0) + e.dur;
+  }
+  const perSecond = (us) => (us ?? 0) / 1000 / seconds;
+  return {
+    seconds,
+    gpuMainMsPerSecond: perSecond(busy['GPU Process/CrGpuMain']),
+    presentMsPerSecond: perSecond(names['GPU Process/CrGpuMain/SkiaOutputSurfaceImplOnGpu::SwapBuffers']),
+    webglCommandsMsPerSecond: perSecond(names['GPU Process/CrGpuMain/GpuChannel::ExecuteDeferredRequest']),
+    workerMsPerSecond: perSecond(busy['Renderer/DedicatedWorker thread']),
+    pageMainMsPerSecond: perSecond(busy['Renderer/CrRendererMain']),
+    cpuSecondsPerSecond: Object.fromEntries(Object.entries(after).map(([k, v]) => [k, (v - (before[k] ?? 0)) / seconds])),
   };
 }
 
@@ -77,16 +138,20 @@ export async function benchPage(pageSpecs, linkFor) {
       const y = box.y + box.height / 2;
       await page.mouse.move(box.x + box.width * 0.3, y);
       await page.mouse.down();
+      let k = 0;
+      const drag = async (s) => {
+        const until = Date.now() + s * 1000;
+        for (; Date.now() < until; k++) {
+          await page.mouse.move(box.x + box.width * (0.3 + 0.4 * Math.abs(Math.sin(k / 30))), y);
+          await page.waitForTimeout(8);
+        }
+      };
       const a = await read();
-      const until = Date.now() + seconds * 1000;
-      for (let k = 0; Date.now() < until; k++) {
-        await page.mouse.move(box.x + box.width * (0.3 + 0.4 * Math.abs(Math.sin(k / 30))), y);
-        await page.waitForTimeout(8);
-      }
-      await page.mouse.up();
-      await page.waitForTimeout(200);
+      await drag(seconds);
       const b = await read();
-      runs.push({ name: spec.name, seconds, renderer, moving: spec.page.orbit ? 'orbiting' : 'panning', ...rates(a, b) });
+      const traced = spec.page.trace ? await profile(browser, drag) : undefined;
+      await page.mouse.up();
+      runs.push({ name: spec.name, seconds, renderer, moving: spec.page.orbit ? 'orbiting' : 'panning', ...rates(a, b), profile: traced });
       await context.close();
     }
     return { loads, loadMs: median(loads), runs };

@@ -58,6 +58,18 @@ for (const r of page.runs) {
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
   );
+  const p = r.profile;
+  if (p) {
+    const cpu = Object.entries(p.cpuSecondsPerSecond)
+      .filter(([, v]) => v >= 0.01)
+      .map(([k, v]) => `${k} ${fmt(v, 2)}`)
+      .join(', ');
+    console.log(
+      `  traced ${r.moving} (${fmt(p.seconds, 2)} s), busy ms per second: GPU process main thread ${fmt(p.gpuMainMsPerSecond)} ` +
+        `(presenting frames ${fmt(p.presentMsPerSecond)}, running the worker's WebGL commands ${fmt(p.webglCommandsMsPerSecond, 2)}), ` +
+        `worker ${fmt(p.workerMsPerSecond, 2)}, page main thread ${fmt(p.pageMainMsPerSecond, 2)}; CPU seconds per second: ${cpu}`,
+    );
+  }
 }
 const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, page };
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
