@@ -4,7 +4,9 @@
 // then the frames per second while its view is dragged for N seconds with the run paused (panned,
 // or with {"orbit": true} turned, and then not played at all): what the renderer alone keeps up
 // with. With {"trace": true} the drag is then repeated under a Chromium trace, which shows where
-// each process's time goes (see `profile`).
+// each process's time goes (see `profile`). After playing, the resident memory of the page's
+// renderer process and of the GPU process is read from /proc (Linux).
+import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { launch, serve } from '../tests/e2e/harness.mjs';
 
@@ -84,6 +86,19 @@ async function profile(browser, drag) {
   };
 }
 
+/** Resident megabytes of the largest renderer process (the page in use) and of the GPU process. */
+async function residentMb(browser) {
+  const cdp = await browser.newBrowserCDPSession();
+  const { processInfo } = await cdp.send('SystemInfo.getProcessInfo');
+  await cdp.detach();
+  const rss = (pid) => {
+    const m = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));
+    return m ? Number(m[1]) / 1024 : 0;
+  };
+  const of = (type) => Math.max(0, ...processInfo.filter((p) => p.type === type).map((p) => rss(p.id)));
+  return { renderer: of('renderer'), gpu: of('GPU') };
+}
+
 export async function benchPage(pageSpecs, linkFor) {
   const server = await serve('/');
   const browser = await launch();
@@ -127,7 +142,7 @@ export async function benchPage(pageSpecs, linkFor) {
         const a = await read();
         await page.waitForTimeout(seconds * 1000);
         const b = await read();
-        runs.push({ name: spec.name, seconds, renderer, moving: 'playing', ...rates(a, b) });
+        runs.push({ name: spec.name, seconds, renderer, moving: 'playing', ...rates(a, b), residentMb: await residentMb(browser) });
         // Paused by the keyboard: a click would first wait for the page's own animation frames,
         // which come slowly while the software rasteriser is busy with the view.
         await page.keyboard.press('Space');

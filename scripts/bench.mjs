@@ -58,6 +58,7 @@ for (const r of page.runs) {
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
   );
+  if (r.residentMb) console.log(`  resident after playing: the page's renderer process ${fmt(r.residentMb.renderer)} MB, the GPU process ${fmt(r.residentMb.gpu)} MB`);
   const p = r.profile;
   if (p) {
     const cpu = Object.entries(p.cpuSecondsPerSecond)
