@@ -69,6 +69,11 @@ describe('large scenarios', () => {
     await page.waitForFunction(() => document.querySelector('#scenario-name').textContent === 'amas-4096', null, { timeout: 30000 });
     await page.click('#step');
     await waitForSteps(page, 1, 60000);
+    // Playing, each step takes tens of milliseconds, yet the page is shown the run as it goes: the
+    // worker makes way for its draws (and the frames the page follows go out with them).
+    await page.click('#play');
+    await waitForSteps(page, 4, 60000);
+    await page.click('#play');
     const { tasks, clicks } = await watch.done();
     const longest = Math.max(0, ...tasks);
     assert.ok(longest < 1000, `the longest task on the main thread took ${longest.toFixed(0)} ms`);

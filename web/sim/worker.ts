@@ -183,6 +183,7 @@ function drawOverdue(): boolean {
 
 /** Stops stepping until the pending draw's animation frame, or for HOLD_MAX_MS if none comes. */
 function hold() {
+  if (holding) return;
   holding = true;
   setTimeout(() => {
     if (!holding) return;
