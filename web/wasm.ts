@@ -5,8 +5,22 @@ import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
 import type { ExperimentInfo, LessonInfo, PresetInfo } from './types';
 
+let compiled: Promise<WebAssembly.Module> | null = null;
+
+/**
+ * The compiled wasm module, compiled once (while it downloads) and shared with the simulation
+ * worker, which would otherwise download and compile its own copy before it could draw anything.
+ */
+export function wasmModule(): Promise<WebAssembly.Module> {
+  compiled ??= WebAssembly.compileStreaming(fetch(wasmUrl)).catch(async () =>
+    // A host that serves the file without the application/wasm type cannot stream it.
+    WebAssembly.compile(await (await fetch(wasmUrl)).arrayBuffer()),
+  );
+  return compiled;
+}
+
 export async function loadCore(): Promise<void> {
-  await init({ module_or_path: wasmUrl });
+  await init({ module_or_path: await wasmModule() });
 }
 
 /** A core error as plain text (wasm-bindgen's JsError arrives as an Error). */

@@ -1,6 +1,7 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable.
 import type { Frame, Layout, WorkerTiming } from '../types';
+import { wasmModule } from '../wasm';
 import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
 import { Cancelled, type Progress, type Recorded, type RecordSettings } from './record';
 
@@ -88,6 +89,12 @@ export class SimClient {
     this.worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'kumiki-sim' });
     this.worker.onmessage = (e: MessageEvent<FromWorker>) => this.receive(e.data);
     this.worker.onerror = (e) => this.on.error(`the simulation worker failed: ${e.message}`, 'step');
+    const worker = this.worker;
+    // The page compiles the module once; a failure is reported where the page loads its own copy.
+    wasmModule().then(
+      (module) => worker.postMessage({ type: 'module', module } satisfies ToWorker),
+      () => {},
+    );
     this.send({ type: 'speed', stepsPerSecond: this.speed });
     this.send({ type: 'overlay', field: this.overlay });
     this.send({ type: 'chart', ...this.chart });

@@ -38,6 +38,8 @@ export interface Picked {
 }
 
 export type ToWorker =
+  /** The wasm module the page compiled: the worker starts with it, without compiling its own. */
+  | { type: 'module'; module: WebAssembly.Module }
   | { type: 'load'; scenario: string }
   | { type: 'play' }
   | { type: 'pause' }

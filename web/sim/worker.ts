@@ -6,7 +6,6 @@
 // Recordings are made here too (web/sim/encode.ts): each frame is stepped, drawn and encoded next
 // to the view, and only the finished file goes to the page.
 import init, { Sim, Viewer, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
-import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
 import type { ChartBand, Frame, Metrics, RenderStats, SceneInfo } from '../types';
 import type { FromWorker, ToWorker } from './protocol';
 import { encode, type RecordHost } from './encode';
@@ -533,14 +532,18 @@ scope.onmessage = (e: MessageEvent<ToWorker>) => {
   // Answered at once, even before the wasm is ready: the page's watchdog asks whether this
   // thread still takes messages at all.
   if (e.data.type === 'ping') post({ type: 'pong', id: e.data.id });
+  else if (e.data.type === 'module') start(e.data.module);
   else if (ready) take(e.data);
   else queue.push(e.data);
 };
 
-init({ module_or_path: wasmUrl })
-  .then(() => {
-    ready = true;
-    post({ type: 'ready' });
-    for (const m of queue.splice(0)) take(m);
-  })
-  .catch((e: unknown) => post({ type: 'error', message: `the simulation could not start: ${String(e)}`, context: 'load' }));
+/** Starts with the page's compiled module (compiled once, for both threads). */
+function start(module: WebAssembly.Module) {
+  init({ module_or_path: module })
+    .then(() => {
+      ready = true;
+      post({ type: 'ready' });
+      for (const m of queue.splice(0)) take(m);
+    })
+    .catch((e: unknown) => post({ type: 'error', message: `the simulation could not start: ${String(e)}`, context: 'load' }));
+}
