@@ -26,6 +26,11 @@ function rates(a, b) {
   };
 }
 
+/** The browser's processes: { type, id, cpuTime } each. */
+async function processes(cdp) {
+  return (await cdp.send('SystemInfo.getProcessInfo')).processInfo;
+}
+
 /** How long a traced drag lasts, in seconds. */
 const TRACE_SECONDS = 4;
 
@@ -42,7 +47,7 @@ async function profile(browser, drag) {
   // CPU seconds so far by process type (all renderers together: closed pages' stay constant).
   const cpu = async () => {
     const byType = {};
-    for (const p of (await cdp.send('SystemInfo.getProcessInfo')).processInfo) byType[p.type] = (byType[p.type] ?? 0) + p.cpuTime;
+    for (const p of await processes(cdp)) byType[p.type] = (byType[p.type] ?? 0) + p.cpuTime;
     return byType;
   };
   const events = [];
@@ -89,7 +94,7 @@ async function profile(browser, drag) {
 /** Resident megabytes of the largest renderer process (the page in use) and of the GPU process. */
 async function residentMb(browser) {
   const cdp = await browser.newBrowserCDPSession();
-  const { processInfo } = await cdp.send('SystemInfo.getProcessInfo');
+  const processInfo = await processes(cdp);
   await cdp.detach();
   const rss = (pid) => {
     const m = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));

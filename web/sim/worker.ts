@@ -61,15 +61,21 @@ let goalJudged = false;
 /** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
 let seekTo: number | null = null;
 
+/** Calls waiting for a later task: after the messages already queued, and unthrottled (a timer is not). */
+const later: (() => void)[] = [];
 const channel = new MessageChannel();
-channel.port1.onmessage = () => {
-  tickScheduled = false;
-  tick();
-};
+channel.port1.onmessage = () => later.shift()?.();
+function inLaterTask(f: () => void) {
+  later.push(f);
+  channel.port2.postMessage(null);
+}
 function schedule() {
   if (!tickScheduled) {
     tickScheduled = true;
-    channel.port2.postMessage(null);
+    inLaterTask(() => {
+      tickScheduled = false;
+      tick();
+    });
   }
 }
 
@@ -235,6 +241,16 @@ function seekNow(): boolean {
   return true;
 }
 
+/** Steps the run `count` steps, timing them for the page and for the pace; undefined if it failed. */
+function timedAdvance(s: Sim, count: number): number | undefined {
+  const t0 = performance.now();
+  const n = guard('step', () => s.advance(count));
+  const dt = performance.now() - t0;
+  stepMs += dt;
+  if (n) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
+  return n;
+}
+
 function tick() {
   if (!seekNow()) return;
   if (playing && sim) {
@@ -248,12 +264,8 @@ function tick() {
       const want = unlimited
         ? Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))
         : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4))));
-      const t0 = performance.now();
-      const n = guard('step', () => s.advance(want));
+      const n = timedAdvance(s, want);
       if (n === undefined) return;
-      const dt = performance.now() - t0;
-      stepMs += dt;
-      if (n > 0) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
       taken += n;
       budget -= n;
       if (n < want) break;
@@ -446,16 +458,6 @@ const held: ToWorker[] = [];
 /** Messages a recording does not hold back (pings never wait): the page's panels follow it, and Cancel stops it. */
 const DURING_RECORDING = new Set<ToWorker['type']>(['ack', 'record-cancel']);
 
-/** Resolves in a later task, after the messages already waiting have been handled. */
-const yielder = new MessageChannel();
-const yielded: (() => void)[] = [];
-yielder.port1.onmessage = () => yielded.shift()?.();
-function nextTask(): Promise<void> {
-  return new Promise((resolve) => {
-    yielded.push(resolve);
-    yielder.port2.postMessage(null);
-  });
-}
 
 /** The run and the view, as the recorder steps and copies them. */
 const recordHost: RecordHost = {
@@ -463,15 +465,12 @@ const recordHost: RecordHost = {
   async advance(count) {
     const s = sim;
     if (!s) throw new Error('the simulation stopped');
-    const t0 = performance.now();
-    const taken = guard('step', () => s.advance(count));
-    stepMs += performance.now() - t0;
-    if (taken === undefined) throw new Error('the run could not be stepped');
+    if (timedAdvance(s, count) === undefined) throw new Error('the run could not be stepped');
     changed = true;
     dirty = true;
     // The GIF encoder never waits on anything: without this task boundary the worker would read
     // no message until the recording ended. Here the page's Cancel and acks get in.
-    await nextTask();
+    await new Promise<void>((resolve) => inLaterTask(resolve));
     return { steps: s.steps(), finished: s.finished() };
   },
   async captureFrame() {

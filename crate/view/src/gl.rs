@@ -3,8 +3,8 @@
 
 use wasm_bindgen::JsValue;
 use web_sys::{
-    WebGl2RenderingContext as Gl, WebGlFramebuffer, WebGlProgram, WebGlRenderbuffer, WebGlShader,
-    WebGlTexture, WebGlUniformLocation,
+    WebGl2RenderingContext as Gl, WebGlBuffer, WebGlFramebuffer, WebGlProgram, WebGlRenderbuffer,
+    WebGlShader, WebGlTexture, WebGlUniformLocation,
 };
 
 /// A linked program and its uniform locations, looked up once each.
@@ -93,6 +93,15 @@ pub fn attribute(gl: &Gl, loc: i32, size: i32, kind: u32, normalized: bool, divi
     gl.enable_vertex_attrib_array(loc as u32);
     gl.vertex_attrib_pointer_with_i32(loc as u32, size, kind, normalized, 0, 0);
     gl.vertex_attrib_divisor(loc as u32, divisor);
+}
+
+/// A new array buffer holding `data` (as little-endian f32), left bound to ARRAY_BUFFER.
+pub fn static_buffer(gl: &Gl, data: &[f32]) -> Result<WebGlBuffer, JsValue> {
+    let buffer = gl.create_buffer().ok_or("no buffer")?;
+    gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&buffer));
+    let bytes: Vec<u8> = data.iter().flat_map(|v| v.to_le_bytes()).collect();
+    gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
+    Ok(buffer)
 }
 
 /// Uploads a 256×1 RGBA lookup table into `tex`.

@@ -8,7 +8,7 @@ use super::model::{
     CubicModel, ModelCache, ADD_COLOR, ARROW_COLOR, GHOST_COLOR, LAMP_COLOR, REACH_COLOR,
 };
 use crate::camera::{normalize, Camera3D, Mat4, V3};
-use crate::gl::{attribute, Program};
+use crate::gl::{attribute, static_buffer, Program};
 use crate::palette::{parse_color, Rgba};
 use crate::scene::{CursorKind, RenderStats, SceneRef};
 use wasm_bindgen::JsValue;
@@ -140,13 +140,8 @@ struct Mesh {
 
 impl Mesh {
     fn upload(gl: &Gl, data: &[f32]) -> Result<Mesh, JsValue> {
-        let buffer = gl.create_buffer().ok_or("no buffer")?;
-        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&buffer));
-        let mut bytes = Vec::with_capacity(data.len() * 4);
-        push_f32s(&mut bytes, data.iter().copied());
-        gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
         Ok(Mesh {
-            buffer,
+            buffer: static_buffer(gl, data)?,
             vertices: (data.len() / VERTEX) as i32,
         })
     }
@@ -263,14 +258,10 @@ impl CubicGl {
 
         let quad = gl.create_vertex_array().ok_or("no vertex array")?;
         gl.bind_vertex_array(Some(&quad));
-        let corners = gl.create_buffer().ok_or("no buffer")?;
-        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&corners));
-        let mut bytes = Vec::new();
-        push_f32s(
-            &mut bytes,
-            [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 1.0],
-        );
-        gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
+        static_buffer(
+            gl,
+            &[0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 1.0],
+        )?;
         attribute(gl, 0, 2, Gl::FLOAT, false, 0);
 
         let line_vao = gl.create_vertex_array().ok_or("no vertex array")?;
