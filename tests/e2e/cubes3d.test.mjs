@@ -40,7 +40,7 @@ function changed(a, b) {
 /** Share of strongly coloured pixels (units, the lamp), as opposed to the dark stage and the grid. */
 function colourful(px, test = (r, g, b) => Math.max(r, g, b) - Math.min(r, g, b) > 70) {
   let n = 0;
-  for (let i = 0; i < px.length; i += 4) if (test(px[i], px[i + 1], px[i + 2])) n++;
+  for (let i = 0; i < px.length; i += 4) if (test(px[i], px[i + 1], px[i + 2], px[i + 3])) n++;
   return n / (px.length / 4);
 }
 async function stepTo(page, steps) {
@@ -106,6 +106,8 @@ describe('the 3-D view', () => {
   test('hovering a unit shows its reachable positions, with the difference at each', async () => {
     const { page, context, problems } = await openCubes('cubes-cube8-zigzag');
     const box = await page.locator('#view').boundingBox();
+    const inked = async () => colourful(await pixels(page, '#annotations'), (r, g, b, a) => a > 0);
+    assert.equal(await inked(), 0, 'nothing is written over the view before a unit is hovered');
     let found = false;
     for (let k = 0; k < 80 && !found; k++) {
       await page.mouse.move(box.x + box.width * (0.3 + (0.4 * ((k * 7) % 80)) / 80), box.y + box.height * (0.3 + (0.4 * ((k * 13) % 80)) / 80));
@@ -122,8 +124,12 @@ describe('the 3-D view', () => {
     assert.ok(found, 'some unit under the pointer shows reachable cells');
     assert.match(await page.textContent('#inspector'), /reachable\s*\d+ positions?/);
     assert.match(await page.textContent('#inspector'), /type-list\s*C\d+\[/);
+    assert.ok((await inked()) > 0, 'the differences are written over the view');
     await page.mouse.move(box.x + 4, box.y + 4);
     await page.waitForFunction(() => JSON.parse(document.querySelector('#view').dataset.scene).highlight === 0);
+    // The layer is left alone while it is empty, so it must have been cleared once the labels went.
+    await page.waitForTimeout(200);
+    assert.equal(await inked(), 0, 'the differences are gone with the hover');
     assert.deepEqual(problems, []);
     await context.close();
   });

@@ -13,8 +13,10 @@ use web_sys::OffscreenCanvasRenderingContext2d as Ctx;
 /// Above this many cells in view, per-cell annotations are left out.
 const MAX_VISIBLE: u64 = 40_000;
 
-/// Draws the planar annotations; the context is cleared and scaled to CSS pixels.
-pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
+/// Draws the planar annotations on a clear context scaled to CSS pixels. Returns whether it drew
+/// anything, so the canvas is cleared (and handed to the compositor) only after it did.
+pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
+    let mut drew = false;
     let grid = &scene.grid;
     let frame = &scene.frame;
     let marks = scene.marks;
@@ -40,6 +42,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
     if !frame.bonds.is_empty() && cam.scale >= 7.0 && count <= MAX_VISIBLE {
         // Each bond once, from the lower-numbered cell, as a connector across the shared edge,
         // clear of the labels at the centres.
+        drew = true;
         ctx.set_stroke_style_str("rgba(20,26,33,0.85)");
         ctx.set_line_width((cam.scale * 0.14).max(1.5));
         ctx.set_line_cap("round");
@@ -76,6 +79,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
         cam.scale >= 12.0 && count <= MAX_VISIBLE,
         field,
     ) {
+        drew = true;
         ctx.set_stroke_style_str("rgba(255,255,255,0.85)");
         ctx.set_fill_style_str("rgba(255,255,255,0.85)");
         ctx.set_line_width((cam.scale * 0.06).max(1.0));
@@ -99,6 +103,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
     }
 
     if marks.labels && scene.layout.cell_labels && cam.scale >= 22.0 && count <= MAX_VISIBLE {
+        drew = true;
         let mut names: Vec<Option<&str>> = vec![None; 256];
         for c in &scene.layout.cells {
             names[usize::from(c.code)] = Some(&c.name);
@@ -125,6 +130,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
 
     if !frame.events.is_empty() {
         // One path per kind: a large run has hundreds of events a step.
+        drew = true;
         let radius = (cam.scale * 0.48).max(4.0);
         ctx.set_line_width((cam.scale * 0.1).max(1.5));
         for kind in &scene.layout.events {
@@ -148,6 +154,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
 
     if !marks.displaced.is_empty() && scene.layout.lattice == LatticeKind::Square {
         // The deflected shape: each unit's square moved by its (scaled) displacement.
+        drew = true;
         ctx.set_fill_style_str("rgba(43,149,214,0.28)");
         ctx.set_stroke_style_str("rgba(16,107,163,0.9)");
         ctx.set_line_width(1.0);
@@ -161,6 +168,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
     }
 
     if !marks.signals.is_empty() {
+        drew = true;
         ctx.set_stroke_style_str("rgba(240,180,41,0.95)");
         ctx.set_fill_style_str("rgba(240,180,41,0.95)");
         ctx.set_line_width((cam.scale * 0.08).max(1.5));
@@ -191,21 +199,23 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
     }
 
     for &i in &marks.highlight {
-        outline(ctx, scene, cam, i, "rgba(240,180,41,0.95)", 2.0);
+        drew |= outline(ctx, scene, cam, i, "rgba(240,180,41,0.95)", 2.0);
     }
     if let Some(i) = marks.hover {
-        outline(ctx, scene, cam, i, "rgba(255,255,255,0.9)", 2.0);
+        drew |= outline(ctx, scene, cam, i, "rgba(255,255,255,0.9)", 2.0);
     }
     // The keyboard cursor: dark and light, so it shows on any cell colour.
     if let Some(c) = marks.cursor.filter(|c| c.kind == CursorKind::Cursor) {
-        outline(ctx, scene, cam, c.cell, "rgba(0,0,0,0.9)", 5.0);
-        outline(ctx, scene, cam, c.cell, "#ffd166", 2.5);
+        drew |= outline(ctx, scene, cam, c.cell, "rgba(0,0,0,0.9)", 5.0);
+        drew |= outline(ctx, scene, cam, c.cell, "#ffd166", 2.5);
     }
+    drew
 }
 
-fn outline(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D, i: u32, colour: &str, width: f64) {
+/// Outlines cell `i`; false when there is no such cell.
+fn outline(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D, i: u32, colour: &str, width: f64) -> bool {
     if i as usize >= scene.grid.len() {
-        return;
+        return false;
     }
     let [wx, wy] = scene.grid.centre(i as usize);
     let [sx, sy] = cam.to_screen(wx, wy);
@@ -228,6 +238,7 @@ fn outline(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D, i: u32, colour: &str, wi
         );
     }
     ctx.stroke();
+    true
 }
 
 fn arrow(ctx: &Ctx, [ax, ay]: [f64; 2], [bx, by]: [f64; 2], scale: f64) {
@@ -255,11 +266,12 @@ fn arrow(ctx: &Ctx, [ax, ay]: [f64; 2], [bx, by]: [f64; 2], scale: f64) {
     ctx.fill();
 }
 
-/// In 3-D: the difference a unit would have at each highlighted (reachable) cell.
-pub fn reach(ctx: &Ctx, scene: &SceneRef, cam: &Camera3D) {
+/// In 3-D: the difference a unit would have at each highlighted (reachable) cell. Returns whether
+/// it drew anything, as [`planar`] does.
+pub fn reach(ctx: &Ctx, scene: &SceneRef, cam: &Camera3D) -> bool {
     let marks = scene.marks;
     if !marks.labels || marks.highlight_values.is_empty() || marks.highlight.len() > 64 {
-        return;
+        return false;
     }
     ctx.set_font("600 12px system-ui, sans-serif");
     ctx.set_text_align("center");
@@ -281,6 +293,7 @@ pub fn reach(ctx: &Ctx, scene: &SceneRef, cam: &Camera3D) {
         ctx.set_fill_style_str("#f0b429");
         let _ = ctx.fill_text(&text, x, y);
     }
+    true
 }
 
 /// A number as JavaScript writes `Number(v.toPrecision(3))`: three significant digits, no

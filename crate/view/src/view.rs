@@ -56,6 +56,8 @@ enum Backend {
 pub struct View {
     canvas: OffscreenCanvas,
     annotations: Option<Ctx>,
+    /// Whether the annotation canvas holds anything since it was last cleared.
+    annotated: bool,
     backend: Backend,
     layout: Option<Layout>,
     grid: Grid,
@@ -123,6 +125,7 @@ impl View {
         Ok(View {
             canvas,
             annotations,
+            annotated: false,
             backend,
             layout: None,
             grid: Grid::new(LatticeKind::Square, [1, 1, 1]),
@@ -265,8 +268,10 @@ impl View {
         self.canvas.set_width(pw);
         self.canvas.set_height(ph);
         if let Some(a) = &self.annotations {
+            // Resizing clears a canvas.
             a.canvas().set_width(pw);
             a.canvas().set_height(ph);
+            self.annotated = false;
         }
     }
 
@@ -389,13 +394,17 @@ impl View {
             }
         };
         if let Some(a) = &self.annotations {
+            // A canvas that is drawn on, even only cleared, is composited again; on a software
+            // rasteriser that costs as much as the lattice, so an empty layer is left untouched.
             a.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
-            a.clear_rect(0.0, 0.0, f64::from(pw), f64::from(ph));
+            if self.annotated {
+                a.clear_rect(0.0, 0.0, f64::from(pw), f64::from(ph));
+            }
             a.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0)?;
-            match &self.camera {
+            self.annotated = match &self.camera {
                 Camera::Planar(cam) => annotate::planar(a, &scene, cam),
                 Camera::Orbit(cam) => annotate::reach(a, &scene, cam),
-            }
+            };
         }
         let end = now();
         self.timing.frames += 1;
