@@ -16,8 +16,13 @@ const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessa
 
 /** Longest stretch of stepping between looks at the message queue. */
 const SLICE_MS = 12;
-/** The state hash costs a pass over the state: refresh it at most this often while playing. */
+/**
+ * The state hash costs a pass over the state: while playing it is refreshed at most this often,
+ * and no more often than keeps it under HASH_SHARE of the time (a 16 M-cell AMAS takes 0.1 s to
+ * hash, which every 250 ms would take as much as its stepping).
+ */
 const HASH_EVERY_MS = 250;
+const HASH_SHARE = 0.05;
 /**
  * While playing, the longest a requested draw waits: past it, stepping holds until the next
  * animation frame has drawn. A worker's animation frames run only when its task queue is idle, so
@@ -50,7 +55,8 @@ let holding = false;
 let visible = true;
 /** What the last draw reported, for the next frame. */
 let drawn: RenderStats | null = null;
-let lastHashAt = 0;
+/** While playing, the hash is not refreshed before this time. */
+let nextHashAt = 0;
 let budget = 0;
 let lastTick = 0;
 let msPerStep = 1;
@@ -106,9 +112,12 @@ function sendFrame(force = false) {
   if (!sim || (awaitingAck && !force)) return;
   const s = sim;
   const frame = guard('step', (): Frame => {
+    let hash: string | null = null;
     const now = performance.now();
-    const withHash = !playing || now - lastHashAt >= HASH_EVERY_MS;
-    if (withHash) lastHashAt = now;
+    if (!playing || now >= nextHashAt) {
+      hash = s.hash();
+      nextHashAt = now + Math.max(HASH_EVERY_MS, (performance.now() - now) / HASH_SHARE);
+    }
     const scene = s.scene_if_changed() as SceneInfo | null;
     const range = overlay ? viewer?.overlay_range() : undefined;
     return {
@@ -117,7 +126,7 @@ function sendFrame(force = false) {
       maxSteps,
       finished: s.finished(),
       completed: s.completed(),
-      hash: withHash ? s.hash() : null,
+      hash,
       metrics: s.metrics() as Metrics,
       stepsPerSecond: playing ? measuredRate() : 0,
       scene,
