@@ -518,7 +518,7 @@ async function record(id: number, settings: RecordSettings) {
   } finally {
     recording = null;
     // A held 'record' starts the next recording, which holds what follows it.
-    while (!recording && held.length > 0) handle(held.shift()!);
+    while (!recording && held.length > 0) handleReporting(held.shift()!);
   }
 }
 
@@ -534,7 +534,19 @@ let ready = false;
 /** Handles a message now, or holds it until the recording under way ends. */
 function take(msg: ToWorker) {
   if (recording && !DURING_RECORDING.has(msg.type)) held.push(msg);
-  else handle(msg);
+  else handleReporting(msg);
+}
+
+/**
+ * Handles a message; if that throws, the page is told why. Messages handled in a batch (those
+ * queued before start, those held by a recording) are each handled whatever the one before did.
+ */
+function handleReporting(msg: ToWorker) {
+  try {
+    handle(msg);
+  } catch (e) {
+    post({ type: 'error', message: `the '${msg.type}' request failed: ${e instanceof Error ? e.message : String(e)}`, context: 'step' });
+  }
 }
 scope.onmessage = (e: MessageEvent<ToWorker>) => {
   // Answered at once, even before the wasm is ready: the page's watchdog asks whether this
