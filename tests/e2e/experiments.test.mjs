@@ -26,8 +26,12 @@ test('an experiment runs on a worker pool with a progress bar, is plotted, and e
   await page.fill('#experiment-json', JSON.stringify(experiment));
   await page.fill('#experiment-workers', '2');
   await page.dispatchEvent('#experiment-workers', 'change');
+  // The workers run the page's compiled module: none downloads the wasm again.
+  const fetched = [];
+  context.on('request', (r) => r.url().endsWith('.wasm') && fetched.push(r.url()));
   await page.click('#experiment-run');
   await page.waitForFunction(() => document.querySelector('#experiment-status').textContent.startsWith('Done'), null, { timeout: 60000 });
+  assert.deepEqual(fetched, []);
   assert.equal(await page.getAttribute('#experiment-progress', 'aria-valuenow'), '100');
   assert.ok(await page.$('#experiment-plots .uplot canvas'), 'a chart was drawn');
   assert.equal(await page.$$eval('#experiment-plots figure:last-child tbody tr', (r) => r.length), 2);

@@ -1,6 +1,7 @@
 // Runs an experiment's jobs on a pool of workers, handing out the next job to whichever worker
 // finishes first. Rows come back in any order and are stored by job index.
 import type { Row } from '../types';
+import { wasmModule } from '../wasm';
 import type { FromExperimentWorker, ToExperimentWorker } from './worker';
 
 export interface PoolEvents {
@@ -17,13 +18,22 @@ export class ExperimentPool {
 
   constructor(private readonly experiment: string, private readonly jobs: number, private readonly on: PoolEvents) {}
 
-  start(size: number) {
+  /** Starts `size` workers (no more than there are jobs), each with the page's compiled module. */
+  async start(size: number) {
+    let module: WebAssembly.Module;
+    try {
+      module = await wasmModule();
+    } catch (e) {
+      this.fail(`the experiment cannot start: ${e instanceof Error ? e.message : String(e)}`);
+      return;
+    }
+    if (this.stopped) return;
     const n = Math.max(1, Math.min(size, this.jobs));
     for (let w = 0; w < n; w++) {
       const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: `kumiki-experiment-${w}` });
       worker.onmessage = (e: MessageEvent<FromExperimentWorker>) => this.receive(worker, e.data);
       worker.onerror = (e) => this.fail(`an experiment worker failed: ${e.message}`);
-      worker.postMessage({ type: 'setup', experiment: this.experiment } satisfies ToExperimentWorker);
+      worker.postMessage({ type: 'setup', experiment: this.experiment, module } satisfies ToExperimentWorker);
       this.workers.push(worker);
     }
   }

@@ -1,8 +1,8 @@
-// An experiment worker: parses the experiment once, then runs the jobs it is handed.
+// An experiment worker: parses the experiment once, then runs the jobs it is handed. It runs the
+// page's compiled wasm module, handed over with the experiment: nothing is downloaded or compiled.
 import init, { ExperimentRunner, panic_message } from '../pkg/kumiki_wasm.js';
-import wasmUrl from '../pkg/kumiki_wasm_bg.wasm?url';
 
-export type ToExperimentWorker = { type: 'setup'; experiment: string } | { type: 'run'; index: number };
+export type ToExperimentWorker = { type: 'setup'; experiment: string; module: WebAssembly.Module } | { type: 'run'; index: number };
 export type FromExperimentWorker =
   | { type: 'ready' }
   | { type: 'row'; index: number; row: unknown }
@@ -11,13 +11,12 @@ export type FromExperimentWorker =
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (m: FromExperimentWorker) => scope.postMessage(m);
 let runner: ExperimentRunner | null = null;
-const ready = init({ module_or_path: wasmUrl });
 
 scope.onmessage = async (e: MessageEvent<ToExperimentWorker>) => {
-  await ready;
   const msg = e.data;
   try {
     if (msg.type === 'setup') {
+      await init({ module_or_path: msg.module });
       runner = new ExperimentRunner(msg.experiment);
       post({ type: 'ready' });
     } else if (runner) {
