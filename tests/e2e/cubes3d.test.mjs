@@ -106,7 +106,7 @@ describe('the 3-D view', () => {
   test('hovering a unit shows its reachable positions, with the difference at each', async () => {
     const { page, context, problems } = await openCubes('cubes-cube8-zigzag');
     const box = await page.locator('#view').boundingBox();
-    const inked = async () => colourful(await pixels(page, '#annotations'), (r, g, b, a) => a > 0);
+    const inked = async () => colourful(await pixels(page, '#annotations'), (_r, _g, _b, a) => a > 0);
     assert.equal(await inked(), 0, 'nothing is written over the view before a unit is hovered');
     let found = false;
     for (let k = 0; k < 80 && !found; k++) {
