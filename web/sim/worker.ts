@@ -24,9 +24,10 @@ const SLICE_MS = 12;
 const HASH_EVERY_MS = 250;
 const HASH_SHARE = 0.05;
 /**
- * While playing, the longest a requested draw waits: past it, stepping holds until the next
- * animation frame has drawn. A worker's animation frames run only when its task queue is idle, so
- * a run that steps without pause (a large lattice, a slow machine) would otherwise never be drawn.
+ * While playing, the longest between two frames: a step that would end past it waits until the
+ * next animation frame has drawn. A worker's animation frames run only when its task queue is
+ * idle, so a run that steps without pause (a large lattice, a slow machine) would otherwise never
+ * be drawn, and one whose steps are long would be drawn a step or more late.
  */
 const FRAME_GAP_MS = 100;
 /** The longest stepping holds for an animation frame that does not come. */
@@ -47,8 +48,8 @@ let dirty = false;
 /** The state changed since the view last drew it. */
 let changed = false;
 let drawScheduled = false;
-/** When the pending draw was asked for. */
-let drawAskedAt = 0;
+/** When the last frame was drawn, or a hold stopped waiting for one: the next is due FRAME_GAP_MS after. */
+let lastDrawAt = 0;
 /** Stepping waits for the pending draw's animation frame. */
 let holding = false;
 /** The page is shown: a hidden page gets no animation frames, so stepping never waits for one. */
@@ -177,9 +178,9 @@ const frameTimer: (f: () => void) => void =
 function redraw() {
   if (drawScheduled) return;
   drawScheduled = true;
-  drawAskedAt = performance.now();
   frameTimer(() => {
     drawScheduled = false;
+    lastDrawAt = performance.now();
     draw();
     if (dirty) sendFrame();
     else post({ type: 'drew', work: work() });
@@ -190,9 +191,9 @@ function redraw() {
   });
 }
 
-/** A draw has waited long enough that stepping should make way for it. */
+/** A draw is pending and the next step would end past its due time: stepping makes way for it. */
 function drawOverdue(): boolean {
-  return drawScheduled && visible && performance.now() - drawAskedAt > FRAME_GAP_MS;
+  return drawScheduled && visible && performance.now() + msPerStep - lastDrawAt > FRAME_GAP_MS;
 }
 
 /** Stops stepping until the pending draw's animation frame, or for HOLD_MAX_MS if none comes. */
@@ -203,7 +204,7 @@ function hold() {
     if (!holding) return;
     holding = false;
     // Step another FRAME_GAP_MS before waiting again.
-    drawAskedAt = performance.now();
+    lastDrawAt = performance.now();
     schedule();
   }, HOLD_MAX_MS);
 }
