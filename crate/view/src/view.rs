@@ -394,8 +394,8 @@ impl View {
             }
         };
         if let Some(a) = &self.annotations {
-            // A canvas that is drawn on, even only cleared, is composited again; on a software
-            // rasteriser that costs as much as the lattice, so an empty layer is left untouched.
+            // A canvas that is drawn on, even only cleared, is handed to the compositor again: on a
+            // software rasteriser, a second full-size layer every frame. An empty one is left alone.
             a.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
             if self.annotated {
                 a.clear_rect(0.0, 0.0, f64::from(pw), f64::from(ph));
