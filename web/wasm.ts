@@ -8,8 +8,8 @@ import type { ExperimentInfo, LessonInfo, PresetInfo } from './types';
 let compiled: Promise<WebAssembly.Module> | null = null;
 
 /**
- * The compiled wasm module, compiled once (while it downloads) and shared with the simulation
- * worker, which would otherwise download and compile its own copy before it could draw anything.
+ * The compiled wasm module, compiled once (while it downloads) and handed to the simulation worker
+ * and the experiment workers, which would otherwise each download and compile their own copy.
  */
 export function wasmModule(): Promise<WebAssembly.Module> {
   compiled ??= WebAssembly.compileStreaming(fetch(wasmUrl)).catch(async () =>

@@ -468,7 +468,6 @@ const held: ToWorker[] = [];
 /** Messages a recording does not hold back (pings never wait): the page's panels follow it, and Cancel stops it. */
 const DURING_RECORDING = new Set<ToWorker['type']>(['ack', 'record-cancel']);
 
-
 /** The run and the view, as the recorder steps and copies them. */
 const recordHost: RecordHost = {
   steps: () => sim?.steps() ?? 0,

@@ -95,11 +95,19 @@ pub fn attribute(gl: &Gl, loc: i32, size: i32, kind: u32, normalized: bool, divi
     gl.vertex_attrib_divisor(loc as u32, divisor);
 }
 
-/// A new array buffer holding `data` (as little-endian f32), left bound to ARRAY_BUFFER.
+/// Appends `values` as little-endian f32, the layout WebGL reads from a buffer.
+pub fn push_f32s(out: &mut Vec<u8>, values: impl IntoIterator<Item = f32>) {
+    for v in values {
+        out.extend_from_slice(&v.to_le_bytes());
+    }
+}
+
+/// A new array buffer holding `data`, left bound to ARRAY_BUFFER.
 pub fn static_buffer(gl: &Gl, data: &[f32]) -> Result<WebGlBuffer, JsValue> {
     let buffer = gl.create_buffer().ok_or("no buffer")?;
     gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&buffer));
-    let bytes: Vec<u8> = data.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let mut bytes = Vec::with_capacity(data.len() * 4);
+    push_f32s(&mut bytes, data.iter().copied());
     gl.buffer_data_with_u8_array(Gl::ARRAY_BUFFER, &bytes, Gl::STATIC_DRAW);
     Ok(buffer)
 }

@@ -8,7 +8,7 @@ use super::model::{
     CubicModel, ModelCache, ADD_COLOR, ARROW_COLOR, GHOST_COLOR, LAMP_COLOR, REACH_COLOR,
 };
 use crate::camera::{normalize, Camera3D, Mat4, V3};
-use crate::gl::{attribute, static_buffer, Program};
+use crate::gl::{attribute, push_f32s, static_buffer, Program};
 use crate::palette::{parse_color, Rgba};
 use crate::scene::{CursorKind, RenderStats, SceneRef};
 use wasm_bindgen::JsValue;
@@ -205,12 +205,6 @@ impl Batch {
 fn put(out: &mut Vec<u8>, offset: V3, scale: V3, rgba: Rgba) {
     push_f32s(out, offset.into_iter().chain(scale).map(|v| v as f32));
     out.extend_from_slice(&rgba);
-}
-
-fn push_f32s(out: &mut Vec<u8>, values: impl IntoIterator<Item = f32>) {
-    for v in values {
-        out.extend_from_slice(&v.to_le_bytes());
-    }
 }
 
 /// The centre of cell (x, y, z).
