@@ -62,20 +62,17 @@ export class MetricChart {
     const b = this.band;
     const data: uPlot.AlignedData = b ? [Array.from(b.steps), Array.from(b.max), Array.from(b.min)] : [[], [], []];
     if (!this.plot) {
-      this.plot = new uPlot(
-        {
-          width: Math.max(200, this.root.clientWidth),
-          height: 150,
-          legend: { show: false },
-          cursor: { drag: { x: false, y: false } },
-          scales: { x: { time: false } },
-          axes: [{ label: 'step', size: 36 }, { size: 56 }],
-          series: [{}, { label: `${this.label} (greatest)`, stroke: COLOR, width: 2 }, { label: `${this.label} (least)`, stroke: COLOR, width: 2 }],
-          bands: [{ series: [1, 2], fill: 'rgba(43, 108, 176, 0.3)' }],
-        },
-        data,
-        this.root,
-      );
+      const options: uPlot.Options = {
+        width: Math.max(200, this.root.clientWidth),
+        height: 150,
+        legend: { show: false },
+        cursor: { drag: { x: false, y: false } },
+        scales: { x: { time: false } },
+        axes: [{ label: 'step', size: 36 }, { size: 56 }],
+        series: [{}, { label: `${this.label} (greatest)`, stroke: COLOR, width: 2 }, { label: `${this.label} (least)`, stroke: COLOR, width: 2 }],
+        bands: [{ series: [1, 2], fill: 'rgba(43, 108, 176, 0.3)' }],
+      };
+      this.plot = drawnByCpu(() => new uPlot(options, data, this.root));
     } else {
       this.plot.setData(data);
     }
@@ -83,5 +80,27 @@ export class MetricChart {
 
   private resize() {
     if (this.plot) this.plot.setSize({ width: Math.max(200, this.root.clientWidth), height: 150 });
+  }
+}
+
+/**
+ * Runs `build` with every 2D context it asks for drawn by the CPU (`willReadFrequently`).
+ *
+ * Chromium draws a 2D canvas on the GPU by default, and holds the main thread whenever that canvas
+ * gets ahead of the GPU process. With software WebGL the GPU process is busy presenting the
+ * lattice view, and a redraw of this chart, which happens every frame while a run plays, blocked
+ * the page for up to 300 ms. A chart this size draws in well under a millisecond on the CPU.
+ * uPlot asks for its context inside its constructor, so the option is added only for that call.
+ */
+function drawnByCpu<T>(build: () => T): T {
+  const proto = HTMLCanvasElement.prototype;
+  const getContext = proto.getContext;
+  proto.getContext = function (this: HTMLCanvasElement, type: string, options?: object) {
+    return getContext.call(this, type, type === '2d' ? { ...options, willReadFrequently: true } : options);
+  } as typeof getContext;
+  try {
+    return build();
+  } finally {
+    proto.getContext = getContext;
   }
 }
