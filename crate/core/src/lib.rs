@@ -8,7 +8,9 @@
 //! - [`link`]: the share-link codec;
 //! - [`schema`]: the JSON Schemas of scenarios and experiments, derived from the same types;
 //! - [`presets`] and [`lessons`]: the built-in scenarios and classroom exercises;
-//! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`reproduce`]: the papers'
+//! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`playback`]: a run played,
+//!   rewound and forked as the page does it, with its keyframes ([`timeline`]) and chart record
+//!   ([`series`]); [`reproduce`]: the papers'
 //!   claims beside the figures of those runs;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
@@ -24,6 +26,7 @@ pub mod limits;
 pub mod link;
 pub mod math;
 pub mod models;
+pub mod playback;
 pub mod presets;
 pub mod reproduce;
 pub mod rng;

@@ -8,9 +8,7 @@ use std::sync::Mutex;
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
 use kumiki_core::models::Scene;
-use kumiki_core::scenario::Disturbance;
-use kumiki_core::series::{self, Series};
-use kumiki_core::timeline::Timeline;
+use kumiki_core::playback::Playback;
 use kumiki_core::{hash, json, lessons, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
@@ -297,14 +295,6 @@ pub fn shape_format(
     })
 }
 
-/// Memory the keyframes of one run may take, in bytes (estimated from the cell count).
-const KEYFRAME_BYTES: usize = 96 << 20;
-/// Steps between the first keyframes; the interval doubles as the run grows.
-const KEYFRAME_EVERY: u64 = 16;
-/// The share of stepping time keyframes may take. A small model in a large lattice copies more
-/// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
-const KEYFRAME_TIME_SHARE: f64 = 0.05;
-
 /// `performance.now()` of the page or worker, in milliseconds; `None` where there is none.
 fn clock() -> Option<js_sys::Function> {
     let performance = js_sys::Reflect::get(&js_sys::global(), &"performance".into()).ok()?;
@@ -312,48 +302,21 @@ fn clock() -> Option<js_sys::Function> {
     Some(now.dyn_into::<js_sys::Function>().ok()?.bind0(&performance))
 }
 
-/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
-struct KeyframeCost {
-    clock: Option<js_sys::Function>,
-    total: f64,
-    copying: f64,
-}
-
-impl KeyframeCost {
-    fn now(&self) -> f64 {
-        self.clock
-            .as_ref()
-            .and_then(|f| f.call0(&JsValue::NULL).ok())
-            .and_then(|v| v.as_f64())
-            .unwrap_or(0.0)
-    }
-
-    /// Whether keyframes took more than their share of the time measured; starts a new measure
-    /// when they did.
-    fn too_costly(&mut self) -> bool {
-        let costly = self.copying > KEYFRAME_TIME_SHARE * (self.total - self.copying).max(0.0)
-            && self.total > 20.0;
-        if costly {
-            (self.total, self.copying) = (0.0, 0.0);
-        }
-        costly
-    }
-}
-
-/// One running simulation, with the keyframes that let it go back.
+/// One running simulation, with the keyframes that let it go back: a
+/// [`Playback`](kumiki_core::playback::Playback), which keeps the run, its keyframes and its
+/// chart record, read by the page's clock.
 #[wasm_bindgen]
 pub struct Sim {
-    run: Run,
-    timeline: Timeline,
-    /// The furthest step reached since the last fork: the end of the timeline.
-    furthest: u64,
-    /// The disturbances the scenario came with; a fork keeps them and drops later clicks.
-    authored: Vec<Disturbance>,
-    /// Every step's metrics, for the live chart.
-    series: Series,
-    keyframe_cost: KeyframeCost,
+    playback: Playback,
+    clock: Option<js_sys::Function>,
     /// The scene [`Sim::scene_if_changed`] last gave, so a frame carries it only when it changed.
     last_scene: Option<Scene>,
+}
+
+impl Sim {
+    pub(crate) fn run(&self) -> &Run {
+        self.playback.run()
+    }
 }
 
 #[wasm_bindgen]
@@ -361,26 +324,9 @@ impl Sim {
     #[wasm_bindgen(constructor)]
     pub fn new(scenario_json: &str) -> Result<Sim, JsError> {
         let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
-        let authored = scenario.disturbances.clone();
-        let run = Run::new(scenario).map_err(js_err)?;
-        let [w, h, d] = run.model().layout().dims;
-        // About 16 bytes of state a cell, and at least a few keyframes however large the lattice.
-        let per_frame = 16 * (w as usize) * (h as usize) * (d.max(1) as usize) + 4096;
-        let capacity = (KEYFRAME_BYTES / per_frame).clamp(4, 256);
-        let metrics = run.model().metrics();
-        let mut series = Series::new(&metrics, series::DEFAULT_CAPACITY);
-        series.record(run.steps(), &metrics);
         Ok(Sim {
-            timeline: Timeline::new(&run, KEYFRAME_EVERY, capacity),
-            run,
-            furthest: 0,
-            authored,
-            series,
-            keyframe_cost: KeyframeCost {
-                clock: clock(),
-                total: 0.0,
-                copying: 0.0,
-            },
+            playback: Playback::new(Run::new(scenario).map_err(js_err)?),
+            clock: clock(),
             last_scene: None,
         })
     }
@@ -388,95 +334,82 @@ impl Sim {
     /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
     /// taken.
     pub fn advance(&mut self, n: u32) -> u32 {
-        let mut taken = 0;
-        let start = self.keyframe_cost.now();
-        while taken < n && self.run.step() {
-            // Only a step on the interval may keep a keyframe: time just those.
-            if self.run.steps() % self.timeline.keyframes().1 == 0 {
-                let t = self.keyframe_cost.now();
-                if self.timeline.record(&self.run) {
-                    self.keyframe_cost.copying += self.keyframe_cost.now() - t;
-                }
-            }
-            // Steps passed through again after going back are already recorded: the series
-            // skips them before reading a metric.
-            self.series.record_model(self.run.steps(), self.run.model());
-            taken += 1;
-        }
-        self.keyframe_cost.total += self.keyframe_cost.now() - start;
-        if self.keyframe_cost.too_costly() {
-            self.timeline.coarsen();
-        }
-        self.furthest = self.furthest.max(self.run.steps());
-        taken
+        let clock = &self.clock;
+        let mut now = || {
+            clock
+                .as_ref()
+                .and_then(|f| f.call0(&JsValue::NULL).ok())
+                .and_then(|v| v.as_f64())
+                .unwrap_or(0.0)
+        };
+        self.playback.advance(u64::from(n), &mut now) as u32
     }
 
     /// Goes to `step` (at most the furthest step reached) by replaying from the keyframe before
     /// it: the state is bit-identical to the one passed through.
     pub fn seek(&mut self, step: f64) {
-        let step = (step.max(0.0) as u64).min(self.furthest);
-        self.run = self.timeline.seek(step, self.run.scenario());
+        self.playback.seek(step.max(0.0) as u64);
     }
 
     /// A metric's every-step record for the chart, merged into at most `points` points:
     /// `[steps…, least…, greatest…]`, three runs of the same length.
     pub fn chart(&self, metric: &str, points: u32) -> Float64Array {
-        let band = self.series.decimate(metric, points as usize);
+        let band = self.playback.series().decimate(metric, points as usize);
         let flat: Vec<f64> = [band.steps, band.min, band.max].concat();
         Float64Array::from(flat.as_slice())
     }
 
     /// Steps per recorded bucket of the chart's series (1 until the record is full, then doubling).
     pub fn chart_span(&self) -> f64 {
-        self.series.span() as f64
+        self.playback.series().span() as f64
     }
 
     /// The furthest step reached, where the timeline ends.
     pub fn furthest(&self) -> f64 {
-        self.furthest as f64
+        self.playback.furthest() as f64
     }
 
     /// Keyframes kept and the steps between them, for the page's memory note.
     pub fn keyframes(&self) -> Vec<f64> {
-        let (n, every) = self.timeline.keyframes();
+        let (n, every) = self.playback.keyframes();
         vec![n as f64, every as f64]
     }
 
     pub fn steps(&self) -> f64 {
-        self.run.steps() as f64
+        self.run().steps() as f64
     }
 
     pub fn finished(&self) -> bool {
-        self.run.finished()
+        self.run().finished()
     }
 
     pub fn completed(&self) -> bool {
-        self.run.model().completed()
+        self.run().model().completed()
     }
 
     /// The 64-bit state hash in hex.
     pub fn hash(&self) -> String {
-        hash::hex(self.run.state_hash())
+        hash::hex(self.run().state_hash())
     }
 
     /// Lattice, legends, fields and tools: see `kumiki_core::models::Layout`.
     pub fn layout(&self) -> Result<JsValue, JsError> {
-        to_js(&self.run.model().layout())
+        to_js(&self.run().model().layout())
     }
 
     pub fn metrics(&self) -> Result<JsValue, JsError> {
-        to_js(&self.run.model().metrics())
+        to_js(&self.run().model().metrics())
     }
 
     /// One code per cell (a copy, for tests and tools: the page's view reads the model in place,
     /// see [`Viewer`]).
     pub fn cells(&self) -> Uint8Array {
-        Uint8Array::from(self.run.model().cells().as_ref())
+        Uint8Array::from(self.run().model().cells().as_ref())
     }
 
     /// One value per cell (a copy), NaN where undefined; undefined for an unknown field.
     pub fn field(&self, name: &str) -> Option<Float32Array> {
-        self.run
+        self.run()
             .model()
             .field(name)
             .map(|values| Float32Array::from(values.as_ref()))
@@ -485,7 +418,7 @@ impl Sim {
     /// Agents as `[cell, kind, cell, kind, ...]`.
     pub fn agents(&self) -> Uint32Array {
         let flat: Vec<u32> = self
-            .run
+            .run()
             .model()
             .agents()
             .iter()
@@ -497,7 +430,7 @@ impl Sim {
     /// Events of the last step as `[cell, kind, ...]`.
     pub fn events(&self) -> Uint32Array {
         let flat: Vec<u32> = self
-            .run
+            .run()
             .model()
             .events()
             .iter()
@@ -508,7 +441,7 @@ impl Sim {
 
     /// The code of one cell (0: empty or off the lattice).
     pub fn cell_code(&self, cell: u32) -> u8 {
-        self.run
+        self.run()
             .model()
             .cells()
             .get(cell as usize)
@@ -518,7 +451,7 @@ impl Sim {
 
     /// The middle occupied cell in memory order (where a keyboard cursor starts), or -1.
     pub fn middle_occupied(&self) -> f64 {
-        let cells = self.run.model().cells();
+        let cells = self.run().model().cells();
         let occupied = cells.iter().filter(|&&c| c != 0).count();
         let nth = cells
             .iter()
@@ -528,57 +461,38 @@ impl Sim {
         nth.map_or(-1.0, |(i, _)| i as f64)
     }
 
-    /// Applies an action now (a click tool) and records it in the scenario.
+    /// Applies an action now (a click tool) and records it in the scenario; a click in the past
+    /// forks the run (see `kumiki_core::playback::Playback::apply`).
     pub fn apply(&mut self, action_json: &str) -> Result<(), JsError> {
         let action: Value = json::parse(action_json).map_err(js_err)?;
         let Value::Object(action) = action else {
             return Err(JsError::new("an action is a JSON object"));
         };
-        let now = self.run.steps();
-        if now >= self.furthest {
-            self.run.apply_now(action).map_err(js_err)?;
-        } else {
-            // A click in the past forks the run: what was clicked later is discarded, the
-            // scenario's own disturbances stay. Tried on a copy, so a refused click changes
-            // nothing.
-            let mut scenario = self.run.scenario().clone();
-            let authored = &self.authored;
-            scenario
-                .disturbances
-                .retain(|d| d.at <= now || authored.contains(d));
-            let mut fork = self.run.snapshot();
-            fork.reschedule(&scenario);
-            fork.apply_now(action).map_err(js_err)?;
-            self.run = fork;
-        }
-        self.timeline.truncate(now);
-        self.series.truncate(now);
-        self.furthest = now;
-        Ok(())
+        self.playback.apply(action).map_err(js_err)
     }
 
     /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);
     /// empty for models without bonds. See `kumiki_core::models::Model::bonds`.
     pub fn bonds(&self) -> Uint8Array {
-        Uint8Array::from(self.run.model().bonds().as_ref())
+        Uint8Array::from(self.run().model().bonds().as_ref())
     }
 
     pub fn inspect(&self, cell: u32) -> Result<JsValue, JsError> {
-        to_js(&self.run.model().inspect(cell as usize))
+        to_js(&self.run().model().inspect(cell as usize))
     }
 
     /// Ghost cells, light direction, ground plane and bonds for 3-D views (see
     /// `kumiki_core::models::Scene`); empty for models without them. Read it again after stepping:
     /// the ghost follows the current target.
     pub fn scene(&self) -> Result<JsValue, JsError> {
-        to_js(&self.run.model().scene())
+        to_js(&self.run().model().scene())
     }
 
     /// [`Sim::scene`] when it differs from what this call last returned (always on the first
     /// call), else null: the worker's frames carry the scene only when it changed, without
     /// serialising it every frame to find out.
     pub fn scene_if_changed(&mut self) -> Result<JsValue, JsError> {
-        let scene = self.run.model().scene();
+        let scene = self.run().model().scene();
         if self.last_scene.as_ref() == Some(&scene) {
             return Ok(JsValue::NULL);
         }
@@ -589,17 +503,17 @@ impl Sim {
 
     /// The scenario as it now stands, with clicked disturbances recorded.
     pub fn scenario_json(&self) -> String {
-        self.run.scenario().to_json_pretty()
+        self.run().scenario().to_json_pretty()
     }
 
     /// The exercise's goal judged on the run as it stands: `{met, because}`, or undefined when
     /// the scenario is no exercise.
     pub fn check_goal(&self) -> Result<JsValue, JsError> {
-        let Some(exercise) = &self.run.scenario().exercise else {
+        let Some(exercise) = &self.run().scenario().exercise else {
             return Ok(JsValue::UNDEFINED);
         };
-        let outcome = self.run.outcome();
-        let doc = self.run.scenario().to_value();
+        let outcome = self.run().outcome();
+        let doc = self.run().scenario().to_value();
         to_js(&exercise.goal().check(&kumiki_core::exercise::Outcome {
             completed: outcome.completed,
             steps: outcome.steps,

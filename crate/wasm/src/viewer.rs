@@ -70,7 +70,7 @@ impl Viewer {
 
     /// The run's layout, from the simulation.
     pub fn set_layout_of(&mut self, sim: &Sim) -> Result<(), JsValue> {
-        self.view.set_layout(sim.run.model().layout(), true)
+        self.view.set_layout(sim.run().model().layout(), true)
     }
 
     /// A layout given by the page (an editor's own lattice); the camera stays where the editor
@@ -162,7 +162,7 @@ impl Viewer {
     /// Draws the simulation as it stands, with `overlay` as a heat map when given. Returns what a
     /// 3-D frame drew (null for a planar one).
     pub fn draw_sim(&mut self, sim: &Sim, overlay: Option<String>) -> Result<JsValue, JsValue> {
-        let model = sim.run.model();
+        let model = sim.run().model();
         let cells = model.cells();
         let agents = model.agents();
         let events = model.events();
@@ -228,7 +228,7 @@ impl Viewer {
 
     /// What is under a screen point of the simulation's view.
     pub fn pick_sim(&self, sim: &Sim, sx: f64, sy: f64) -> Result<JsValue, JsError> {
-        self.pick(&sim.run.model().cells(), sx, sy)
+        self.pick(&sim.run().model().cells(), sx, sy)
     }
 
     /// What is under a screen point, for cells given by the page.

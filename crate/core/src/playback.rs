@@ -1,0 +1,284 @@
+//! A run as the page plays it: stepped forward, rewound to any step passed through, forked by a
+//! click in the past, with every step's metrics kept for the live chart.
+//!
+//! [`Playback`] holds the [`Run`], its [`Timeline`] of keyframes and its [`Series`]. It reads no
+//! clock of its own: [`Playback::advance`] is handed one, so the page passes `performance.now()`
+//! and a native test passes a clock it drives itself. The clock only decides how often keyframes
+//! are kept, never what the run does.
+
+use crate::error::Result;
+use crate::models::Action;
+use crate::run::Run;
+use crate::scenario::Disturbance;
+use crate::series::{self, Series};
+use crate::timeline::Timeline;
+
+/// Memory the keyframes of one run may take, in bytes (estimated from the cell count).
+pub const KEYFRAME_BYTES: usize = 96 << 20;
+/// Steps between the first keyframes; the interval doubles as the run grows.
+pub const KEYFRAME_EVERY: u64 = 16;
+/// The share of stepping time keyframes may take. A small model in a large lattice copies more
+/// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
+pub const KEYFRAME_TIME_SHARE: f64 = 0.05;
+/// Keyframes are judged too costly only once this much stepping time (ms) has been measured.
+const COST_WINDOW_MS: f64 = 20.0;
+
+/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
+#[derive(Default)]
+struct KeyframeCost {
+    total: f64,
+    copying: f64,
+}
+
+impl KeyframeCost {
+    /// Whether keyframes took more than their share of the time measured; starts a new measure
+    /// when they did.
+    fn too_costly(&mut self) -> bool {
+        let costly = self.copying > KEYFRAME_TIME_SHARE * (self.total - self.copying).max(0.0)
+            && self.total > COST_WINDOW_MS;
+        if costly {
+            *self = KeyframeCost::default();
+        }
+        costly
+    }
+}
+
+/// One run with the keyframes that let it go back and the record of its metrics.
+pub struct Playback {
+    run: Run,
+    timeline: Timeline,
+    /// The furthest step reached since the last fork: the end of the timeline.
+    furthest: u64,
+    /// The disturbances the scenario came with; a fork keeps them and drops later clicks.
+    authored: Vec<Disturbance>,
+    /// Every step's metrics, for the live chart.
+    series: Series,
+    cost: KeyframeCost,
+}
+
+impl Playback {
+    /// Plays `run` from where it stands, keeping keyframes within [`KEYFRAME_BYTES`] (about 16
+    /// bytes of state a cell, and at least a few keyframes however large the lattice).
+    pub fn new(run: Run) -> Playback {
+        let [w, h, d] = run.model().layout().dims;
+        let per_frame = 16 * (w as usize) * (h as usize) * (d.max(1) as usize) + 4096;
+        let capacity = (KEYFRAME_BYTES / per_frame).clamp(4, 256);
+        let metrics = run.model().metrics();
+        let mut series = Series::new(&metrics, series::DEFAULT_CAPACITY);
+        series.record(run.steps(), &metrics);
+        Playback {
+            timeline: Timeline::new(&run, KEYFRAME_EVERY, capacity),
+            furthest: run.steps(),
+            authored: run.scenario().disturbances.clone(),
+            series,
+            cost: KeyframeCost::default(),
+            run,
+        }
+    }
+
+    pub fn run(&self) -> &Run {
+        &self.run
+    }
+
+    /// Every step's metrics since the start (or the last fork).
+    pub fn series(&self) -> &Series {
+        &self.series
+    }
+
+    /// The furthest step reached, where the timeline ends.
+    pub fn furthest(&self) -> u64 {
+        self.furthest
+    }
+
+    /// Keyframes kept and the steps between them.
+    pub fn keyframes(&self) -> (usize, u64) {
+        self.timeline.keyframes()
+    }
+
+    /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
+    /// taken. `now` reads a clock in milliseconds: keyframes that cost more than
+    /// [`KEYFRAME_TIME_SHARE`] of the stepping time it measures are kept further apart.
+    pub fn advance(&mut self, n: u64, now: &mut dyn FnMut() -> f64) -> u64 {
+        let mut taken = 0;
+        let start = now();
+        while taken < n && self.run.step() {
+            // Only a step on the interval may keep a keyframe: time just those.
+            if self.run.steps() % self.timeline.keyframes().1 == 0 {
+                let t = now();
+                if self.timeline.record(&self.run) {
+                    self.cost.copying += now() - t;
+                }
+            }
+            // Steps passed through again after going back are already recorded: the series
+            // skips them before reading a metric.
+            self.series.record_model(self.run.steps(), self.run.model());
+            taken += 1;
+        }
+        self.cost.total += now() - start;
+        if self.cost.too_costly() {
+            self.timeline.coarsen();
+        }
+        self.furthest = self.furthest.max(self.run.steps());
+        taken
+    }
+
+    /// Goes to `step` (at most the furthest step reached) by replaying from the keyframe before
+    /// it: the state is bit-identical to the one passed through.
+    pub fn seek(&mut self, step: u64) {
+        let step = step.min(self.furthest);
+        self.run = self.timeline.seek(step, self.run.scenario());
+    }
+
+    /// Applies an action now (a click tool) and records it in the scenario. A click in the past
+    /// forks the run: what was clicked later is discarded, the scenario's own disturbances stay,
+    /// and the timeline and the series end at the click. Tried on a copy, so a refused click
+    /// changes nothing.
+    pub fn apply(&mut self, action: Action) -> Result<()> {
+        let now = self.run.steps();
+        if now >= self.furthest {
+            self.run.apply_now(action)?;
+        } else {
+            let mut scenario = self.run.scenario().clone();
+            let authored = &self.authored;
+            scenario
+                .disturbances
+                .retain(|d| d.at <= now || authored.contains(d));
+            let mut fork = self.run.snapshot();
+            fork.reschedule(&scenario);
+            fork.apply_now(action)?;
+            self.run = fork;
+        }
+        self.timeline.truncate(now);
+        self.series.truncate(now);
+        self.furthest = now;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{presets, Scenario};
+
+    fn amas_l() -> Playback {
+        Playback::new(Run::new(presets::scenario("amas-L").unwrap()).unwrap())
+    }
+
+    fn action(text: &str) -> Action {
+        match serde_json::from_str(text).unwrap() {
+            serde_json::Value::Object(map) => map,
+            _ => unreachable!(),
+        }
+    }
+
+    fn no_clock() -> impl FnMut() -> f64 {
+        || 0.0
+    }
+
+    #[test]
+    fn going_back_reaches_the_state_passed_through() {
+        let mut p = amas_l();
+        let mut hashes = vec![p.run().state_hash()];
+        for _ in 0..120 {
+            assert_eq!(p.advance(1, &mut no_clock()), 1);
+            hashes.push(p.run().state_hash());
+        }
+        assert_eq!(p.furthest(), 120);
+        for back in [0, 1, 15, 16, 17, 63, 119, 120] {
+            p.seek(back);
+            assert_eq!(p.run().steps(), back);
+            assert_eq!(p.run().state_hash(), hashes[back as usize], "step {back}");
+        }
+        p.seek(500);
+        assert_eq!(
+            p.run().steps(),
+            120,
+            "a seek stops at the furthest step reached"
+        );
+    }
+
+    #[test]
+    fn a_click_in_the_past_forks_and_keeps_the_authored_disturbances() {
+        let mut scenario: Scenario = presets::scenario("amas-L").unwrap();
+        let authored = Disturbance {
+            at: 90,
+            action: action(r#"{"kind": "remove", "count": 1}"#),
+        };
+        scenario.disturbances = vec![authored.clone()];
+        let mut p = Playback::new(Run::new(scenario).unwrap());
+        p.advance(60, &mut no_clock());
+        p.apply(action(r#"{"kind": "remove", "count": 2}"#))
+            .unwrap();
+        p.advance(40, &mut no_clock());
+        let before_fork = p.run().state_hash();
+        p.seek(30);
+        p.apply(action(r#"{"kind": "remove", "count": 3}"#))
+            .unwrap();
+        assert_eq!(p.furthest(), 30, "the fork ends the timeline at the click");
+        assert_eq!(p.series().last_step(), Some(30), "and the series");
+        let kept: Vec<u64> = p
+            .run()
+            .scenario()
+            .disturbances
+            .iter()
+            .map(|d| d.at)
+            .collect();
+        assert_eq!(
+            kept,
+            [30, 90],
+            "the later click is dropped, the authored one stays"
+        );
+        p.advance(70, &mut no_clock());
+        assert_eq!(p.run().steps(), 100);
+        assert_ne!(
+            p.run().state_hash(),
+            before_fork,
+            "the fork runs differently"
+        );
+    }
+
+    #[test]
+    fn a_refused_click_changes_nothing() {
+        let mut p = amas_l();
+        p.advance(50, &mut no_clock());
+        p.seek(20);
+        let hash = p.run().state_hash();
+        assert!(p.apply(action(r#"{"kind": "bogus"}"#)).is_err());
+        assert_eq!(p.run().state_hash(), hash);
+        assert_eq!(p.furthest(), 50, "the timeline is untouched");
+    }
+
+    #[test]
+    fn keyframes_that_cost_too_much_time_are_kept_further_apart() {
+        // A clock that moves 5 ms at every reading: each keyframe copy seems to take 5 ms, a
+        // quarter or more of the time measured, far above the share, so the interval doubles.
+        let mut p = amas_l();
+        let every = p.keyframes().1;
+        let mut t = 0.0;
+        let mut clock = || {
+            t += 5.0;
+            t
+        };
+        p.advance(4 * KEYFRAME_EVERY, &mut clock);
+        assert!(
+            p.keyframes().1 > every,
+            "interval {} stayed",
+            p.keyframes().1
+        );
+
+        // With a clock that never moves, the interval stays.
+        let mut q = amas_l();
+        q.advance(4 * KEYFRAME_EVERY, &mut no_clock());
+        assert_eq!(q.keyframes().1, every);
+    }
+
+    #[test]
+    fn every_step_is_in_the_series_once_even_after_going_back() {
+        let mut p = amas_l();
+        p.advance(40, &mut no_clock());
+        p.seek(10);
+        p.advance(30, &mut no_clock());
+        assert_eq!(p.series().last_step(), Some(40));
+        assert_eq!(p.series().len(), 41, "steps 0 to 40, each once");
+    }
+}
