@@ -116,8 +116,9 @@ enum Command {
         #[command(flatten)]
         jobs: Jobs,
     },
-    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema) and the scenario
-    /// types generated from them (DIR/web/scenario.gen.ts)
+    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema), the scenario types
+    /// generated from them (DIR/web/scenario.gen.ts) and the limits table of
+    /// DIR/docs/scenario-format.md
     Schema {
         /// Compare the schemas under DIR with what this build derives; fail if they differ
         #[arg(long)]
@@ -444,9 +445,19 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Writes `docs/schema/` under `root`, or with `check` says whether it is current.
+/// Writes `docs/schema/`, the TypeScript types and the generated parts of the docs under `root`,
+/// or with `check` says whether they are current.
 fn schema(check: bool, root: &Path) -> Result<(), Failure> {
-    let files = kumiki_core::schema::files();
+    let mut files = kumiki_core::schema::files();
+    for (path, marker, part) in kumiki_core::schema::spliced() {
+        let doc = std::fs::read_to_string(root.join(path)).map_err(|e| format!("{path}: {e}"))?;
+        let text = kumiki_core::schema::splice(&doc, marker, &part).ok_or_else(|| {
+            format!(
+                "{path}: the <!-- {marker}:begin --> and <!-- {marker}:end --> lines are missing"
+            )
+        })?;
+        files.push((path.to_string(), text));
+    }
     if check {
         let stale: Vec<String> = files
             .iter()

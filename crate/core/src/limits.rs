@@ -4,8 +4,8 @@
 //! 64-bit arithmetic and compared with these limits before anything of that size is allocated.
 //! [`Limits::PAGE`] fits what the page can draw and run responsively, and is what every
 //! scenario is read under unless a caller asks otherwise; [`Limits::LARGE`] is for the command
-//! line (`--allow-large`), where a run may take minutes and gigabytes. `docs/scenario-format.md`
-//! tables both.
+//! line (`--allow-large`), where a run may take minutes and gigabytes. [`ROWS`] describes each
+//! limit once; `kumiki schema` writes them as the table in `docs/scenario-format.md`.
 
 /// Limits on what a scenario may ask for. A scenario read under one set of limits keeps them, so
 /// its overrides and its run are checked the same way.
@@ -128,6 +128,111 @@ impl Limits {
     };
 }
 
+/// One limit as the documentation tables it: the model (or `every`), what it bounds, and how to
+/// read it from a set of limits.
+pub struct LimitRow {
+    pub model: &'static str,
+    pub what: &'static str,
+    pub read: fn(&Limits) -> u64,
+    /// Written as a power of two (`2^24`) rather than in digits.
+    pub power_of_two: bool,
+}
+
+const fn row(model: &'static str, what: &'static str, read: fn(&Limits) -> u64) -> LimitRow {
+    LimitRow {
+        model,
+        what,
+        read,
+        power_of_two: false,
+    }
+}
+
+const fn row_pow2(model: &'static str, what: &'static str, read: fn(&Limits) -> u64) -> LimitRow {
+    LimitRow {
+        model,
+        what,
+        read,
+        power_of_two: true,
+    }
+}
+
+/// Every field of [`Limits`], described once (a test checks that none is left out).
+pub const ROWS: &[LimitRow] = &[
+    row_pow2(
+        "every",
+        "cells a shape text spans (width × height × layers; rows padded to the widest)",
+        |l| l.shape_cells,
+    ),
+    row("`amas`", "lattice side, supply rows included", |l| {
+        l.amas.side.into()
+    }),
+    row("`amas`", "supply rows", |l| l.amas.supply_rows.into()),
+    row("`amas`", "stage targets before the final one", |l| {
+        l.amas.stages as u64
+    }),
+    row_pow2(
+        "`amas`",
+        "cells of all stage targets together (lattice cells × targets)",
+        |l| l.amas.stage_cells,
+    ),
+    row("`chobie`", "world side (text plus `extend`)", |l| {
+        l.chobie.side.into()
+    }),
+    row("`chobie`", "robots", |l| l.chobie.robots as u64),
+    row("`chobie`", "`goal`, cells", |l| l.chobie.goal.into()),
+    row(
+        "`cubes3d`",
+        "side of the space (shapes, margin and padding)",
+        |l| l.cubes3d.side.into(),
+    ),
+    row_pow2("`cubes3d`", "cells of the space", |l| l.cubes3d.cells),
+    row("`cubes3d`", "units", |l| l.cubes3d.units as u64),
+    row("`cubes3d`", "targets", |l| l.cubes3d.targets as u64),
+    row("`fracta`", "lattice side, margin included", |l| {
+        l.fracta.side.into()
+    }),
+    row("`fracta`", "units", |l| l.fracta.units as u64),
+    row("`fracta`", "`margin`", |l| l.fracta.margin.into()),
+];
+
+impl LimitRow {
+    /// The limit under `limits` as the table writes it: `2^k`, or digits with a space between
+    /// thousands from 10 000 on.
+    fn show(&self, limits: &Limits) -> String {
+        let n = (self.read)(limits);
+        if self.power_of_two && n.is_power_of_two() {
+            return format!("2^{}", n.trailing_zeros());
+        }
+        let digits = n.to_string();
+        if digits.len() < 5 {
+            return digits;
+        }
+        let mut out = String::new();
+        for (i, c) in digits.chars().enumerate() {
+            if i > 0 && (digits.len() - i) % 3 == 0 {
+                out.push(' ');
+            }
+            out.push(c);
+        }
+        out
+    }
+}
+
+/// The limits as a Markdown table: one row of [`ROWS`] a line, page and large side by side.
+pub fn markdown_table() -> String {
+    let mut out = String::from("| model | what | page | large |\n| --- | --- | ---: | ---: |\n");
+    for row in ROWS {
+        out.push_str(&format!(
+            "| {} | {} | {} | {} |\n",
+            row.model,
+            row.what,
+            row.show(&Limits::PAGE),
+            row.show(&Limits::LARGE)
+        ));
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -219,6 +324,55 @@ mod tests {
         assert!(large.with_override("target", wide.clone()).is_ok());
         let page = presets::scenario("amas-L").unwrap();
         assert!(page.with_override("target", wide).is_err());
+    }
+
+    #[test]
+    fn the_table_has_a_row_for_every_limit() {
+        // Every field set to its own value: the struct literal fails to compile when a field is
+        // added, and the rows must then read each value exactly once.
+        let distinct = Limits {
+            shape_cells: 1,
+            amas: AmasLimits {
+                side: 2,
+                supply_rows: 3,
+                stages: 4,
+                stage_cells: 5,
+            },
+            chobie: ChobieLimits {
+                side: 6,
+                robots: 7,
+                goal: 8,
+            },
+            cubes3d: Cubes3dLimits {
+                side: 9,
+                cells: 10,
+                units: 11,
+                targets: 12,
+            },
+            fracta: FractaLimits {
+                side: 13,
+                units: 14,
+                margin: 15,
+            },
+        };
+        let mut read: Vec<u64> = ROWS.iter().map(|r| (r.read)(&distinct)).collect();
+        read.sort_unstable();
+        assert_eq!(read, (1..=15).collect::<Vec<u64>>());
+    }
+
+    #[test]
+    fn the_table_writes_powers_of_two_and_groups_thousands() {
+        let table = markdown_table();
+        assert!(table.contains("| every | cells a shape text spans (width × height × layers; rows padded to the widest) | 2^24 | 2^28 |"), "{table}");
+        assert!(
+            table.contains("| `chobie` | robots | 5000 | 50 000 |"),
+            "{table}"
+        );
+        assert!(
+            table.contains("| `cubes3d` | units | 100 000 | 1 000 000 |"),
+            "{table}"
+        );
+        assert_eq!(table.lines().count(), ROWS.len() + 2);
     }
 
     #[test]

@@ -248,6 +248,26 @@ pub fn files() -> Vec<(String, String)> {
     ]
 }
 
+/// Generated parts of hand-written pages: the page's path from the repository root, the marker
+/// that bounds the part (`<!-- NAME:begin -->` ... `<!-- NAME:end -->`) and the part's text.
+pub fn spliced() -> Vec<(&'static str, &'static str, String)> {
+    vec![(
+        "docs/scenario-format.md",
+        "limits",
+        crate::limits::markdown_table(),
+    )]
+}
+
+/// `doc` with the text between `marker`'s begin and end comments replaced by `part`, or `None`
+/// when the page lacks either comment.
+pub fn splice(doc: &str, marker: &str, part: &str) -> Option<String> {
+    let begin = format!("<!-- {marker}:begin -->\n");
+    let end = format!("<!-- {marker}:end -->");
+    let from = doc.find(&begin)? + begin.len();
+    let to = from + doc[from..].find(&end)?;
+    Some(format!("{}{part}{}", &doc[..from], &doc[to..]))
+}
+
 /// TypeScript types of the scenario schema: one declaration per definition, and `Scenario`, the
 /// union of the models' scenarios. They describe scenarios as the core writes them, every
 /// default filled in, so a key is optional only when the schema gives it no default.
