@@ -49,4 +49,13 @@ bash scripts/build.sh
 npx --no-install tsc --noEmit -p .
 
 step "browser tests (headless Chromium)"
-node --test --test-concurrency=1 tests/e2e/
+# The files that measure time or the browser's memory (the main thread's stalls, the time to
+# answer a hostile link, every Chromium process's memory) run alone, after the rest; the others,
+# each with its own server and browser, run two at a time.
+alone=(tests/e2e/opening.test.mjs tests/e2e/page.test.mjs tests/e2e/safety.test.mjs)
+together=()
+for f in tests/e2e/*.test.mjs; do
+  [[ " ${alone[*]} " == *" $f "* ]] || together+=("$f")
+done
+node --test --test-concurrency=2 "${together[@]}"
+node --test --test-concurrency=1 "${alone[@]}"

@@ -20,8 +20,10 @@ pub const KEYFRAME_EVERY: u64 = 16;
 /// The share of stepping time keyframes may take. A small model in a large lattice copies more
 /// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
 pub const KEYFRAME_TIME_SHARE: f64 = 0.05;
-/// Keyframes are judged too costly only once this much stepping time (ms) has been measured.
-const COST_WINDOW_MS: f64 = 20.0;
+/// Keyframes are judged too costly only once this much time (ms) has been measured, so that one
+/// slow copy among fast steps (or a coarse clock: browsers round `performance.now()` to 0.1 ms)
+/// does not double the interval.
+const COST_WINDOW_MS: f64 = 5.0;
 
 /// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
 #[derive(Default)]
@@ -97,16 +99,24 @@ impl Playback {
 
     /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
     /// taken. `now` reads a clock in milliseconds: keyframes that cost more than
-    /// [`KEYFRAME_TIME_SHARE`] of the stepping time it measures are kept further apart.
+    /// [`KEYFRAME_TIME_SHARE`] of the stepping time it measures are kept further apart. The cost
+    /// is judged at every keyframe, so one long call (a benchmark's, or a fast run's frame) adapts
+    /// as it goes; the clock is read only at keyframe steps.
     pub fn advance(&mut self, n: u64, now: &mut dyn FnMut() -> f64) -> u64 {
         let mut taken = 0;
-        let start = now();
+        let mut mark = now();
         while taken < n && self.run.step() {
-            // Only a step on the interval may keep a keyframe: time just those.
             if self.run.steps() % self.timeline.keyframes().1 == 0 {
                 let t = now();
+                self.cost.total += t - mark;
+                mark = t;
                 if self.timeline.record(&self.run) {
-                    self.cost.copying += now() - t;
+                    mark = now();
+                    self.cost.copying += mark - t;
+                    self.cost.total += mark - t;
+                    if self.cost.too_costly() {
+                        self.timeline.coarsen();
+                    }
                 }
             }
             // Steps passed through again after going back are already recorded: the series
@@ -114,10 +124,7 @@ impl Playback {
             self.series.record_model(self.run.steps(), self.run.model());
             taken += 1;
         }
-        self.cost.total += now() - start;
-        if self.cost.too_costly() {
-            self.timeline.coarsen();
-        }
+        self.cost.total += now() - mark;
         self.furthest = self.furthest.max(self.run.steps());
         taken
     }
