@@ -5,7 +5,7 @@ import { execFileSync } from 'node:child_process';
 import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { measure } from './bench-wasm.mjs';
-import { WASM_BUDGET_KB, budgetVerdict } from './budget.mjs';
+import { WASM_BUDGET_KB, budgetVerdict, overBudget } from './budget.mjs';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 
 const root = new URL('..', import.meta.url).pathname;
@@ -75,3 +75,7 @@ for (const r of page.runs) {
 const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, page };
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
 console.log('\nfull results: target/bench-results.json');
+if (overBudget(gzKb)) {
+  console.error(`\nbench: the wasm is ${gzKb.toFixed(1)} KB gzipped, over its budget of ${WASM_BUDGET_KB} KB (scripts/budget.mjs)`);
+  process.exitCode = 1;
+}
