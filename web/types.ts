@@ -1,41 +1,11 @@
-// Shapes of the records that cross from the core (through serde-wasm-bindgen) into the page.
+// Shapes of the records that cross from the core (through serde-wasm-bindgen) into the page. Those
+// the core's own types describe are generated from them (contract.gen.ts, by `kumiki schema`) and
+// re-exported here; the rest are the page's and the glue's own.
 
-export type LatticeKind = 'square' | 'hex' | 'cubic';
+import type { Scene as SceneInfo } from './contract.gen';
 
-export interface LegendEntry {
-  code: number;
-  name: string;
-  color: string;
-}
-
-export interface FieldInfo {
-  name: string;
-  label: string;
-  arrows: boolean;
-}
-
-export interface ToolInfo {
-  name: string;
-  label: string;
-  action: Record<string, unknown>;
-}
-
-/** What a renderer needs to know once per run (kumiki_core::models::Layout). */
-export interface Layout {
-  lattice: LatticeKind;
-  dims: [number, number, number];
-  cells: LegendEntry[];
-  agents: LegendEntry[];
-  events: LegendEntry[];
-  fields: FieldInfo[];
-  tools: ToolInfo[];
-  /** Legend names are short labels worth writing on each cell. */
-  cell_labels: boolean;
-  /** The metric charted by default. */
-  chart: string;
-  /** The run has a goal it completes; without one, reaching the step limit is no failure. */
-  goal: boolean;
-}
+export type { FieldInfo, LatticeKind, Layout, LegendEntry, LessonInfo, ToolInfo } from './contract.gen';
+export type { SceneInfo };
 
 export type Metrics = Record<string, number | boolean | string | null>;
 
@@ -44,29 +14,6 @@ export interface PresetInfo {
   model: string;
   title: string;
   description: string;
-}
-
-/** A built-in lesson (kumiki_core::lessons::LessonInfo). */
-export interface LessonInfo {
-  name: string;
-  model: string;
-  /** The model's paper. */
-  paper: string;
-  /** The paper's section and figures the lesson is about. */
-  section: string;
-  /** The exercise's title. */
-  title: string;
-  description: string;
-}
-
-/**
- * What a 3-D view draws beyond the cells (kumiki_core::models::Scene): a target ghost, the light
- * direction, and a ground plane under layer `ground`. Bonds come with each frame.
- */
-export interface SceneInfo {
-  ghost?: number[];
-  light?: [number, number, number];
-  ground?: number;
 }
 
 /** A metric's every-step record, merged for drawing (kumiki_core::series::Band). */

@@ -116,9 +116,9 @@ enum Command {
         #[command(flatten)]
         jobs: Jobs,
     },
-    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema), the scenario types
-    /// generated from them (DIR/web/scenario.gen.ts) and the limits table of
-    /// DIR/docs/scenario-format.md
+    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema), the TypeScript types
+    /// generated from them and from the records the core hands the page (DIR/web/*.gen.ts) and
+    /// the limits table of DIR/docs/scenario-format.md
     Schema {
         /// Compare the schemas under DIR with what this build derives; fail if they differ
         #[arg(long)]

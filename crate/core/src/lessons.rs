@@ -27,7 +27,7 @@ pub fn scenario(name: &str) -> Result<Scenario> {
 }
 
 /// What a list of lessons shows of one.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct LessonInfo {
     pub name: &'static str,
     pub model: String,

@@ -7,6 +7,7 @@
 
 use std::borrow::Cow;
 
+use schemars::JsonSchema;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
@@ -61,7 +62,7 @@ impl Metric {
 pub type Action = Map<String, Value>;
 
 /// A code in the cell buffer, an agent kind or an event kind, with its name and colour.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
 pub struct LegendEntry {
     pub code: u8,
     pub name: String,
@@ -80,7 +81,7 @@ impl LegendEntry {
 }
 
 /// A scalar field defined on the cells, drawn as an overlay.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
 pub struct FieldInfo {
     pub name: String,
     pub label: String,
@@ -90,7 +91,7 @@ pub struct FieldInfo {
 
 /// A click tool the page offers for this model. Clicking a cell sends `action` with the cell's
 /// index added as `"cells": [i]`.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
 pub struct ToolInfo {
     pub name: String,
     pub label: String,
@@ -98,7 +99,7 @@ pub struct ToolInfo {
 }
 
 /// What a renderer needs to know once per run.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize)]
+#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
 pub struct Layout {
     pub lattice: LatticeKind,
     /// Width, height, depth in cells.
@@ -122,7 +123,7 @@ pub struct Layout {
 /// Optional scene information for 3-D views, beyond the cells. Models without any return the
 /// default (nothing to draw). It may change between steps (a target switched, for instance), so a
 /// view reads it again after stepping.
-#[derive(Clone, Debug, Default, Serialize, PartialEq, Deserialize)]
+#[derive(Clone, Debug, Default, Serialize, PartialEq, Deserialize, JsonSchema)]
 #[serde(default)]
 pub struct Scene {
     /// Cells of a reference shape (a target) to draw as a translucent ghost.
