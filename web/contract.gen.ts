@@ -56,6 +56,15 @@ export interface LessonInfo {
   title: string;
 }
 
+/** What the gallery shows of a built-in scenario. */
+export interface PresetInfo {
+  description: string;
+  model: string;
+  name: string;
+  /** The model's title, as its registry entry gives it. */
+  title: string;
+}
+
 /**
  * Optional scene information for 3-D views, beyond the cells. Models without any return the
  * default (nothing to draw). It may change between steps (a target switched, for instance), so a

@@ -4,17 +4,10 @@
 
 import type { Scene as SceneInfo } from './contract.gen';
 
-export type { FieldInfo, LatticeKind, Layout, LegendEntry, LessonInfo, ToolInfo } from './contract.gen';
+export type { FieldInfo, LatticeKind, Layout, LegendEntry, LessonInfo, PresetInfo, ToolInfo } from './contract.gen';
 export type { SceneInfo };
 
 export type Metrics = Record<string, number | boolean | string | null>;
-
-export interface PresetInfo {
-  name: string;
-  model: string;
-  title: string;
-  description: string;
-}
 
 /** A metric's every-step record, merged for drawing (kumiki_core::series::Band). */
 export interface ChartBand {

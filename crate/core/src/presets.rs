@@ -11,6 +11,33 @@ pub fn names() -> impl Iterator<Item = &'static str> {
     PRESET_FILES.iter().map(|(name, _)| *name)
 }
 
+/// What the gallery shows of a built-in scenario.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, schemars::JsonSchema)]
+pub struct PresetInfo {
+    pub name: &'static str,
+    pub model: String,
+    /// The model's title, as its registry entry gives it.
+    pub title: String,
+    pub description: String,
+}
+
+/// Every built-in scenario, in name order.
+pub fn list() -> Result<Vec<PresetInfo>> {
+    names()
+        .map(|name| {
+            let s = scenario(name)?;
+            Ok(PresetInfo {
+                name,
+                title: crate::models::entry(s.model())
+                    .map(|m| m.title.to_string())
+                    .unwrap_or_default(),
+                model: s.model().to_string(),
+                description: s.description,
+            })
+        })
+        .collect()
+}
+
 /// The JSON text of a preset.
 pub fn json(name: &str) -> Result<&'static str> {
     lookup(PRESET_FILES, "preset", name)

@@ -253,14 +253,15 @@ pub fn files() -> Vec<(String, String)> {
 }
 
 /// The schema of every record the core hands the page through the wasm glue (serde-wasm-bindgen):
-/// a run's [`Layout`](crate::models::Layout) and [`Scene`](crate::models::Scene), the lessons'
-/// list. Their TypeScript types are generated from it, so a change of one in Rust is a type
+/// a run's [`Layout`](crate::models::Layout) and [`Scene`](crate::models::Scene), the lists of
+/// lessons and presets. Their TypeScript types are generated from it, so a change of one in Rust is a type
 /// error in the page, not a silent mismatch.
 pub fn contract() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     generator.subschema_for::<crate::models::Layout>();
     generator.subschema_for::<crate::models::Scene>();
     generator.subschema_for::<crate::lessons::LessonInfo>();
+    generator.subschema_for::<crate::presets::PresetInfo>();
     let defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
     json!({ "$defs": defs })
 }

@@ -59,31 +59,10 @@ pub fn version() -> String {
     PROGRAM_VERSION.to_string()
 }
 
-#[derive(Serialize)]
-struct PresetInfo {
-    name: &'static str,
-    model: String,
-    title: String,
-    description: String,
-}
-
-/// The built-in scenarios: name, model, description.
+/// The built-in scenarios: name, model, title, description.
 #[wasm_bindgen]
 pub fn presets() -> Result<JsValue, JsError> {
-    let list: Vec<PresetInfo> = presets::names()
-        .map(|name| {
-            let s = presets::scenario(name).map_err(js_err)?;
-            Ok(PresetInfo {
-                name,
-                title: models::entry(s.model())
-                    .map(|m| m.title.to_string())
-                    .unwrap_or_default(),
-                model: s.model().to_string(),
-                description: s.description,
-            })
-        })
-        .collect::<Result<_, JsError>>()?;
-    to_js(&list)
+    to_js(&presets::list().map_err(js_err)?)
 }
 
 #[wasm_bindgen]
