@@ -16,6 +16,7 @@
 pub mod error;
 pub mod exercise;
 pub mod experiment;
+pub mod grading;
 pub mod hash;
 pub mod json;
 pub mod lattice;
