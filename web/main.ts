@@ -12,7 +12,7 @@ import { Embed, embedRequested } from './ui/embed';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { registerOffline } from './ui/offline';
-import { change, LargeOpening } from './ui/opening';
+import { change, isLarge, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
 import { StructureViews } from './ui/structure';
 import * as core from './wasm';
@@ -91,7 +91,7 @@ const sim = new SimClient({
   error(message, context) {
     if (context === 'load' && large.active) {
       large.failed();
-      if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+      if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     }
     if (context === 'apply') banner.report(`That did not work: ${message}`);
     else if (context === 'load') banner.report(`This scenario cannot run: ${message}`);
@@ -138,17 +138,27 @@ const structure = new StructureViews(view, (cell) => sim.inspect(cell));
 
 const large = new LargeOpening(() => {
   sim.recover();
-  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
 });
 
 // ---- opening a scenario -----------------------------------------------------------------------
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
-function load(json: string, { record = true, quiet = false, onProblem }: LoadOptions = {}): boolean {
+function load(json: string, { record = true, quiet = false, onProblem, opens = false }: LoadOptions = {}): boolean {
+  const refuse = (problem: string) => {
+    if (onProblem) onProblem(problem);
+    else if (!quiet) banner.report(`This scenario cannot run: ${problem}`);
+    return false;
+  };
+  // An edit keeps the exercise in force and its locked fields at the teacher's values.
+  const locked = (text: string) => (opens || !session.scenario ? undefined : core.exerciseGuard(session.scenario, text));
   const opened = (normal: string) => {
     if (record) session.remember(session.scenario, normal);
     share.leaveLink();
   };
+  // A large scenario is validated by the worker, so its text is held to the locks as it is.
+  const lockedLarge = isLarge(json) ? locked(json) : undefined;
+  if (lockedLarge) return refuse(lockedLarge);
   if (large.begin(json, opened)) {
     open(json);
     return true;
@@ -157,10 +167,10 @@ function load(json: string, { record = true, quiet = false, onProblem }: LoadOpt
   try {
     normal = core.normalize(json);
   } catch (e) {
-    if (onProblem) onProblem(core.message(e));
-    else if (!quiet) banner.report(`This scenario cannot run: ${core.message(e)}`);
-    return false;
+    return refuse(core.message(e));
   }
+  const problem = locked(normal);
+  if (problem) return refuse(problem);
   if (record) session.remember(session.scenario, normal);
   session.scenario = normal;
   open(normal);
@@ -190,14 +200,14 @@ const page: Page = {
   persistPrefs,
   load,
   applyChange(key, valueJson, onError) {
+    let problem: string | null = null;
     try {
-      load(change(session.scenario, key, valueJson));
-      return null;
+      load(change(session.scenario, key, valueJson), { onProblem: (message) => (problem = message) });
     } catch (e) {
-      const problem = core.message(e);
-      onError?.(problem);
-      return problem;
+      problem = core.message(e);
     }
+    if (problem) onError?.(problem);
+    return problem;
   },
 };
 const announcer = new Announcer(byId('run-live'));
@@ -241,9 +251,9 @@ async function start() {
   setupGallery(
     core.presets(),
     core.lessons(),
-    (name) => load(core.presetJson(name)),
+    (name) => load(core.presetJson(name), { opens: true }),
     // A lesson opens on the run tab, where its exercise panel is.
-    (name) => load(core.lessonJson(name)) && keys.selectTab('run'),
+    (name) => load(core.lessonJson(name), { opens: true }) && keys.selectTab('run'),
   );
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
   setupRecordDialog({
@@ -262,6 +272,7 @@ async function start() {
           try {
             let problem: string | null = null;
             load(core.unpackLink(payload).scenario, {
+              opens: true,
               onProblem: (message) => {
                 problem = message;
               },
@@ -280,19 +291,19 @@ async function start() {
       core.version(),
     );
     // An embedded page shows its link or the default scenario, never what this browser last edited.
-    if (!share.openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false });
+    if (!share.openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     return;
   }
   const unfinished = openingScenario();
   if (unfinished !== null) {
     // The page was closed or stopped while a scenario was opening: it may be what stopped it.
     openedScenario();
-    load(core.presetJson(DEFAULT_PRESET), { record: false });
+    load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     share.leaveLink();
     banner.keep = true;
     banner.report('The last scenario did not finish opening before the page closed, so the default one is shown. It may be too large for this device.', {
       label: 'Open it anyway',
-      run: () => load(unfinished),
+      run: () => load(unfinished, { opens: true }),
     });
     return;
   }
@@ -300,7 +311,7 @@ async function start() {
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;
   const saved = savedScenario();
-  if (!(saved && load(saved, { record: false, quiet: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  if (!(saved && load(saved, { record: false, quiet: true, opens: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
 }
 
 start().catch((e: unknown) => banner.report(`Kumiki could not start: ${core.message(e)}`));

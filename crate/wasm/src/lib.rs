@@ -6,12 +6,13 @@
 use std::sync::Mutex;
 
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
+use kumiki_core::exercise::Goal;
 use kumiki_core::experiment::{Experiment, Job, PROGRAM_VERSION};
 use kumiki_core::models::Scene;
 use kumiki_core::scenario::Disturbance;
 use kumiki_core::series::{self, Series};
 use kumiki_core::timeline::Timeline;
-use kumiki_core::{hash, json, lessons, link, models, presets, shape, Run, Scenario};
+use kumiki_core::{grading, hash, json, lessons, link, models, presets, shape, Run, Scenario};
 use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
@@ -600,22 +601,80 @@ impl Sim {
         };
         let outcome = self.run.outcome();
         let doc = self.run.scenario().to_value();
-        to_js(&exercise.goal().check(&kumiki_core::exercise::Outcome {
+        let check = exercise.goal().check(&kumiki_core::exercise::Outcome {
             completed: outcome.completed,
             steps: outcome.steps,
             metrics: &outcome.metrics,
             scenario: &doc,
-        }))
+        });
+        // A locked field away from the teacher's value is never "Goal met".
+        to_js(&grading::with_locks(check, exercise, &doc))
     }
 }
 
 /// What is wrong with an exercise goal (see `kumiki_core::exercise`), or undefined when it
-/// reads well: the teacher's editor validates as they type.
+/// reads well: the teacher's editor validates as they type. `metrics` are the model's metric
+/// names and `scenario_json` the scenario, against which the goal's names are checked.
 #[wasm_bindgen]
-pub fn goal_problem(text: &str) -> Option<String> {
-    kumiki_core::exercise::Goal::parse(text)
-        .err()
-        .map(|e| e.to_string())
+pub fn goal_problem(text: &str, metrics: Vec<String>, scenario_json: &str) -> Option<String> {
+    match Goal::parse(text) {
+        Err(e) => Some(e.to_string()),
+        Ok(goal) => {
+            let doc: Value = serde_json::from_str(scenario_json).unwrap_or(Value::Null);
+            grading::unknown_name(&goal, &metrics, &doc)
+        }
+    }
+}
+
+/// A goal in words for students ("Completed, and collisions below 40."), or undefined when it
+/// does not parse.
+#[wasm_bindgen]
+pub fn goal_words(text: &str) -> Option<String> {
+    Goal::parse(text).ok().map(|g| g.words())
+}
+
+/// Why the scenario `next_json` may not replace `current_json` by an edit, when the current one
+/// is an exercise (a locked field away from the teacher's value, or the exercise itself changed);
+/// undefined when it may.
+#[wasm_bindgen]
+pub fn exercise_guard(current_json: &str, next_json: &str) -> Option<String> {
+    let current: Value = serde_json::from_str(current_json).ok()?;
+    let next: Value = serde_json::from_str(next_json).ok()?;
+    grading::locked_problem(&current, &next)
+}
+
+/// Grades one hand-in as `kumiki check` does (page limits): the link replayed to its end and
+/// judged by `exercise_link`'s exercise when given, else by its own. A graded row
+/// (`{name, met, because, completed, steps, hash, locked_edited, changed, exercise_edited,
+/// summary}`) or `{error}`.
+#[wasm_bindgen]
+pub fn grade_handin(handin: &str, exercise_link: Option<String>) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Graded {
+        #[serde(flatten)]
+        grade: kumiki_core::exercise::Grade,
+        summary: String,
+    }
+    #[derive(Serialize)]
+    struct Failed {
+        error: String,
+    }
+    let limits = &kumiki_core::Limits::PAGE;
+    let original = match exercise_link {
+        Some(e) => Some(link::open_within(&e, limits).map_err(js_err)?.scenario),
+        None => None,
+    };
+    let graded = link::open_within(handin.trim(), limits)
+        .and_then(|o| kumiki_core::exercise::grade(&o.scenario, original.as_ref()));
+    match graded {
+        Ok(grade) => to_js(&Graded {
+            summary: grade.summary(),
+            grade,
+        }),
+        Err(e) => to_js(&Failed {
+            error: e.to_string(),
+        }),
+    }
 }
 
 /// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance
