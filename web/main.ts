@@ -8,9 +8,10 @@ import { loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, sav
 import { Announcer, type Disturbance } from './ui/announce';
 import { Banner } from './ui/banner';
 import { byId, displayText, download } from './ui/dom';
-import { Embed, embedRequested } from './ui/embed';
+import { Embed, embedEditRequested, embedRequested } from './ui/embed';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
+import { setupGrade } from './ui/grade';
 import { registerOffline } from './ui/offline';
 import { change, isLarge, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
@@ -21,7 +22,7 @@ const DEFAULT_PRESET = 'amas-L';
 
 /** In a course page's iframe (?embed): the view, the run controls and the exercise panel only. */
 const embedded = embedRequested();
-if (embedded) document.body.dataset.embed = 'true';
+if (embedded) document.body.dataset.embed = embedEditRequested() ? 'edit' : 'true';
 /** The postMessage API, in embed mode. */
 let embed: Embed | null = null;
 
@@ -213,7 +214,11 @@ const page: Page = {
 const announcer = new Announcer(byId('run-live'));
 const run = setupRunPanel(page);
 const inspector = setupInspector(page, run, announcer);
-const scenario = setupScenarioPanel(page, (name) => keys.selectTab(name));
+const scenario = setupScenarioPanel(
+  page,
+  (name) => keys.selectTab(name),
+  (link, name) => embed?.handin(link, name),
+);
 const keys = setupKeys(page, run, scenario);
 const share = setupSharePanel(page, { large, open, embedded });
 
@@ -256,6 +261,7 @@ async function start() {
     (name) => load(core.lessonJson(name), { opens: true }) && keys.selectTab('run'),
   );
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
+  setupGrade();
   setupRecordDialog({
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };
@@ -264,7 +270,7 @@ async function start() {
     setScale: (scale) => view.setCaptureScale(scale),
     record: (settings, signal, progress) => sim.record(settings, signal, progress),
   });
-  keys.selectTab(TABS.includes(prefs.tab) ? prefs.tab : 'run');
+  keys.selectTab(!embedded && TABS.includes(prefs.tab) ? prefs.tab : 'run');
   if (embedded) {
     embed = new Embed(
       {

@@ -15,7 +15,7 @@ export interface ScenarioPanel {
   redo(): void;
 }
 
-export function setupScenarioPanel(page: Page, selectTab: (name: string) => void): ScenarioPanel {
+export function setupScenarioPanel(page: Page, selectTab: (name: string) => void, handedIn: (link: string, name: string) => void): ScenarioPanel {
   const { session, sim } = page;
   let editor: MountedEditor | null = null;
   let editorModel = '';
@@ -70,6 +70,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
       const handin = student ? core.override(session.scenario, 'name', JSON.stringify(student)) : session.scenario;
       const url = `${location.origin}${location.pathname}#${core.encodeLink(handin)}`;
       out.textContent = url;
+      handedIn(url, student);
       await navigator.clipboard?.writeText(url).then(
         () => (out.textContent = `Copied. Send this link to your teacher: ${url}`),
         () => undefined,

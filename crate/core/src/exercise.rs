@@ -156,6 +156,10 @@ pub struct Grade {
     pub changed: Vec<String>,
     /// The hand-in's exercise section is not the teacher's (its goal or locks were edited).
     pub exercise_edited: bool,
+    /// The metrics the goal reads, at the end of the replayed run (the page's Grade view shows
+    /// them; `kumiki check` leaves them out).
+    #[serde(skip)]
+    pub goal_metrics: BTreeMap<String, Value>,
 }
 
 /// Replays a hand-in and judges it by the exercise it carries, or by `original`'s when the
@@ -203,7 +207,15 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
     if exercise_edited {
         because = format!("the hand-in edited the exercise itself; {because}");
     }
+    let goal_metrics = exercise
+        .goal()
+        .names()
+        .iter()
+        .filter_map(|n| n.strip_prefix("metrics."))
+        .filter_map(|m| Some((m.to_string(), outcome.metrics.get(m)?.clone())))
+        .collect();
     Ok(Grade {
+        goal_metrics,
         name: handin.name.clone(),
         met: check.met && !exercise_edited && locked_edited.is_empty(),
         because,

@@ -643,32 +643,58 @@ pub fn exercise_guard(current_json: &str, next_json: &str) -> Option<String> {
     grading::locked_problem(&current, &next)
 }
 
-/// Grades one hand-in as `kumiki check` does (page limits): the link replayed to its end and
-/// judged by `exercise_link`'s exercise when given, else by its own. A graded row
-/// (`{name, met, because, completed, steps, hash, locked_edited, changed, exercise_edited,
-/// summary}`) or `{error}`.
+/// The teacher's exercise for grading: a link, or a lesson's name, as `kumiki check --exercise`
+/// takes them; a scenario with no exercise section is refused.
+fn teacher_exercise(text: &str) -> Result<Scenario, JsError> {
+    let text = text.trim();
+    let scenario = match lessons::names().any(|n| n == text) {
+        true => lessons::scenario(text).map_err(js_err)?,
+        false => {
+            link::open_within(text, &kumiki_core::Limits::PAGE)
+                .map_err(js_err)?
+                .scenario
+        }
+    };
+    match scenario.exercise {
+        Some(_) => Ok(scenario),
+        None => Err(JsError::new(
+            "exercise: this scenario has no exercise section",
+        )),
+    }
+}
+
+/// Checks the teacher's exercise for the Grade view: its title, or an error that says why it
+/// cannot grade.
 #[wasm_bindgen]
-pub fn grade_handin(handin: &str, exercise_link: Option<String>) -> Result<JsValue, JsError> {
+pub fn exercise_title(text: &str) -> Result<String, JsError> {
+    let scenario = teacher_exercise(text)?;
+    Ok(scenario.exercise.map(|e| e.title).unwrap_or_default())
+}
+
+/// Grades one hand-in as `kumiki check` does (page limits): the link replayed to its end and
+/// judged by the teacher's exercise (`exercise`: a link or a lesson's name) when given, else by
+/// its own. A graded row (`{name, met, because, completed, steps, hash, locked_edited, changed,
+/// exercise_edited, goal_metrics, summary}`) or `{error}`.
+#[wasm_bindgen]
+pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, JsError> {
     #[derive(Serialize)]
     struct Graded {
         #[serde(flatten)]
         grade: kumiki_core::exercise::Grade,
+        goal_metrics: std::collections::BTreeMap<String, Value>,
         summary: String,
     }
     #[derive(Serialize)]
     struct Failed {
         error: String,
     }
-    let limits = &kumiki_core::Limits::PAGE;
-    let original = match exercise_link {
-        Some(e) => Some(link::open_within(&e, limits).map_err(js_err)?.scenario),
-        None => None,
-    };
-    let graded = link::open_within(handin.trim(), limits)
+    let original = exercise.map(|e| teacher_exercise(&e)).transpose()?;
+    let graded = link::open_within(handin.trim(), &kumiki_core::Limits::PAGE)
         .and_then(|o| kumiki_core::exercise::grade(&o.scenario, original.as_ref()));
     match graded {
-        Ok(grade) => to_js(&Graded {
+        Ok(mut grade) => to_js(&Graded {
             summary: grade.summary(),
+            goal_metrics: std::mem::take(&mut grade.goal_metrics),
             grade,
         }),
         Err(e) => to_js(&Failed {
