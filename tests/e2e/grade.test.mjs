@@ -121,11 +121,17 @@ describe('the Grade view', () => {
     // Pasted at once (typing 2.5 MB of links into the box would be the test's own slowness).
     await page.$eval('#grade-input', (t, text) => (t.value = text), Array.from({ length: 2000 }, () => link).join('\n'));
     await page.click('#grade-start');
-    await page.waitForFunction(() => document.querySelectorAll('#grade-rows tr').length > 0, null, { timeout: 60000 });
+    await page.waitForFunction(() => document.querySelectorAll('#grade-rows tr:not(.pending)').length > 0, null, { timeout: 60000 });
     await page.click('#grade-cancel');
-    assert.match(await page.textContent('#grade-status'), /^Cancelled after [\d,]+ of 2,000 hand-ins/);
-    const n = await page.locator('#grade-rows tr').count();
-    assert.ok(n > 0 && n < 2000, `${n} rows`);
+    const status = await page.textContent('#grade-status');
+    assert.match(status, /^Cancelled after [\d,]+ of 2,000 hand-ins/);
+    const graded = Number(/after ([\d,]+)/.exec(status)[1].replace(/,/g, ''));
+    assert.ok(graded > 0 && graded < 2000, `${graded} graded`);
+    // The table is paged: 200 rows at a time, whatever the class's size.
+    assert.equal(await page.locator('#grade-rows tr').count(), 200);
+    assert.equal(await page.textContent('#grade-page'), 'Rows 1 to 200 of 2,000');
+    await page.click('#grade-next');
+    assert.equal(await page.textContent('#grade-page'), 'Rows 201 to 400 of 2,000');
     assert.equal(await page.isDisabled('#grade-start'), false);
     await context.close();
   });

@@ -7,8 +7,16 @@ import { type GradedRow, gradesCsv, type Handin, parseHandins } from '../grading
 import * as core from '../wasm';
 import { byId, clear, download, el, formatNumber } from './dom';
 
-/** Rows added to the table at a time, so that a class of thousands stays responsive. */
-const TABLE_BATCH = 200;
+/**
+ * Rows the table shows at a time: a class of 10 000 is paged, so the page's memory and its work
+ * per frame stay the same however large the class (the CSV export has every row).
+ */
+const PAGE_ROWS = 200;
+/**
+ * Hand-ins each worker holds at once: the next one is already there when it finishes, so the
+ * workers never wait for the page's thread to hand one out.
+ */
+const IN_FLIGHT = 4;
 
 /** Grades `handins` on `size` workers; `row` hears each one as it comes, in any order. */
 class GradePool {
@@ -39,8 +47,9 @@ class GradePool {
         this.on.failed(msg.message);
         return;
       }
-      if (msg.type === 'graded') this.on.row(msg.index, msg.row);
+      if (msg.type === 'ready') for (let k = 1; k < IN_FLIGHT; k++) this.handOut(worker);
       this.handOut(worker);
+      if (msg.type === 'graded') this.on.row(msg.index, msg.row);
     };
     worker.onerror = (e) => {
       this.stop();
@@ -78,9 +87,16 @@ export function setupGrade() {
   const status = byId('grade-status');
   const body = byId('grade-rows');
 
+  const prev = byId<HTMLButtonElement>('grade-prev');
+  const next = byId<HTMLButtonElement>('grade-next');
+  const pageLabel = byId('grade-page');
+
   let pool: GradePool | null = null;
   let rows: GradedRow[] = [];
-  let shown = 0;
+  /** The first row of the page of the table in view. */
+  let pageStart = 0;
+  /** A row of the page in view was graded since the table was drawn. */
+  let pageDirty = false;
 
   byId('open-grade').addEventListener('click', () => {
     byId<HTMLDialogElement>('gallery').close();
@@ -127,15 +143,24 @@ export function setupGrade() {
     progress.setAttribute('aria-valuenow', pct.toFixed(0));
   };
 
-  /** Adds the rows graded so far, in input order, up to the first one still being graded. */
-  const showRows = (all: boolean) => {
-    let added = 0;
-    while (shown < rows.length && rows[shown] && (all || added < TABLE_BATCH)) {
-      body.append(tableRow(rows[shown]));
-      shown++;
-      added++;
-    }
+  /** Draws the page of the table in view: its graded rows, and those still to come. */
+  const showPage = () => {
+    pageDirty = false;
+    clear(body);
+    const end = Math.min(rows.length, pageStart + PAGE_ROWS);
+    for (let i = pageStart; i < end; i++) body.append(rows[i] ? tableRow(rows[i]) : pendingRow(i + 1, pool !== null));
+    pageLabel.textContent = rows.length ? `Rows ${(pageStart + 1).toLocaleString('en-US')} to ${end.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')}` : '';
+    prev.disabled = pageStart === 0;
+    next.disabled = end >= rows.length;
   };
+  prev.addEventListener('click', () => {
+    pageStart = Math.max(0, pageStart - PAGE_ROWS);
+    showPage();
+  });
+  next.addEventListener('click', () => {
+    if (pageStart + PAGE_ROWS < rows.length) pageStart += PAGE_ROWS;
+    showPage();
+  });
 
   const finish = (text: string) => {
     pool?.stop();
@@ -143,7 +168,7 @@ export function setupGrade() {
     start.disabled = false;
     cancel.disabled = true;
     exportCsv.disabled = !rows.some(Boolean);
-    showRows(true);
+    showPage();
     status.textContent = text;
   };
 
@@ -155,29 +180,41 @@ export function setupGrade() {
       status.textContent = 'Paste the hand-in links first, one a line, or open an export.';
       return;
     }
-    clear(body);
     rows = new Array(handins.length);
-    shown = 0;
+    pageStart = 0;
     let done = 0;
     const total = handins.length;
     const tally = { met: 0, unmet: 0, errors: 0 };
+    // The page shows progress once a frame, not once a hand-in: a row a message would keep the
+    // page's thread, which hands out the work, busy laying out the table.
+    let drawing = 0;
+    const draw = () => {
+      drawing = 0;
+      // Finished or cancelled meanwhile: the final status stays.
+      if (!pool) return;
+      setProgress(done, total);
+      status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tally.met} met, ${tally.unmet} not met, ${tally.errors} could not be graded.`;
+      if (pageDirty) showPage();
+    };
     const record = (index: number, graded: Record<string, unknown>) => {
       const h = handins[index];
       const row = { ...graded, handin: index + 1, student: h.student || String(graded.name ?? ''), link: h.link } as GradedRow;
       rows[index] = row;
+      if (index >= pageStart && index < pageStart + PAGE_ROWS) pageDirty = true;
       if (row.error !== undefined) tally.errors++;
       else if (row.met) tally.met++;
       else tally.unmet++;
       done++;
-      setProgress(done, total);
-      status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tally.met} met, ${tally.unmet} not met, ${tally.errors} could not be graded.`;
-      showRows(false);
-      if (done === total) finish(`${total.toLocaleString('en-US')} hand-ins: ${tally.met} met, ${tally.unmet} not met, ${tally.errors} could not be graded.`);
+      if (done === total) {
+        setProgress(done, total);
+        finish(`${total.toLocaleString('en-US')} hand-ins: ${tally.met} met, ${tally.unmet} not met, ${tally.errors} could not be graded.`);
+      } else if (!drawing) drawing = requestAnimationFrame(draw);
     };
     start.disabled = true;
     cancel.disabled = false;
     exportCsv.disabled = true;
     setProgress(0, total);
+    showPage();
     status.textContent = `Grading ${total.toLocaleString('en-US')} hand-ins on this machine…`;
     for (const [i, h] of handins.entries()) if (h.link === null) record(i, { error: `row ${h.row} holds no Kumiki link: ${h.text.slice(0, 80)}` });
     if (done === total) return;
@@ -190,14 +227,19 @@ export function setupGrade() {
   });
 
   cancel.addEventListener('click', () => {
-    const done = rows.filter(Boolean).length;
-    finish(`Cancelled after ${done.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')} hand-ins; the table shows those graded so far in order.`);
+    const done = rows.reduce((n, r) => n + (r ? 1 : 0), 0);
+    finish(`Cancelled after ${done.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')} hand-ins; those graded are in the table and the export.`);
   });
   dialog.addEventListener('close', () => {
     if (pool) finish('Cancelled.');
   });
 
   exportCsv.addEventListener('click', () => download('kumiki-grades.csv', gradesCsv(rows.filter(Boolean)), 'text/csv'));
+}
+
+/** A row not graded yet: still to come, or left when grading was cancelled. */
+function pendingRow(handin: number, grading: boolean): HTMLTableRowElement {
+  return el('tr', { class: 'pending' }, el('td', { text: String(handin) }), el('td', { colspan: '7', class: 'hint', text: grading ? 'being graded…' : 'not graded' }));
 }
 
 function tableRow(r: GradedRow): HTMLTableRowElement {
@@ -212,7 +254,7 @@ function tableRow(r: GradedRow): HTMLTableRowElement {
     { class: r.error !== undefined ? 'error' : r.met ? 'met' : 'unmet' },
     el('td', { text: String(r.handin) }),
     el('td', { text: r.student || '(no name)' }),
-    el('td', { class: 'verdict', text: verdict }),
+    el('td', { class: 'grade-verdict', text: verdict }),
     el('td', { text: r.steps === undefined ? '' : r.steps.toLocaleString('en-US') }),
     el('td', { text: metrics }),
     el('td', { class: 'reason', text: reason }),
