@@ -46,6 +46,12 @@ console.log(`\nwasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(
 
 const { benchPage } = await import('./bench-page.mjs');
 wasm.initSync({ module: wasmBytes });
+const { benchGrade } = await import('./bench-grade.mjs');
+const grading = benchGrade(wasm, root);
+console.log(
+  `grading (${grading.count} hand-ins of lesson-amas-robots): ${grading.wasmMs.toFixed(1)} ms a hand-in in wasm (one worker's share), ` +
+    `${grading.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core`,
+);
 const page = await benchPage(specs.filter((s) => s.page), (s) => {
   let json = typeof s.scenario === 'string' ? wasm.preset_json(s.scenario) : JSON.stringify(s.scenario);
   for (const [path, value] of Object.entries(s.set ?? {})) json = wasm.override_scenario(json, path, JSON.stringify(value));
@@ -72,7 +78,7 @@ for (const r of page.runs) {
     );
   }
 }
-const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, page };
+const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, grading, page };
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
 console.log('\nfull results: target/bench-results.json');
 if (overBudget(gzKb)) {

@@ -8,11 +8,12 @@ import { loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, sav
 import { Announcer, type Disturbance } from './ui/announce';
 import { Banner } from './ui/banner';
 import { byId, displayText, download } from './ui/dom';
-import { Embed, embedRequested } from './ui/embed';
+import { Embed, embedEditRequested, embedRequested } from './ui/embed';
 import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
+import { setupGrade } from './ui/grade';
 import { registerOffline } from './ui/offline';
-import { change, LargeOpening } from './ui/opening';
+import { change, isLarge, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
 import { StructureViews } from './ui/structure';
 import * as core from './wasm';
@@ -21,7 +22,7 @@ const DEFAULT_PRESET = 'amas-L';
 
 /** In a course page's iframe (?embed): the view, the run controls and the exercise panel only. */
 const embedded = embedRequested();
-if (embedded) document.body.dataset.embed = 'true';
+if (embedded) document.body.dataset.embed = embedEditRequested() ? 'edit' : 'true';
 /** The postMessage API, in embed mode. */
 let embed: Embed | null = null;
 
@@ -91,7 +92,7 @@ const sim = new SimClient({
   error(message, context) {
     if (context === 'load' && large.active) {
       large.failed();
-      if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+      if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     }
     if (context === 'apply') banner.report(`That did not work: ${message}`);
     else if (context === 'load') banner.report(`This scenario cannot run: ${message}`);
@@ -138,17 +139,27 @@ const structure = new StructureViews(view, (cell) => sim.inspect(cell));
 
 const large = new LargeOpening(() => {
   sim.recover();
-  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
 });
 
 // ---- opening a scenario -----------------------------------------------------------------------
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
-function load(json: string, { record = true, quiet = false, onProblem }: LoadOptions = {}): boolean {
+function load(json: string, { record = true, quiet = false, onProblem, opens = false }: LoadOptions = {}): boolean {
+  const refuse = (problem: string) => {
+    if (onProblem) onProblem(problem);
+    else if (!quiet) banner.report(`This scenario cannot run: ${problem}`);
+    return false;
+  };
+  // An edit keeps the exercise in force and its locked fields at the teacher's values.
+  const locked = (text: string) => (opens || !session.scenario ? undefined : core.exerciseGuard(session.scenario, text));
   const opened = (normal: string) => {
     if (record) session.remember(session.scenario, normal);
     share.leaveLink();
   };
+  // A large scenario is validated by the worker, so its text is held to the locks as it is.
+  const lockedLarge = isLarge(json) ? locked(json) : undefined;
+  if (lockedLarge) return refuse(lockedLarge);
   if (large.begin(json, opened)) {
     open(json);
     return true;
@@ -157,10 +168,10 @@ function load(json: string, { record = true, quiet = false, onProblem }: LoadOpt
   try {
     normal = core.normalize(json);
   } catch (e) {
-    if (onProblem) onProblem(core.message(e));
-    else if (!quiet) banner.report(`This scenario cannot run: ${core.message(e)}`);
-    return false;
+    return refuse(core.message(e));
   }
+  const problem = locked(normal);
+  if (problem) return refuse(problem);
   if (record) session.remember(session.scenario, normal);
   session.scenario = normal;
   open(normal);
@@ -190,20 +201,24 @@ const page: Page = {
   persistPrefs,
   load,
   applyChange(key, valueJson, onError) {
+    let problem: string | null = null;
     try {
-      load(change(session.scenario, key, valueJson));
-      return null;
+      load(change(session.scenario, key, valueJson), { onProblem: (message) => (problem = message) });
     } catch (e) {
-      const problem = core.message(e);
-      onError?.(problem);
-      return problem;
+      problem = core.message(e);
     }
+    if (problem) onError?.(problem);
+    return problem;
   },
 };
 const announcer = new Announcer(byId('run-live'));
 const run = setupRunPanel(page);
 const inspector = setupInspector(page, run, announcer);
-const scenario = setupScenarioPanel(page, (name) => keys.selectTab(name));
+const scenario = setupScenarioPanel(
+  page,
+  (name) => keys.selectTab(name),
+  (link, name) => embed?.handin(link, name),
+);
 const keys = setupKeys(page, run, scenario);
 const share = setupSharePanel(page, { large, open, embedded });
 
@@ -241,11 +256,12 @@ async function start() {
   setupGallery(
     core.presets(),
     core.lessons(),
-    (name) => load(core.presetJson(name)),
+    (name) => load(core.presetJson(name), { opens: true }),
     // A lesson opens on the run tab, where its exercise panel is.
-    (name) => load(core.lessonJson(name)) && keys.selectTab('run'),
+    (name) => load(core.lessonJson(name), { opens: true }) && keys.selectTab('run'),
   );
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
+  setupGrade();
   setupRecordDialog({
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };
@@ -254,7 +270,7 @@ async function start() {
     setScale: (scale) => view.setCaptureScale(scale),
     record: (settings, signal, progress) => sim.record(settings, signal, progress),
   });
-  keys.selectTab(TABS.includes(prefs.tab) ? prefs.tab : 'run');
+  keys.selectTab(!embedded && TABS.includes(prefs.tab) ? prefs.tab : 'run');
   if (embedded) {
     embed = new Embed(
       {
@@ -262,6 +278,7 @@ async function start() {
           try {
             let problem: string | null = null;
             load(core.unpackLink(payload).scenario, {
+              opens: true,
               onProblem: (message) => {
                 problem = message;
               },
@@ -280,19 +297,19 @@ async function start() {
       core.version(),
     );
     // An embedded page shows its link or the default scenario, never what this browser last edited.
-    if (!share.openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false });
+    if (!share.openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     return;
   }
   const unfinished = openingScenario();
   if (unfinished !== null) {
     // The page was closed or stopped while a scenario was opening: it may be what stopped it.
     openedScenario();
-    load(core.presetJson(DEFAULT_PRESET), { record: false });
+    load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
     share.leaveLink();
     banner.keep = true;
     banner.report('The last scenario did not finish opening before the page closed, so the default one is shown. It may be too large for this device.', {
       label: 'Open it anyway',
-      run: () => load(unfinished),
+      run: () => load(unfinished, { opens: true }),
     });
     return;
   }
@@ -300,7 +317,7 @@ async function start() {
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;
   const saved = savedScenario();
-  if (!(saved && load(saved, { record: false, quiet: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  if (!(saved && load(saved, { record: false, quiet: true, opens: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
 }
 
 start().catch((e: unknown) => banner.report(`Kumiki could not start: ${core.message(e)}`));

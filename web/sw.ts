@@ -47,13 +47,18 @@ async function pageFirstFromNetwork(request: Request): Promise<Response> {
     await cache.put(PAGE, response.clone());
     return response;
   }
-  const kept = await cache.match(PAGE);
+  const kept = await cache.match(PAGE, { ignoreVary: true });
   return kept ?? response ?? Response.error();
 }
 
-/** Anything else of the build: the kept copy, else the network. */
+/**
+ * Anything else of the build: the kept copy, else the network. `ignoreVary`: a server that
+ * answers `Vary: Origin` (vite preview, which `npm start` runs) would otherwise make every kept
+ * file miss, because the page's module scripts and styles load with `crossorigin` (an Origin
+ * header) while the install stored them without one; the outage then left an unstyled page.
+ */
 async function keptFirst(request: Request): Promise<Response> {
-  const kept = await caches.match(request, { cacheName: CACHE, ignoreSearch: true });
+  const kept = await caches.match(request, { cacheName: CACHE, ignoreSearch: true, ignoreVary: true });
   return kept ?? fetch(request);
 }
 

@@ -44,7 +44,14 @@ export const unpackLink = (link: string): { scenario: string; made_with: number;
 export const setPath = (json: string, path: string, valueJson: string): string => core.set_scenario_path(json, path, valueJson);
 /** A fresh seed from crypto.getRandomValues (through getrandom), 0 to 2^53 − 1. */
 export const freshSeed = (): number => core.fresh_seed();
-export const goalProblem = (text: string): string | undefined => core.goal_problem(text);
+/** What is wrong with a goal: its syntax, or a metric or scenario field the model does not have. */
+export const goalProblem = (text: string, metrics: string[], scenario: string): string | undefined => core.goal_problem(text, metrics, scenario);
+/** A goal in words, for students; undefined when it does not parse. */
+export const goalWords = (text: string): string | undefined => core.goal_words(text);
+/** The title of the teacher's exercise (a link or a lesson's name) the Grade view grades by; throws why it cannot. */
+export const exerciseTitle = (text: string): string => core.exercise_title(text);
+/** Why an edit may not replace the exercise in force (a locked field, the exercise itself); undefined when it may. */
+export const exerciseGuard = (current: string, next: string): string | undefined => core.exercise_guard(current, next);
 export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
 export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
 export const experimentJson = (name: string): string => core.experiment_json(name);

@@ -183,3 +183,36 @@ describe('embedded in a course page on another origin', () => {
     await context.close();
   });
 });
+
+describe('an exercise done inside the frame (?embed=edit)', () => {
+  test('shows the fields the exercise leaves open, holds its locks, and reports the hand-in', async () => {
+    const doc = JSON.parse(wasm.preset_json('amas-L'));
+    doc.exercise = { title: 'Build the L', instructions: 'Choose the collision rule.', locked: { robots: doc.robots, seed: doc.seed }, goal: 'completed', hints: [] };
+    const link = wasm.encode_link(JSON.stringify(doc));
+    const { page, frame, context, problems } = await course(`${s.server.url}?embed=edit#${link}`);
+    for (const hidden of ['.top', '#tab-experiments', '#tab-about', '#make-exercise', '#intro']) assert.equal(await frame.isVisible(hidden), false, `${hidden} is hidden`);
+    assert.equal(await frame.isVisible('#tab-scenario'), true);
+    await frame.click('#tab-scenario');
+    assert.equal(await frame.isVisible('#param-collision'), true, 'the open field is there');
+    assert.equal(await frame.isDisabled('#param-robots'), true, 'the locked one is read-only');
+    assert.equal(await frame.$eval('#seed', (i) => i.readOnly), true);
+    await frame.selectOption('#param-collision', 'relay');
+    await frame.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"relay"'));
+    await frame.click('#tab-run');
+    await frame.fill('#exercise-student', 'Ada');
+    await frame.click('#exercise-handin');
+    await waitFor(page, () => events.some((e) => e.type === 'handin'));
+    const [handin] = await events(page, 'handin');
+    assert.equal(handin.name, 'Ada');
+    const handed = JSON.parse(wasm.decode_link(handin.link.slice(handin.link.indexOf('#') + 1)));
+    assert.equal(handed.collision, 'relay');
+    assert.equal(handed.name, 'Ada');
+    // The course page did not allow clipboard-write: Chromium logs its refusal, and the link is
+    // shown (and posted) instead, as docs/embed.md says.
+    assert.deepEqual(
+      problems.filter((p) => !/Clipboard API has been blocked/.test(p)),
+      [],
+    );
+    await context.close();
+  });
+});

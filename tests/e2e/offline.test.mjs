@@ -3,6 +3,7 @@
 // off; a new deployment installs beside the running version, is offered ("A new version of Kumiki
 // is ready"), and takes over when accepted.
 import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
 import { after, before, describe, test } from 'node:test';
 import { launch, loadWasm, serve, stepCount, waitForSteps } from './harness.mjs';
 
@@ -28,13 +29,13 @@ after(async () => {
 });
 
 /** A first visit: the page opens and its service worker has kept the build and taken control. */
-async function visit() {
+async function visit(url = server.url) {
   host = 'up';
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
   const problems = [];
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(server.url);
+  await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
   await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30000 });
   return { context, page, problems };
@@ -99,6 +100,45 @@ describe('offline', () => {
     await waitForSteps(page, 1);
     assert.deepEqual(problems, []);
     await context.close();
+  });
+
+  /** The server stops (an outage, not the browser's offline switch): a reload opens the kept copy and runs. */
+  async function survivesOutage(url, stop) {
+    const { context, page, problems } = await visit(url);
+    await stop();
+    const failed = [];
+    page.on('requestfailed', (r) => failed.push(r.url()));
+    await page.reload();
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+    assert.notEqual(await page.$eval('.top', (e) => getComputedStyle(e).display), 'inline', 'the page is styled');
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    assert.deepEqual(problems, []);
+    await context.close();
+    return failed;
+  }
+
+  test('the server `npm start` runs (vite preview) stops: a reload still opens and runs', async () => {
+    const port = 18000 + (process.pid % 1000);
+    const preview = spawn('npx', ['--no-install', 'vite', 'preview', '--port', String(port), '--strictPort', '--host', '127.0.0.1'], { stdio: 'ignore', detached: true });
+    const url = `http://127.0.0.1:${port}/`;
+    for (let i = 0; i < 100; i++) {
+      if (await fetch(url).then((r) => r.ok, () => false)) break;
+      await new Promise((r) => setTimeout(r, 200));
+    }
+    // vite preview answers with Vary: Origin, and the page's scripts load with crossorigin.
+    assert.match((await fetch(url)).headers.get('vary') ?? '', /Origin/);
+    await survivesOutage(url, async () => {
+      process.kill(-preview.pid);
+      for (let i = 0; i < 50 && (await fetch(url).then(() => true, () => false)); i++) await new Promise((r) => setTimeout(r, 100));
+    });
+  });
+
+  test('a plain static host stops: a reload still opens and runs', async () => {
+    const own = await serve('/');
+    await survivesOutage(own.url, async () => {
+      await own.close();
+    });
   });
 
   test('a new deployment is offered, and reloading puts it in charge', async () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it, vi } from 'vitest';
 import type { Frame } from '../../web/types';
-import { Embed, MAX_STEP, embedRequested, linkPayload, parseCommand } from '../../web/ui/embed';
+import { Embed, MAX_STEP, embedEditRequested, embedRequested, linkPayload, parseCommand } from '../../web/ui/embed';
 
 describe('embed commands', () => {
   it('are read only from the exact envelope', () => {
@@ -41,6 +41,10 @@ describe('embed commands', () => {
     expect(embedRequested('?x=1&embed=1')).toBe(true);
     expect(embedRequested('?embedded')).toBe(false);
     expect(embedRequested('')).toBe(false);
+    expect(embedRequested('?embed=edit')).toBe(true);
+    expect(embedEditRequested('?embed=edit')).toBe(true);
+    expect(embedEditRequested('?embed')).toBe(false);
+    expect(embedEditRequested('?embed=1&edit')).toBe(false);
   });
 });
 

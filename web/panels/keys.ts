@@ -31,11 +31,13 @@ export function setupKeys(page: Page, run: RunPanel, scenario: ScenarioPanel): K
     const tab = byId(`tab-${t}`);
     tab.addEventListener('click', () => selectTab(t));
     tab.addEventListener('keydown', (e) => {
-      const i = TABS.indexOf(t);
+      // The tabs shown (an embed shows only some of them).
+      const shown = TABS.filter((n) => byId(`tab-${n}`).getClientRects().length > 0);
+      const i = shown.indexOf(t);
       if (e.key === 'ArrowRight' || e.key === 'ArrowLeft') {
         e.preventDefault();
         e.stopPropagation();
-        selectTab(TABS[(i + (e.key === 'ArrowRight' ? 1 : TABS.length - 1)) % TABS.length], true);
+        selectTab(shown[(i + (e.key === 'ArrowRight' ? 1 : shown.length - 1)) % shown.length], true);
       }
     });
   }

@@ -13,6 +13,11 @@ export interface LoadOptions {
   quiet?: boolean;
   /** Told why a scenario cannot run, instead of the banner (an editor shows it beside itself). */
   onProblem?: (message: string) => void;
+  /**
+   * It opens a scenario (a link, the gallery, the course page, the exercise editor) rather than
+   * editing the one in view: an exercise's locks do not hold it back (default false).
+   */
+  opens?: boolean;
 }
 
 export interface Page {

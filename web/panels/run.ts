@@ -33,6 +33,9 @@ export function setupRunPanel(page: Page): RunPanel {
   let playing = false;
   let tool = 'inspect';
 
+  /** The scenario's locked fields, when it is an exercise. */
+  const lockedFields = () => Object.keys((session.doc().exercise as { locked?: Record<string, unknown> } | undefined)?.locked ?? {});
+
   // ---- transport ----
 
   const speed = byId<HTMLInputElement>('speed');
@@ -108,6 +111,8 @@ export function setupRunPanel(page: Page): RunPanel {
     const goal = session.layout?.goal ?? true;
     status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? (goal ? 'step limit reached' : `ran ${frame.steps.toLocaleString('en-US')} steps`) : '';
     status.classList.toggle('failed', frame.finished && !frame.completed && goal);
+    // In an exercise the goal's verdict is the one in colour: completing may not be meeting it.
+    status.classList.toggle('plain', session.doc().exercise !== undefined);
     if (!timelineDragging) {
       timeline.max = String(frame.furthest);
       timeline.value = String(frame.steps);
@@ -206,7 +211,9 @@ export function setupRunPanel(page: Page): RunPanel {
 
     const tools = byId('tools');
     clear(tools);
-    const all = [{ name: 'inspect', label: 'Inspect' }, ...layout.tools];
+    // Clicked disturbances are recorded in the scenario: not when the exercise locks them.
+    const clickable = lockedFields().includes('disturbances') ? [] : layout.tools;
+    const all = [{ name: 'inspect', label: 'Inspect' }, ...clickable];
     if (!all.some((t) => t.name === tool)) tool = 'inspect';
     for (const t of all) {
       const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(t.name === tool), 'data-tool': t.name, text: t.label });
@@ -220,7 +227,7 @@ export function setupRunPanel(page: Page): RunPanel {
     // typed is what the recorded action carries.
     const values = byId('tool-values');
     clear(values);
-    for (const t of layout.tools) {
+    for (const t of clickable) {
       for (const [key, value] of Object.entries(t.action)) {
         if (typeof value !== 'number') continue;
         const input = el('input', { type: 'number', step: 'any', value: String(value), id: `tool-${t.name}-${key}`, 'data-tool': t.name, 'data-key': key, 'aria-label': `${t.label}: ${key}` });
@@ -258,7 +265,7 @@ export function setupRunPanel(page: Page): RunPanel {
     const tools = byId('tools');
     tools.parentElement?.querySelector('.recorded')?.remove();
     const count = (session.doc().disturbances as unknown[] | undefined)?.length ?? 0;
-    if (!count) return;
+    if (!count || lockedFields().includes('disturbances')) return;
     const clearButton = el('button', { type: 'button', text: 'Clear them' });
     clearButton.addEventListener('click', () => page.applyChange('disturbances', '[]', (problem) => page.banner.report(problem)));
     tools.after(el('p', { class: 'hint recorded' }, `${count} scheduled or recorded disturbance${count > 1 ? 's' : ''}. `, clearButton));
@@ -267,6 +274,13 @@ export function setupRunPanel(page: Page): RunPanel {
   session.on('loaded', () => {
     renderRunPanel();
     seedInput.value = String(session.doc().seed ?? 0);
+    // A locked seed is read-only, and New seed cannot replace it by accident.
+    const seedLocked = lockedFields().includes('seed');
+    seedInput.readOnly = seedLocked;
+    seedInput.setAttribute('aria-label', seedLocked ? 'Random seed, locked by the exercise' : 'Random seed');
+    const newSeed = byId<HTMLButtonElement>('new-seed');
+    newSeed.disabled = seedLocked;
+    newSeed.title = seedLocked ? 'The exercise locks the seed' : '';
     chartMetric(prefs.chartMetric);
   });
   session.on('frame', showFrame);

@@ -15,7 +15,7 @@ export interface ScenarioPanel {
   redo(): void;
 }
 
-export function setupScenarioPanel(page: Page, selectTab: (name: string) => void): ScenarioPanel {
+export function setupScenarioPanel(page: Page, selectTab: (name: string) => void, handedIn: (link: string, name: string) => void): ScenarioPanel {
   const { session, sim } = page;
   let editor: MountedEditor | null = null;
   let editorModel = '';
@@ -48,6 +48,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     clear(instructions);
     instructions.append(...renderMarkdown(exercise.instructions));
     byId('exercise-goal').textContent = exercise.goal;
+    byId('exercise-goal-words').textContent = core.goalWords(exercise.goal) ?? exercise.goal;
     const hints = byId('exercise-hints');
     clear(hints);
     for (const h of exercise.hints.slice(0, hintsShown)) hints.append(el('li', {}, ...renderMarkdown(h)));
@@ -69,6 +70,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
       const handin = student ? core.override(session.scenario, 'name', JSON.stringify(student)) : session.scenario;
       const url = `${location.origin}${location.pathname}#${core.encodeLink(handin)}`;
       out.textContent = url;
+      handedIn(url, student);
       await navigator.clipboard?.writeText(url).then(
         () => (out.textContent = `Copied. Send this link to your teacher: ${url}`),
         () => undefined,
@@ -83,7 +85,9 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
   const exerciseDialog = byId<HTMLDialogElement>('exercise-editor');
   const goalInput = byId<HTMLInputElement>('ex-goal');
   function showGoalProblem(): boolean {
-    const problem = goalInput.value.trim() ? core.goalProblem(goalInput.value) : 'write the goal the run must meet';
+    // The goal's names are checked against the model in view: its metrics and its scenario.
+    const metrics = Object.keys(session.frame?.metrics ?? {});
+    const problem = goalInput.value.trim() ? core.goalProblem(goalInput.value, metrics, session.scenario) : 'write the goal the run must meet';
     byId('ex-goal-problem').textContent = problem ?? '';
     goalInput.setAttribute('aria-invalid', problem ? 'true' : 'false');
     return !problem;
@@ -115,7 +119,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     const doc = JSON.parse(session.scenario) as Record<string, unknown>;
     if (exerciseDialog.returnValue === 'remove') {
       delete doc.exercise;
-      page.load(JSON.stringify(doc));
+      page.load(JSON.stringify(doc), { opens: true });
       return;
     }
     if (exerciseDialog.returnValue !== 'apply') return;
@@ -131,7 +135,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
         .map((h) => h.trim())
         .filter(Boolean),
     };
-    if (page.load(JSON.stringify(doc))) selectTab('run');
+    if (page.load(JSON.stringify(doc), { opens: true })) selectTab('run');
   });
 
   // ---- the form, the model's editor and the JSON ----
@@ -139,13 +143,14 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
   function renderScenarioPanel() {
     // A copy for the form and the editor, which may keep it.
     const doc = JSON.parse(session.scenario) as Record<string, unknown>;
-    const name = displayText(String(doc.name ?? ''), 100);
+    const exercise = doc.exercise as Exercise | undefined;
+    // An exercise goes by its title, not by the preset it was made from.
+    const name = displayText(exercise?.title ?? String(doc.name ?? ''), 100);
     byId('scenario-name').textContent = name || 'untitled scenario';
-    byId('scenario-model').textContent = String(doc.model ?? '');
+    byId('scenario-model').textContent = exercise ? `exercise · ${String(doc.model ?? '')}` : String(doc.model ?? '');
     document.title = `${name || 'untitled'} · Kumiki`;
     const model = String(doc.model);
     const spec = modelEditors[model];
-    const exercise = doc.exercise as Exercise | undefined;
     renderExercise(exercise);
     renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => page.applyChange(key, value), spec?.owns, new Set(Object.keys(exercise?.locked ?? {})), core.modelSchema(model));
     jsonDirty = false;
@@ -172,14 +177,22 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
             } catch (e) {
               return core.message(e);
             }
-            page.load(next);
-            return null;
+            let problem: string | null = null;
+            page.load(next, { onProblem: (message) => (problem = message) });
+            return problem;
           },
           layout: () => session.layout,
         });
       }
     }
     editor?.update(doc);
+    // A shape the exercise locks makes the model's editor read-only (its shapes are drawn
+    // together, so one locked shape locks the editor), and says so.
+    const lockedHere = (spec?.owns ?? []).filter((k) => k in (exercise?.locked ?? {}));
+    const editorBody = root.querySelector<HTMLElement>(':scope > div');
+    if (editorBody) editorBody.inert = lockedHere.length > 0;
+    root.querySelector('.locked-note')?.remove();
+    if (lockedHere.length) root.append(el('p', { class: 'locked-note', text: `Locked by the exercise: ${lockedHere.map((k) => k.replace(/_/g, ' ')).join(', ')}. The editor shows them read-only.` }));
   }
 
   /** Opens the editor's text; false, with the reason beside the editor, when it cannot run. */
@@ -224,11 +237,11 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
   });
   function undo() {
     const prev = session.undo();
-    if (prev) page.load(prev, { record: false });
+    if (prev) page.load(prev, { record: false, opens: true });
   }
   function redo() {
     const next = session.redo();
-    if (next) page.load(next, { record: false });
+    if (next) page.load(next, { record: false, opens: true });
   }
   undoButton.addEventListener('click', undo);
   redoButton.addEventListener('click', redo);

@@ -1,6 +1,8 @@
 // Sharing: the link button, opening the link in the address bar (with its introduction and the
 // notice when it was made with another version of its model), and the link in a bug report.
-import { byId, displayText } from '../ui/dom';
+import type { Exercise } from '../scenario.gen';
+import { byId, clear, displayText, el } from '../ui/dom';
+import { renderMarkdown } from '../ui/markdown';
 import type { LargeOpening } from '../ui/opening';
 import * as core from '../wasm';
 import type { Page } from './page';
@@ -42,10 +44,16 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
   /** Whoever opens a shared link sees its name and description first. */
   function introduce(json: string) {
     if (embedded) return;
-    const doc = JSON.parse(json) as { name?: string; description?: string; model?: string };
-    byId('intro-title').textContent = displayText(doc.name ?? '', 100) || 'A shared scenario';
+    const doc = JSON.parse(json) as { name?: string; description?: string; model?: string; exercise?: Exercise };
+    const exercise = doc.exercise;
+    byId('intro-title').textContent = displayText(exercise?.title ?? doc.name ?? '', 100) || 'A shared scenario';
     byId('intro-model').textContent = String(doc.model ?? '');
-    byId('intro-description').textContent = displayText(doc.description ?? '', 4000, true) || 'It comes with no description.';
+    const description = byId('intro-description');
+    clear(description);
+    // An exercise shows its instructions and goal, never its preset's description (which may
+    // give the answer away).
+    if (exercise) description.append(...renderMarkdown(exercise.instructions), el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`));
+    else description.append(el('p', { text: displayText(doc.description ?? '', 4000, true) || 'It comes with no description.' }));
     const dialog = byId<HTMLDialogElement>('intro');
     if (!dialog.open) dialog.showModal();
   }

@@ -10,6 +10,14 @@ export function embedRequested(search = location.search): boolean {
   return new URLSearchParams(search).has('embed');
 }
 
+/**
+ * True when the embed also shows the scenario's editors (`?embed=edit`), so that an exercise
+ * can be done inside the iframe: the fields it leaves open are editable, the locked ones not.
+ */
+export function embedEditRequested(search = location.search): boolean {
+  return new URLSearchParams(search).get('embed') === 'edit';
+}
+
 export type EmbedCommand =
   | { type: 'load'; link: string }
   | { type: 'play' }
@@ -78,6 +86,7 @@ export type EmbedEvent =
   | { type: 'step'; step: number; hash: string; finished: boolean; completed: boolean }
   | { type: 'finished'; step: number; hash: string | null; completed: boolean; metrics: Frame['metrics'] }
   | { type: 'goal-checked'; met: boolean; why: string; step: number }
+  | { type: 'handin'; link: string; name: string }
   | { type: 'error'; command: string; message: string };
 
 /** The embedded page's side of the API: it takes the host's commands and tells it what happens. */
@@ -167,5 +176,10 @@ export class Embed {
   /** The exercise's verdict, when a run ends or on Check. */
   goal(met: boolean, why: string, step: number) {
     this.post({ type: 'goal-checked', met, why, step });
+  }
+
+  /** The student pressed Hand in: the course page may collect the link itself. */
+  handin(link: string, name: string) {
+    this.post({ type: 'handin', link, name });
   }
 }

@@ -14,7 +14,7 @@ import * as core from '../wasm';
  */
 const LARGE_CELLS = 1 << 18;
 
-const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
+export const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
 
 /** One dotted-path change: validated at once for a small scenario, by the worker for a large one. */
 export function change(json: string, path: string, valueJson: string): string {

@@ -42,20 +42,58 @@ pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<String>, F
     Ok(all)
 }
 
+/// How `kumiki check` writes its rows.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum CheckFormat {
+    /// One JSON object a line
+    Json,
+    /// A CSV table with a header
+    Csv,
+    /// One line a student: `Ada: met in 209 steps`
+    Text,
+}
+
+/// How many hand-ins met the goal, did not, and could not be graded.
+#[derive(Default)]
+pub struct Tally {
+    pub met: usize,
+    pub unmet: usize,
+    pub errors: usize,
+}
+
+impl Tally {
+    pub fn all_met(&self) -> bool {
+        self.unmet == 0 && self.errors == 0
+    }
+}
+
+impl std::fmt::Display for Tally {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let total = self.met + self.unmet + self.errors;
+        let s = if total == 1 { "" } else { "s" };
+        write!(
+            f,
+            "{total} hand-in{s}: {} met, {} not met, {} could not be graded",
+            self.met, self.unmet, self.errors
+        )
+    }
+}
+
 pub fn run(
     handins: &[String],
     original: Option<&Scenario>,
-    csv: bool,
+    format: CheckFormat,
     threads: usize,
     load: impl Fn(&str) -> Result<Scenario, Failure> + Sync,
     out: &mut impl Write,
-) -> Result<(), Failure> {
-    if csv {
+) -> Result<Tally, Failure> {
+    if format == CheckFormat::Csv {
         writeln!(
             out,
             "handin,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,error"
         )?;
     }
+    let mut tally = Tally::default();
     pool::run_ordered(
         handins.len(),
         threads,
@@ -79,17 +117,36 @@ pub fn run(
             }
         },
         |_, row| -> Result<(), Failure> {
-            match csv {
-                false => writeln!(
+            match &row.grade {
+                Some(g) if g.met => tally.met += 1,
+                Some(_) => tally.unmet += 1,
+                None => tally.errors += 1,
+            }
+            match format {
+                CheckFormat::Json => writeln!(
                     out,
                     "{}",
                     serde_json::to_string(&row).expect("rows serialise")
                 )?,
-                true => writeln!(out, "{}", csv_row(&row))?,
+                CheckFormat::Csv => writeln!(out, "{}", csv_row(&row))?,
+                CheckFormat::Text => writeln!(out, "{}", text_row(&row))?,
             }
             Ok(())
         },
-    )
+    )?;
+    Ok(tally)
+}
+
+/// `3. Ada: met in 209 steps`, or the reason it could not be graded.
+fn text_row(row: &Row) -> String {
+    match (&row.grade, &row.error) {
+        (Some(g), _) => format!("{}. {}", row.handin, g.summary()),
+        (None, error) => format!(
+            "{}. could not be graded: {}",
+            row.handin,
+            error.as_deref().unwrap_or_default()
+        ),
+    }
 }
 
 fn csv_row(row: &Row) -> String {

@@ -63,9 +63,10 @@ enum Command {
     Link {
         /// A JSON file, a share link, a preset or a lesson name
         scenario: String,
-        /// The page's address
-        #[arg(long, value_name = "URL", default_value = "http://localhost:8080/")]
-        base: String,
+        /// The page's address; without it, the KUMIKI_BASE environment variable, or else
+        /// http://localhost:8080/ (what `npm start` serves). The base used is said on stderr.
+        #[arg(long, value_name = "URL")]
+        base: Option<String>,
         #[command(flatten)]
         size: Size,
     },
@@ -139,8 +140,11 @@ enum Command {
         /// its goal and locks, and every field they changed is listed
         #[arg(long, value_name = "EXERCISE")]
         exercise: Option<String>,
-        #[arg(long, value_enum, default_value_t = Format::Json)]
-        format: Format,
+        #[arg(long, value_enum, default_value_t = check::CheckFormat::Json)]
+        format: check::CheckFormat,
+        /// Exit with status 1 when a hand-in does not meet the goal or cannot be graded
+        #[arg(long)]
+        strict: bool,
         #[command(flatten)]
         jobs: Jobs,
         #[command(flatten)]
@@ -316,6 +320,9 @@ fn main() -> ExitCode {
     }
 }
 
+/// Where `kumiki link`'s links open when neither `--base` nor `KUMIKI_BASE` says.
+const DEFAULT_BASE: &str = "http://localhost:8080/";
+
 fn dispatch(command: Option<Command>) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     match command {
@@ -348,6 +355,15 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
             size,
         }) => {
             let scenario = load_scenario(&scenario, size.limits())?;
+            let (base, from) = match (base, std::env::var("KUMIKI_BASE")) {
+                (Some(b), _) => (b, "--base"),
+                (None, Ok(b)) if !b.trim().is_empty() => (b.trim().to_string(), "KUMIKI_BASE"),
+                _ => (
+                    DEFAULT_BASE.to_string(),
+                    "the default; set KUMIKI_BASE or --base",
+                ),
+            };
+            eprintln!("kumiki: links open {base} ({from})");
             writeln!(out, "{base}#{}", link::encode(&scenario))?;
         }
         Some(Command::Run(args)) => run(args, &mut out)?,
@@ -406,6 +422,7 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
             file,
             exercise,
             format,
+            strict,
             jobs,
             size,
         }) => {
@@ -415,14 +432,18 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 .as_deref()
                 .map(|e| load_scenario(e, limits))
                 .transpose()?;
-            check::run(
+            let tally = check::run(
                 &handins,
                 original.as_ref(),
-                format == Format::Csv,
+                format,
                 jobs.threads(),
                 |h| load_scenario(h, limits),
                 &mut out,
             )?;
+            eprintln!("kumiki: {tally}");
+            if strict && !tally.all_met() {
+                return Err(Failure::Run(format!("--strict: {tally}")));
+            }
         }
         Some(Command::Schema { check, root }) => schema(check, &root)?,
         Some(Command::Queries) => {

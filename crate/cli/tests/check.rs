@@ -149,3 +149,102 @@ fn lessons_are_listed_and_graded_by_name() {
     assert_eq!(rows[1]["met"], true);
     assert_eq!(rows[1]["changed"], json!(["method"]));
 }
+
+#[test]
+fn strict_fails_when_a_hand_in_fails_and_text_gives_one_line_a_student() {
+    let teacher = exercise();
+    let mut doc = teacher.to_value();
+    doc["exercise"]["locked"]["target"] = doc["target"].clone();
+    let locked_teacher = Scenario::from_value(doc).unwrap();
+    let mut named = locked_teacher
+        .with_override("collision", json!("relay"))
+        .unwrap();
+    named.name = "Ada".into();
+    // Linus erased two cells and changed the lock to match.
+    let mut doc = named.to_value();
+    let shape = doc["target"].as_str().unwrap().to_string();
+    let mut rows: Vec<String> = shape.lines().map(str::to_string).collect();
+    let column = rows[1].find('#').unwrap();
+    rows[1].replace_range(column..column + 1, ".");
+    doc["target"] = json!(format!("{}\n", rows.join("\n")));
+    doc["exercise"]["locked"]["target"] = doc["target"].clone();
+    let mut tampered = Scenario::from_value(doc).unwrap();
+    tampered.name = "Linus".into();
+    let links = [&named, &tampered].map(|s| format!("#{}", link::encode(s)));
+    let original = format!("#{}", link::encode(&locked_teacher));
+
+    let out = kumiki(&["check", &links[0], "--exercise", &original, "--strict"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows = json_rows(out);
+    // The student's name, set by Hand in, is not a change.
+    assert_eq!(rows[0]["changed"], json!(["collision"]));
+    assert_eq!(rows[0]["met"], true);
+
+    let out = kumiki(&[
+        "check",
+        &links[0],
+        &links[1],
+        "--exercise",
+        &original,
+        "--format",
+        "text",
+        "--strict",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[0].starts_with("1. Ada: met in "), "{text}");
+    assert!(
+        lines[1].starts_with(&format!(
+            "2. Linus: not met (the hand-in edited the exercise itself; the hand-in changed locked fields (target: 1 cell removed at ({column}, 1))"
+        )),
+        "{text}"
+    );
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("2 hand-ins: 1 met, 1 not met, 0 could not be graded"),
+        "{err}"
+    );
+    assert!(err.contains("--strict"), "{err}");
+}
+
+#[test]
+fn link_says_which_base_it_used() {
+    let run = |envs: &[(&str, &str)], args: &[&str]| {
+        let out = Command::new(env!("CARGO_BIN_EXE_kumiki"))
+            .env_remove("KUMIKI_BASE")
+            .envs(envs.iter().copied())
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        (
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        )
+    };
+    let (out, err) = run(&[], &["link", "amas-L"]);
+    assert!(out.starts_with("http://localhost:8080/#k1."), "{out}");
+    assert!(
+        err.contains("(the default; set KUMIKI_BASE or --base)"),
+        "{err}"
+    );
+    let (out, err) = run(
+        &[("KUMIKI_BASE", "https://example.org/kumiki/")],
+        &["link", "amas-L"],
+    );
+    assert!(out.starts_with("https://example.org/kumiki/#k1."), "{out}");
+    assert!(
+        err.contains("https://example.org/kumiki/ (KUMIKI_BASE)"),
+        "{err}"
+    );
+    let (out, _) = run(
+        &[("KUMIKI_BASE", "https://example.org/kumiki/")],
+        &["link", "amas-L", "--base", "https://school.example/k/"],
+    );
+    assert!(out.starts_with("https://school.example/k/#k1."), "{out}");
+}

@@ -151,10 +151,15 @@ pub struct Grade {
     pub hash: String,
     /// Locked fields the hand-in changed: "robots: 5 → 7".
     pub locked_edited: Vec<String>,
-    /// Every field that differs from the teacher's exercise, when it is known.
+    /// Every field that differs from the teacher's exercise, when it is known (the name, which
+    /// Hand in sets, left out).
     pub changed: Vec<String>,
     /// The hand-in's exercise section is not the teacher's (its goal or locks were edited).
     pub exercise_edited: bool,
+    /// The metrics the goal reads, at the end of the replayed run (the page's Grade view shows
+    /// them; `kumiki check` leaves them out).
+    #[serde(skip)]
+    pub goal_metrics: BTreeMap<String, Value>,
 }
 
 /// Replays a hand-in and judges it by the exercise it carries, or by `original`'s when the
@@ -180,16 +185,13 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
         metrics: &outcome.metrics,
         scenario: &doc,
     });
-    let locked_edited: Vec<String> = exercise
-        .locked_changes(&doc)
-        .into_iter()
-        .map(|(path, want, got)| format!("{path}: {want} → {got}"))
-        .collect();
+    let locked_edited = crate::grading::locked_edits(exercise, &doc);
     let (changed, exercise_edited) = match original {
+        // The name is left out: Hand in writes the student's name into it.
         Some(o) => (
             differences(&o.to_value(), &doc)
                 .into_iter()
-                .filter(|p| !p.starts_with("exercise"))
+                .filter(|p| !p.starts_with("exercise") && p != "name")
                 .collect(),
             handin.exercise.as_ref() != Some(exercise),
         ),
@@ -205,7 +207,15 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
     if exercise_edited {
         because = format!("the hand-in edited the exercise itself; {because}");
     }
+    let goal_metrics = exercise
+        .goal()
+        .names()
+        .iter()
+        .filter_map(|n| n.strip_prefix("metrics."))
+        .filter_map(|m| Some((m.to_string(), outcome.metrics.get(m)?.clone())))
+        .collect();
     Ok(Grade {
+        goal_metrics,
         name: handin.name.clone(),
         met: check.met && !exercise_edited && locked_edited.is_empty(),
         because,
@@ -387,6 +397,17 @@ impl Goal {
         out.sort();
         out.dedup();
         out
+    }
+
+    /// The goal in words, for students: `completed and metrics.collisions < 40` reads
+    /// "Completed, and collisions below 40."
+    pub fn words(&self) -> String {
+        let text = words(&self.expr, false);
+        let mut chars = text.chars();
+        match chars.next() {
+            Some(first) => format!("{}{}.", first.to_uppercase(), chars.as_str()),
+            None => String::new(),
+        }
     }
 
     /// Evaluates the goal on an outcome.
@@ -988,6 +1009,51 @@ fn describe(e: &Expr) -> String {
     }
 }
 
+/// An expression in words; `nested` puts a list of alternatives or conditions in parentheses.
+fn words(e: &Expr, nested: bool) -> String {
+    let noun = |x: &Expr| match x {
+        Expr::Name(Name::Steps) => "steps".to_string(),
+        Expr::Name(Name::Metric(m)) => m.replace('_', " "),
+        Expr::Name(Name::Scenario(p)) => format!("the scenario's {}", p.replace('_', " ")),
+        other => describe(other),
+    };
+    let group = |text: String| match nested {
+        true => format!("({text})"),
+        false => text,
+    };
+    match e {
+        Expr::Name(Name::Completed) => "completed".into(),
+        Expr::Bool(true) => "always met".into(),
+        Expr::Bool(false) => "never met".into(),
+        Expr::Not(inner) => match **inner {
+            Expr::Name(Name::Completed) => "not completed".into(),
+            _ => format!("not {}", words(inner, true)),
+        },
+        Expr::And(parts) => {
+            let all: Vec<String> = parts.iter().map(|p| words(p, true)).collect();
+            group(all.join(", and "))
+        }
+        Expr::Or(parts) => {
+            let any: Vec<String> = parts.iter().map(|p| words(p, true)).collect();
+            group(any.join(", or "))
+        }
+        Expr::Compare(a, op, b) => {
+            let phrase = match (op, &**b) {
+                (CmpOp::Eq, Expr::Bool(_)) => "is",
+                (CmpOp::Ne, Expr::Bool(_)) => "is not",
+                (CmpOp::Lt, _) => "below",
+                (CmpOp::Le, _) => "at most",
+                (CmpOp::Gt, _) => "above",
+                (CmpOp::Ge, _) => "at least",
+                (CmpOp::Eq, _) => "equal to",
+                (CmpOp::Ne, _) => "other than",
+            };
+            format!("{} {phrase} {}", noun(a), noun(b))
+        }
+        other => noun(other),
+    }
+}
+
 /// A number as a person writes it: whole numbers without a fraction, others to 4 significant
 /// digits.
 fn show(v: f64) -> String {
@@ -1023,6 +1089,27 @@ mod tests {
             .as_object()
             .unwrap()
             .clone()
+    }
+
+    #[test]
+    fn goals_read_in_words() {
+        let words = |t: &str| Goal::parse(t).unwrap().words();
+        assert_eq!(
+            words("completed and metrics.collisions < 40"),
+            "Completed, and collisions below 40."
+        );
+        assert_eq!(
+            words("completed and steps <= 300 and scenario.robots <= 6"),
+            "Completed, and steps at most 300, and the scenario's robots at most 6."
+        );
+        assert_eq!(
+            words("metrics.span >= 10 or not completed"),
+            "Span at least 10, or not completed."
+        );
+        assert_eq!(
+            words("completed and (steps < 200 or scenario.adaptation == true)"),
+            "Completed, and (steps below 200, or the scenario's adaptation is true)."
+        );
     }
 
     #[test]

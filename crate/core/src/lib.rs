@@ -18,6 +18,7 @@
 pub mod error;
 pub mod exercise;
 pub mod experiment;
+pub mod grading;
 pub mod hash;
 pub mod json;
 pub mod lattice;
