@@ -15,6 +15,7 @@ import { registerOffline } from './ui/offline';
 import { change, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
 import { StructureViews } from './ui/structure';
+import { setupWelcome } from './ui/welcome';
 import * as core from './wasm';
 
 const DEFAULT_PRESET = 'amas-L';
@@ -238,12 +239,23 @@ async function start() {
   // The worker reports its renderer when its view is ready; the first scenario need not wait.
   void useRenderer();
   byId('diag-version').textContent = core.version();
-  setupGallery(
+  const openGallery = setupGallery(
     core.presets(),
     core.lessons(),
     (name) => load(core.presetJson(name)),
     // A lesson opens on the run tab, where its exercise panel is.
     (name) => load(core.lessonJson(name)) && keys.selectTab('run'),
+  );
+  const welcome = setupWelcome(
+    {
+      watch: () => openGallery('scenarios'),
+      lesson: () => openGallery('lessons'),
+      build: () => keys.selectTab('scenario', true),
+    },
+    () => {
+      prefs.welcomed = true;
+      persistPrefs();
+    },
   );
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
   setupRecordDialog({
@@ -296,6 +308,8 @@ async function start() {
     });
     return;
   }
+  // A first visit opens on what Kumiki is and where to start; a shared link has its own introduction.
+  if (!prefs.welcomed && !location.hash.slice(1)) welcome.show();
   if (share.openHash()) return;
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;

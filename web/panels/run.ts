@@ -4,9 +4,8 @@ import * as core from '../wasm';
 import type { Frame, Metrics } from '../types';
 import { MetricChart } from '../ui/chart';
 import { byId, clear, el, formatNumber } from '../ui/dom';
+import { SPEED_MAX, speedText, stepsPerSecond } from '../ui/speed';
 import type { Page } from './page';
-
-const SPEEDS = [1, 3, 10, 30, 100, 300, 1000, 10000, Infinity];
 
 export interface RunPanel {
   /** The tool a click on the lattice applies ('inspect' or one of the layout's tools). */
@@ -20,7 +19,8 @@ export interface RunPanel {
   setPlaying(on: boolean): void;
   togglePlay(): void;
   stepOnce(): void;
-  stepBack(): void;
+  /** Goes `count` steps back (1 unless given) from where the last back press led. */
+  stepBack(count?: number): void;
   reset(): void;
   /** The metric charted now. */
   chartedMetric(): string;
@@ -38,13 +38,13 @@ export function setupRunPanel(page: Page): RunPanel {
   const speed = byId<HTMLInputElement>('speed');
   const speedOut = byId('speed-out');
   function applySpeed() {
-    const i = Math.max(0, Math.min(SPEEDS.length - 1, Number(speed.value)));
-    const v = SPEEDS[i];
-    const text = Number.isFinite(v) ? `${v.toLocaleString('en-US')}/s` : 'max';
-    speedOut.textContent = text;
-    speed.setAttribute('aria-valuetext', Number.isFinite(v) ? `${v} steps per second` : 'as fast as possible');
+    const position = Math.max(0, Math.min(SPEED_MAX, Number(speed.value)));
+    const v = stepsPerSecond(position);
+    const text = speedText(v);
+    speedOut.textContent = text.short;
+    speed.setAttribute('aria-valuetext', text.spoken);
     sim.setSpeed(v);
-    prefs.speedIndex = i;
+    prefs.speedIndex = position;
     page.persistPrefs();
   }
   speed.value = String(prefs.speedIndex);
@@ -58,14 +58,34 @@ export function setupRunPanel(page: Page): RunPanel {
   timeline.addEventListener('pointerdown', () => (timelineDragging = true));
   timeline.addEventListener('pointerup', () => (timelineDragging = false));
   timeline.addEventListener('pointercancel', () => (timelineDragging = false));
-  const stepBack = () => {
+  /**
+   * Where the back presses sent so far lead. Each press goes back from the last one sent, not from
+   * the frame in view: a rewind takes the worker a while, and presses made meanwhile must count.
+   * Cleared once a frame shows that step, and whenever the run moves another way.
+   */
+  let backTarget: number | null = null;
+  const stepBack = (count = 1) => {
     const frame = session.frame;
-    if (frame && frame.steps > 0) sim.seek(frame.steps - 1);
+    if (!frame) return;
+    const from = backTarget !== null && !playing ? backTarget : frame.steps;
+    if (from <= 0) return;
+    backTarget = Math.max(0, from - count);
+    sim.seek(backTarget);
   };
+  const forget = () => (backTarget = null);
+  timeline.addEventListener('input', forget);
 
-  const togglePlay = () => (playing ? sim.pause() : sim.play());
-  const stepOnce = () => sim.step(1);
+  const togglePlay = () => {
+    forget();
+    if (playing) sim.pause();
+    else sim.play();
+  };
+  const stepOnce = () => {
+    forget();
+    sim.step(1);
+  };
   const reset = () => {
+    forget();
     if (session.scenario) sim.load(session.scenario);
   };
   byId('play').addEventListener('click', togglePlay);
@@ -102,6 +122,7 @@ export function setupRunPanel(page: Page): RunPanel {
   });
 
   function showFrame(frame: Frame) {
+    if (frame.steps === backTarget) backTarget = null;
     byId('step-count').textContent = frame.steps.toLocaleString('en-US');
     if (frame.hash) byId('state-hash').textContent = frame.hash;
     const status = byId('run-status');
@@ -265,6 +286,7 @@ export function setupRunPanel(page: Page): RunPanel {
   }
 
   session.on('loaded', () => {
+    forget();
     renderRunPanel();
     seedInput.value = String(session.doc().seed ?? 0);
     chartMetric(prefs.chartMetric);
