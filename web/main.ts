@@ -137,10 +137,16 @@ const sim = new SimClient({
 });
 const structure = new StructureViews(view, (cell) => sim.inspect(cell));
 
-const large = new LargeOpening(() => {
-  sim.recover();
-  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
-});
+const large = new LargeOpening(
+  () => {
+    sim.recover();
+    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  },
+  () => {
+    share.leaveLink();
+    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false });
+  },
+);
 
 // ---- opening a scenario -----------------------------------------------------------------------
 
@@ -150,10 +156,7 @@ function load(json: string, { record = true, quiet = false, onProblem }: LoadOpt
     if (record) session.remember(session.scenario, normal);
     share.leaveLink();
   };
-  if (large.begin(json, opened)) {
-    open(json);
-    return true;
-  }
+  if (large.begin(json, opened, () => open(json))) return true;
   let normal: string;
   try {
     normal = core.normalize(json);
@@ -262,6 +265,11 @@ async function start() {
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };
       return { name: String(doc.name || 'scenario'), seed: Number(doc.seed ?? 0) };
+    },
+    legend: () => {
+      const layout = session.layout;
+      if (!layout) return [];
+      return [...layout.cells.map((c) => ({ name: c.name, color: c.color, round: false })), ...layout.agents.map((a) => ({ name: a.name, color: a.color, round: true }))];
     },
     setScale: (scale) => view.setCaptureScale(scale),
     record: (settings, signal, progress) => sim.record(settings, signal, progress),

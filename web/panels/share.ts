@@ -81,17 +81,25 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
         session.remember(previous, json);
         introduce(json);
       };
-      // A large scenario is validated by the worker as it opens; a small one here, at once.
-      if (!large.begin(unpacked.scenario, remember)) {
+      // A link made with another behaviour of its model opens, but its run may not be its maker's.
+      const { made_with, current } = unpacked;
+      const notice = () => {
+        linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+        linkNotice.hidden = made_with === current;
+      };
+      // A large scenario is validated by the worker as it opens (once agreed to, when it needs
+      // much memory); a small one here, at once.
+      const started = large.begin(unpacked.scenario, remember, () => {
+        notice();
+        open(unpacked.scenario);
+      });
+      if (!started) {
         const json = core.normalize(unpacked.scenario);
         remember(json);
         session.scenario = json;
+        notice();
+        open(json);
       }
-      // A link made with another behaviour of its model opens, but its run may not be its maker's.
-      const { made_with, current } = unpacked;
-      linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
-      linkNotice.hidden = made_with === current;
-      open(large.active ? unpacked.scenario : session.scenario);
       banner.dismiss();
       return true;
     } catch (e) {
