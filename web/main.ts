@@ -162,7 +162,7 @@ function load(json: string, { record = true, quiet = false, onProblem }: LoadOpt
     normal = core.normalize(json);
   } catch (e) {
     if (onProblem) onProblem(core.message(e));
-    else if (!quiet) banner.report(`This scenario cannot run: ${core.message(e)}`);
+    else if (!quiet) reportProblem(json, core.message(e));
     return false;
   }
   if (record) session.remember(session.scenario, normal);
@@ -170,6 +170,13 @@ function load(json: string, { record = true, quiet = false, onProblem }: LoadOpt
   open(normal);
   share.leaveLink();
   return true;
+}
+
+/** Says why a scenario cannot run, briefly; the whole message is a click away when there is more. */
+function reportProblem(json: string, brief: string) {
+  const full = core.problemInFull(json);
+  const text = (message: string) => `This scenario cannot run: ${message}`;
+  banner.report(text(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(text(full)) } : undefined);
 }
 
 /** The scenario being opened; saved for reloads only once it has drawn a frame. */

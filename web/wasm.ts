@@ -33,6 +33,8 @@ export const presetJson = (name: string): string => core.preset_json(name);
 export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];
 export const lessonJson = (name: string): string => core.lesson_json(name);
 export const normalize = (json: string): string => core.normalize_scenario(json);
+/** The whole of what is wrong with scenario JSON ("" when nothing is): `normalize` throws it briefly. */
+export const problemInFull = (json: string): string => core.scenario_problem_in_full(json);
 /** The link of a scenario the core validated before (the page's own); nothing is rebuilt. */
 export const encodeLink = (json: string): string => core.pack_link(json);
 /** The cells of the largest shape in scenario JSON, read from its text without building it. */

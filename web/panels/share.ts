@@ -74,8 +74,11 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
   function openHash(): boolean {
     const hash = location.hash.slice(1);
     if (!hash) return false;
+    /** The link's scenario text, once unpacked: what the whole message is read from. */
+    let text: string | null = null;
     try {
       const unpacked = core.unpackLink(hash);
+      text = unpacked.scenario;
       const previous = session.scenario;
       const remember = (json: string) => {
         session.remember(previous, json);
@@ -103,7 +106,11 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
       banner.dismiss();
       return true;
     } catch (e) {
-      banner.report(`This link could not be opened, so your last scenario is shown instead.\n${core.message(e)}`);
+      // The message is brief; the whole of it is a click away when there is more.
+      const say = (message: string) => `This link could not be opened, so your last scenario is shown instead.\n${message}`;
+      const brief = core.message(e);
+      const full = text === null ? '' : core.problemInFull(text);
+      banner.report(say(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(say(full)) } : undefined);
       return false;
     }
   }

@@ -116,6 +116,16 @@ pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+/// The whole of what is wrong with scenario JSON, or "" when nothing is. The errors the other
+/// calls throw are brief (under 200 characters); this is the rest, for whoever asks.
+#[wasm_bindgen]
+pub fn scenario_problem_in_full(json: &str) -> String {
+    Scenario::from_json(json)
+        .err()
+        .map(|e| format!("{e:#}"))
+        .unwrap_or_default()
+}
+
 /// The share-link payload (the part after `#`) for scenario JSON.
 #[wasm_bindgen]
 pub fn encode_link(json: &str) -> Result<String, JsError> {
