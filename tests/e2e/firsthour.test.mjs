@@ -108,6 +108,8 @@ describe('the first screen', () => {
     // Esc leaves the tour part-way.
     await page.click('#open-welcome');
     await page.click('#welcome-tour');
+    // The dialog's close event (which starts the tour) comes as a task after the click.
+    await page.waitForSelector('#tour:not([hidden])');
     await page.keyboard.press('Enter');
     assert.equal(await page.textContent('#tour-count'), 'Stop 2 of 5');
     await page.keyboard.press('Escape');
@@ -145,6 +147,42 @@ describe('error messages', () => {
     await page.click('#banner-action');
     const full = (await page.textContent('#banner-text')).split('\n')[1];
     assert.ok(full.length >= 200 && full.startsWith("robtos: unknown field 'robtos'; expected one of") && full.includes("'supply_rows'"), full);
+    await context.close();
+  });
+});
+
+describe('metric explanations', () => {
+  test("every metric card explains itself from the core's table, on hover and on keyboard focus", async () => {
+    const { page, context } = await openPage(s.browser, s.server.url);
+    const model = await page.textContent('#scenario-model');
+    const table = new Map(wasm.metric_table(model).map((m) => [m.name.replace(/_/g, ' '), m]));
+    const cards = page.locator('#metrics .metric');
+    const count = await cards.count();
+    assert.ok(count > 3);
+    for (let i = 0; i < count; i++) {
+      const card = cards.nth(i);
+      const name = await card.locator('span').first().textContent();
+      const info = table.get(name);
+      assert.ok(info, `${name} is in the ${model} metric table`);
+      const tip = card.locator('.metric-about');
+      assert.equal(await tip.textContent(), `${info.about} Unit: ${info.unit}.`);
+      assert.equal(await card.getAttribute('aria-describedby'), await tip.getAttribute('id'));
+    }
+    const first = cards.first();
+    assert.equal(await first.locator('.metric-about').isVisible(), false);
+    await first.hover();
+    assert.equal(await first.locator('.metric-about').isVisible(), true);
+    await page.mouse.move(0, 0);
+    assert.equal(await first.locator('.metric-about').isVisible(), false);
+    // From the keyboard: the cards are in the Tab order and show their explanation when focused.
+    await page.locator('#play').focus();
+    let reached = false;
+    for (let i = 0; i < 40 && !reached; i++) {
+      await page.keyboard.press('Tab');
+      reached = await page.evaluate(() => document.activeElement?.classList.contains('metric') ?? false);
+    }
+    assert.ok(reached, 'a metric card takes the focus');
+    assert.equal(await page.locator('.metric:focus .metric-about').isVisible(), true);
     await context.close();
   });
 });

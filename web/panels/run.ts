@@ -1,7 +1,7 @@
 // The run panel: the transport (play, step, reset, speed, timeline, seed), the step count, status,
 // metrics and chart of each frame, and the overlays, tools and legend of the model in view.
 import * as core from '../wasm';
-import type { Frame, Metrics } from '../types';
+import type { Frame, MetricInfo, Metrics } from '../types';
 import { MetricChart } from '../ui/chart';
 import { byId, clear, el, formatNumber } from '../ui/dom';
 import { SPEED_MAX, speedText, stepsPerSecond } from '../ui/speed';
@@ -152,6 +152,15 @@ export function setupRunPanel(page: Page): RunPanel {
     }
   }
 
+  /** The model's metric table (name, unit, meaning), from the core: the same one the CLI and the docs use. */
+  function explanations(): Map<string, MetricInfo> {
+    try {
+      return new Map(core.metricTable(String(session.doc().model ?? '')).map((m) => [m.name, m]));
+    } catch {
+      return new Map();
+    }
+  }
+
   const metricsBox = byId('metrics');
   const metricNodes = new Map<string, HTMLElement>();
   function renderMetrics(metrics: Metrics) {
@@ -159,9 +168,14 @@ export function setupRunPanel(page: Page): RunPanel {
     if (names.join() !== [...metricNodes.keys()].join()) {
       clear(metricsBox);
       metricNodes.clear();
+      const about = explanations();
       for (const name of names) {
         const value = el('strong');
-        metricsBox.append(el('div', { class: 'metric' }, el('span', { text: name.replace(/_/g, ' ') }), value));
+        const info = about.get(name);
+        // The explanation shows on hover and on focus (a card with one is in the Tab order) and
+        // is the card's description for a screen reader.
+        const tip = info ? [el('span', { class: 'metric-about', role: 'tooltip', id: `metric-about-${name}`, text: `${info.about} Unit: ${info.unit}.` })] : [];
+        metricsBox.append(el('div', { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined }, el('span', { text: name.replace(/_/g, ' ') }), value, ...tip));
         metricNodes.set(name, value);
       }
       const numeric = names.filter((n) => typeof metrics[n] === 'number');
