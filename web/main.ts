@@ -16,6 +16,7 @@ import { registerOffline } from './ui/offline';
 import { change, isLarge, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
 import { StructureViews } from './ui/structure';
+import { setupWelcome } from './ui/welcome';
 import * as core from './wasm';
 
 const DEFAULT_PRESET = 'amas-L';
@@ -137,18 +138,26 @@ const sim = new SimClient({
 });
 const structure = new StructureViews(view, (cell) => sim.inspect(cell));
 
-const large = new LargeOpening(() => {
-  sim.recover();
-  if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
-});
+const large = new LargeOpening(
+  () => {
+    sim.recover();
+    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+  },
+  () => {
+    share.leaveLink();
+    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+  },
+);
 
 // ---- opening a scenario -----------------------------------------------------------------------
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false, onProblem, opens = false }: LoadOptions = {}): boolean {
-  const refuse = (problem: string) => {
+  // `validity`: the problem is the scenario's own, so its whole message can be offered; a lock's
+  // refusal has no more to say (and a large scenario is not read on this thread to find out).
+  const refuse = (problem: string, validity = false) => {
     if (onProblem) onProblem(problem);
-    else if (!quiet) banner.report(`This scenario cannot run: ${problem}`);
+    else if (!quiet) reportProblem(validity ? json : null, problem);
     return false;
   };
   // An edit keeps the exercise in force and its locked fields at the teacher's values.
@@ -160,15 +169,12 @@ function load(json: string, { record = true, quiet = false, onProblem, opens = f
   // A large scenario is validated by the worker, so its text is held to the locks as it is.
   const lockedLarge = isLarge(json) ? locked(json) : undefined;
   if (lockedLarge) return refuse(lockedLarge);
-  if (large.begin(json, opened)) {
-    open(json);
-    return true;
-  }
+  if (large.begin(json, opened, () => open(json))) return true;
   let normal: string;
   try {
     normal = core.normalize(json);
   } catch (e) {
-    return refuse(core.message(e));
+    return refuse(core.message(e), true);
   }
   const problem = locked(normal);
   if (problem) return refuse(problem);
@@ -177,6 +183,16 @@ function load(json: string, { record = true, quiet = false, onProblem, opens = f
   open(normal);
   share.leaveLink();
   return true;
+}
+
+/**
+ * Says why a scenario cannot run, briefly; when `json` is given and its whole message says more,
+ * the rest is a click away.
+ */
+function reportProblem(json: string | null, brief: string) {
+  const full = json === null ? '' : core.problemInFull(json);
+  const text = (message: string) => `This scenario cannot run: ${message}`;
+  banner.report(text(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(text(full)) } : undefined);
 }
 
 /** The scenario being opened; saved for reloads only once it has drawn a frame. */
@@ -253,12 +269,23 @@ async function start() {
   // The worker reports its renderer when its view is ready; the first scenario need not wait.
   void useRenderer();
   byId('diag-version').textContent = core.version();
-  setupGallery(
+  const openGallery = setupGallery(
     core.presets(),
     core.lessons(),
     (name) => load(core.presetJson(name), { opens: true }),
     // A lesson opens on the run tab, where its exercise panel is.
     (name) => load(core.lessonJson(name), { opens: true }) && keys.selectTab('run'),
+  );
+  const welcome = setupWelcome(
+    {
+      watch: () => openGallery('scenarios'),
+      lesson: () => openGallery('lessons'),
+      build: () => keys.selectTab('scenario', true),
+    },
+    () => {
+      prefs.welcomed = true;
+      persistPrefs();
+    },
   );
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
   setupGrade();
@@ -266,6 +293,11 @@ async function start() {
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };
       return { name: String(doc.name || 'scenario'), seed: Number(doc.seed ?? 0) };
+    },
+    legend: () => {
+      const layout = session.layout;
+      if (!layout) return [];
+      return [...layout.cells.map((c) => ({ name: c.name, color: c.color, round: false })), ...layout.agents.map((a) => ({ name: a.name, color: a.color, round: true }))];
     },
     setScale: (scale) => view.setCaptureScale(scale),
     record: (settings, signal, progress) => sim.record(settings, signal, progress),
@@ -313,6 +345,8 @@ async function start() {
     });
     return;
   }
+  // A first visit opens on what Kumiki is and where to start; a shared link has its own introduction.
+  if (!prefs.welcomed && !location.hash.slice(1)) welcome.show();
   if (share.openHash()) return;
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;

@@ -5,6 +5,7 @@ const SCENARIO_KEY = 'kumiki.scenario.v1';
 const PREFS_KEY = 'kumiki.prefs.v1';
 
 export interface Prefs {
+  /** The speed slider's position (web/ui/speed.ts). */
   speedIndex: number;
   overlay: string;
   arrows: boolean;
@@ -14,6 +15,8 @@ export interface Prefs {
   chartMetric: string;
   experiment: string;
   workers: number;
+  /** The first screen was seen (closed once): it no longer opens by itself. */
+  welcomed: boolean;
 }
 
 const DEFAULT_PREFS: Prefs = {
@@ -26,6 +29,7 @@ const DEFAULT_PREFS: Prefs = {
   chartMetric: '',
   experiment: '',
   workers: 0,
+  welcomed: false,
 };
 
 function read(key: string): string | null {

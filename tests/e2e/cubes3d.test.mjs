@@ -347,7 +347,7 @@ describe('the type-list editor', () => {
     await page.fill('#cubes-voxel-text', '##\n##\n---\n##\n##\n');
     await page.click('.voxel-text button');
     await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).shape === '##\n##\n---\n##\n##\n');
-    await page.click('button[aria-label="Derive the type-lists of target 1 from the shape in the 3-D editor"]');
+    await page.click('button[title="Derive the type-lists of target 1 from the shape in the 3-D editor"]');
     await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).targets[0].type_lists === 'C31[C31, C31, C31]\n');
     assert.equal((await page.inputValue('#cubes-target-0-lists')).trim(), 'C31[C31, C31, C31]');
     // Edit the target's own shape too: the 3-D editor switches to it.

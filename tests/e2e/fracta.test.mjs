@@ -68,7 +68,7 @@ test('the statement editor names the bad line and keeps the text; derive writes 
   const before = (await scenario(page)).goal;
   await page.fill('#fracta-goal', 'o{K, K}\nK{o, K, Q, s}');
   await page.waitForFunction(() => document.querySelector('#fracta-goal-error').textContent.includes('line 2'));
-  await page.click('button[aria-label="Apply the goal statements"]');
+  await page.click('button[title="Apply the goal statements"]');
   assert.equal(await page.inputValue('#fracta-goal'), 'o{K, K}\nK{o, K, Q, s}', 'the typed text is kept');
   assert.equal((await scenario(page)).goal, before, 'a bad goal does not reach the scenario');
 
@@ -77,8 +77,8 @@ test('the statement editor names the bad line and keeps the text; derive writes 
   const text = page.locator('details:has(#fracta-priority) textarea');
   await page.click('details:has(#fracta-priority) summary:has-text("As text")');
   await text.fill('. . # .\n . # # .\n. # # #\n # # # #\n');
-  await page.click('details:has(#fracta-priority) button[aria-label="Replace the drawing with the text"]');
-  await page.click('button[aria-label="Derive the goal statements from the goal shapes"]');
+  await page.click('details:has(#fracta-priority) button[title="Replace the drawing with the text"]');
+  await page.click('button[title="Derive the goal statements from the goal shapes"]');
   await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).goal.startsWith('o{K, K}  K{o, K, K, s}'));
   assert.equal(await page.inputValue('#fracta-goal'), 'o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n');
   assert.deepEqual(problems, []);

@@ -89,10 +89,11 @@ export function launch() {
 
 /**
  * A page that records console errors, page errors and CSP violations. A shared link opens with
- * its introduction; it is closed unless `keepIntro` is set. `init`, if given, runs in the page
- * before its own scripts (to watch what they do).
+ * its introduction, and a first visit with the welcome; each is closed unless `keepIntro` (or
+ * `keepWelcome`) is set. `init`, if given, runs in the page before its own scripts (to watch what
+ * they do).
  */
-export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false, init = null } = {}) {
+export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false, keepWelcome = false, init = null } = {}) {
   const context = await browser.newContext({ viewport: { width, height } });
   const page = await context.newPage();
   const problems = [];
@@ -109,6 +110,10 @@ export async function openPage(browser, url, { width = 1280, height = 800, keepI
   if (!keepIntro && (await page.isVisible('#intro'))) {
     await page.click('#intro button.primary');
     await page.waitForSelector('#intro', { state: 'hidden' });
+  }
+  if (!keepWelcome && (await page.isVisible('#welcome'))) {
+    await page.click('#welcome-skip');
+    await page.waitForSelector('#welcome', { state: 'hidden' });
   }
   return { page, context, problems };
 }

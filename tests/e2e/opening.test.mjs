@@ -53,6 +53,9 @@ describe('large scenarios', () => {
     await page.evaluate((l) => {
       location.hash = l;
     }, link);
+    // It needs far more memory than the page asks about: it opens once agreed to.
+    await page.waitForSelector('#large-ask[open]', { timeout: 5000 });
+    await page.click('#large-ask-open');
     await page.waitForSelector('#opening:not([hidden])', { timeout: 5000 });
     assert.match(await page.textContent('#opening-text'), /^This scenario is large \(16,744,448 cells\); opening it…/);
     assert.equal(await page.getAttribute('#opening .progress', 'role'), 'progressbar');
@@ -90,6 +93,7 @@ describe('large scenarios', () => {
     await page.evaluate((l) => {
       location.hash = l;
     }, linkOf(largestAmas({ supply_rows: 1, robots: 4097 })));
+    await page.click('#large-ask-open');
     await page.waitForSelector('#banner:not([hidden])', { timeout: 60000 });
     assert.match(await page.textContent('#banner-text'), /^This scenario cannot run: robots: 4097 robots do not fit/);
     assert.ok(await page.isHidden('#opening'), 'the notice is gone');
@@ -98,6 +102,48 @@ describe('large scenarios', () => {
     assert.ok(await page.isHidden('#intro'), 'a scenario that did not open is not introduced');
     await page.click('#step');
     await waitForSteps(page, 1);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('one estimated to need much memory says how much and opens only when agreed to', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    const name = await page.textContent('#scenario-name');
+    const before = await page.textContent('#state-hash');
+    const amas = (side) => JSON.stringify({ ...JSON.parse(wasm.preset_json('amas-L')), name: `amas-${side}`, target: { rect: [side, side] }, disturbances: [] });
+    const go = (json) =>
+      page.evaluate((l) => {
+        location.hash = l;
+      }, wasm.encode_link(json));
+    // 2000 × 2000 (within the page's limits): 4,000,000 cells at 42 bytes a cell.
+    await go(amas(2000));
+    await page.waitForSelector('#large-ask[open]', { timeout: 5000 });
+    const text = await page.textContent('#large-ask-text');
+    assert.match(text, /4,000,000 cells/);
+    assert.match(text, /about 160 MB of memory/);
+    // Declined: nothing opens, the scenario in view and its run stay, the link is let go.
+    await page.click('#large-ask-keep');
+    await page.waitForSelector('#large-ask', { state: 'hidden' });
+    assert.ok(await page.isHidden('#opening'));
+    assert.equal(await page.textContent('#scenario-name'), name);
+    assert.equal(await page.textContent('#state-hash'), before);
+    assert.equal(await page.evaluate(() => location.hash), '');
+    await page.click('#step');
+    await waitForSteps(page, 1);
+    // Agreed: it opens, and its edits (a new seed) are not asked again.
+    await go(amas(2000));
+    await page.click('#large-ask-open');
+    await page.waitForSelector('#intro[open]', { timeout: 60000 });
+    await page.click('#intro button.primary');
+    assert.equal(await page.textContent('#scenario-name'), 'amas-2000');
+    await page.click('#new-seed');
+    await page.waitForSelector('#opening:not([hidden])', { timeout: 5000 });
+    assert.ok(await page.isHidden('#large-ask'));
+    await page.waitForSelector('#opening', { state: 'hidden', timeout: 60000 });
+    // Under the estimate it opens without a question: 1024 × 1024 is about 40 MB.
+    await go(amas(1024));
+    await page.waitForSelector('#intro[open]', { timeout: 60000 });
+    assert.ok(await page.isHidden('#large-ask'));
     assert.deepEqual(problems, []);
     await context.close();
   });

@@ -26,7 +26,7 @@ describe('the page', () => {
   });
 
   test('play advances the step counter and pause stops it', async () => {
-    // A long run at 300 steps a second: one that kept playing would add steps within a frame.
+    // A long run at 86 steps a second (the slider at 5): one that kept playing would add steps within a few frames.
     const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json('amas-square28'))}`);
     await page.$eval('#speed', (input) => {
       input.value = '5';
@@ -394,9 +394,9 @@ describe('the AMAS stage editor', () => {
     const last = await page.$eval('#model-editor textarea', (t) => t.value);
     assert.notEqual(first, last, 'each stage shows its own shape');
     assert.match(await cellsShown(), /cells/);
-    await page.click('button[aria-label="Add an intermediate stage target before the final target"]');
+    await page.click('button[title="Add an intermediate stage target before the final target"]');
     await page.waitForFunction((n) => JSON.parse(document.querySelector('#scenario-json').value).stages.length === n + 1, stages);
-    await page.click('button[aria-label="Remove this stage target"]');
+    await page.click('button[title="Remove this stage target"]');
     await page.waitForFunction((n) => JSON.parse(document.querySelector('#scenario-json').value).stages.length === n, stages);
     assert.deepEqual(problems, []);
     await context.close();

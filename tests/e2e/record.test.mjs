@@ -14,11 +14,12 @@ const s = session();
 const linkTo = (preset) => `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`;
 
 /** Sets the dialog, records, and resolves with the download's name and bytes. */
-async function recordFile(page, { format, steps = 1, every = 1, fps = 10, scale = 1 }) {
+async function recordFile(page, { format, steps = 1, every = 1, fps = 10, scale = 1, overlays = [] }) {
   await page.click('#open-record');
   await page.waitForSelector('#record[open]');
   await page.selectOption('#record-format', format);
   await page.selectOption('#record-scale', String(scale));
+  for (const o of ['step', 'title', 'legend']) await page.setChecked(`#record-overlay-${o}`, overlays.includes(o));
   if (format !== 'png') {
     await page.fill('#record-steps', String(steps));
     await page.fill('#record-every', String(every));
@@ -165,6 +166,7 @@ describe('recording the 2-D view (amas-L)', () => {
     assert.deepEqual(png1.size, await bufferSize(page, 1));
     assert.ok(png1.distinct > 8, `the picture shows something (${png1.distinct} distinct byte values)`);
     const two = await recordFile(page, { format: 'png', scale: 2 });
+    assert.equal(two.name, `amas-L_seed${seed}_step0_2x.png`, 'a 2× picture never takes the 1× name');
     assert.deepEqual(readPng(two.bytes).size, await bufferSize(page, 2));
     // The worker draws the view: its next frame brings the canvas back to its own resolution.
     const own = await bufferSize(page, 1);
@@ -277,6 +279,69 @@ describe('recording the 3-D view (cubes3d)', () => {
     const webm = readWebm(bytes);
     assert.equal(webm.simpleBlocks + webm.blockGroups, 3);
     assert.ok(Math.abs((webm.duration * webm.timecodeScale) / 1e9 - 0.6) < 0.01, `duration ${webm.duration}`);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+});
+
+/** A PNG's pixels in the page: [width, height, RGBA bytes as an array]. */
+async function pixelsOf(page, bytes) {
+  const blank = await page.context().newPage();
+  const out = await blank.evaluate(async (b64) => {
+    const bitmap = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))], { type: 'image/png' }));
+    const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    return [bitmap.width, bitmap.height, Array.from(ctx.getImageData(0, 0, bitmap.width, bitmap.height).data)];
+  }, bytes.toString('base64'));
+  await blank.close();
+  return out;
+}
+
+describe('recording overlays', () => {
+  test('the step counter, the title and the legend are drawn in their corners, only when asked for', async () => {
+    const { page, context, problems } = await openPage(s.browser, linkTo('amas-L'));
+    await page.click('#step');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '1');
+    const plain = await pixelsOf(page, (await recordFile(page, { format: 'png' })).bytes);
+    const again = await pixelsOf(page, (await recordFile(page, { format: 'png' })).bytes);
+    assert.deepEqual(again, plain, 'without overlays the same view gives the same picture');
+    const [w, h] = plain;
+    /** The share of pixels that differ from the plain picture in a region (fractions of the frame). */
+    const changed = (shot, [x0, y0, x1, y1]) => {
+      let n = 0;
+      let all = 0;
+      for (let y = Math.floor(y0 * h); y < Math.floor(y1 * h); y++) {
+        for (let x = Math.floor(x0 * w); x < Math.floor(x1 * w); x++) {
+          const i = 4 * (y * w + x);
+          all++;
+          if (shot[2][i] !== plain[2][i] || shot[2][i + 1] !== plain[2][i + 1] || shot[2][i + 2] !== plain[2][i + 2]) n++;
+        }
+      }
+      return n / all;
+    };
+    const TOP_LEFT = [0, 0, 0.15, 0.06];
+    const TOP_RIGHT = [0.88, 0, 1, 0.06];
+    const BOTTOM_LEFT = [0, 0.94, 0.15, 1];
+    const MIDDLE = [0.3, 0.3, 0.7, 0.7];
+    const regions = { title: TOP_LEFT, step: TOP_RIGHT, legend: BOTTOM_LEFT };
+    for (const which of ['step', 'title', 'legend']) {
+      const { name, bytes } = await recordFile(page, { format: 'png', overlays: [which] });
+      assert.equal(name, 'amas-L_seed1_step1.png');
+      const shot = await pixelsOf(page, bytes);
+      for (const [other, region] of Object.entries(regions)) {
+        const share = changed(shot, region);
+        if (other === which) assert.ok(share > 0.2, `${which}: ${(share * 100).toFixed(0)} % of its corner is drawn over`);
+        else assert.equal(share, 0, `${which} leaves the ${other} corner alone`);
+      }
+      assert.equal(changed(shot, MIDDLE), 0, `${which} leaves the middle of the view alone`);
+    }
+    // The step counter follows the run: the picture at step 2 differs from the one at step 1.
+    const one = await pixelsOf(page, (await recordFile(page, { format: 'png', overlays: ['step'] })).bytes);
+    await page.click('#step');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '2');
+    await settle(page);
+    const two = await pixelsOf(page, (await recordFile(page, { format: 'png', overlays: ['step', 'title', 'legend'] })).bytes);
+    assert.notDeepEqual(two[2], one[2]);
     assert.deepEqual(problems, []);
     await context.close();
   });

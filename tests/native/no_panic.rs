@@ -1,8 +1,9 @@
 //! No input ever panics: random text into every reader, and every preset with its keys set to
 //! unexpected values (which must either load and run, or be refused with an error).
 
+use kumiki_core::error::BRIEF_CHARS;
 use kumiki_core::experiment::Experiment;
-use kumiki_core::{link, presets, shape, Run, Scenario};
+use kumiki_core::{link, presets, shape, Error, Run, Scenario};
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
@@ -144,7 +145,8 @@ fn apply(text: &str, edits: &[Edit]) -> String {
 }
 
 /// The fuzz run: every preset's link, edited, must open and run a few steps or be refused with
-/// an error; nothing panics. `KUMIKI_FUZZ_CASES` sets the number of cases (`npm run fuzz` runs
+/// an error whose message is brief (under BRIEF_CHARS characters, with the field's path); nothing
+/// panics. `KUMIKI_FUZZ_CASES` sets the number of cases (`npm run fuzz` runs
 /// many); the count and the slowest case are printed.
 #[test]
 fn edited_preset_links_open_and_run_or_are_refused() {
@@ -166,6 +168,7 @@ fn edited_preset_links_open_and_run_or_are_refused() {
     });
     let slowest = std::cell::RefCell::new((Duration::ZERO, String::new()));
     let (opened, refused) = (std::cell::Cell::new(0u32), std::cell::Cell::new(0u32));
+    let longest = std::cell::Cell::new(0usize);
     let strategy = (0..corpus.len(), prop::collection::vec(edit(), 1..4));
     runner
         .run(&strategy, |(preset, edits)| {
@@ -183,7 +186,27 @@ fn edited_preset_links_open_and_run_or_are_refused() {
                     let _ = run.outcome();
                     opened.set(opened.get() + 1);
                 }
-                Err(_) => refused.set(refused.get() + 1),
+                Err(e) => {
+                    // The message is brief, and says where: the field's path when it is a field.
+                    let brief = e.to_string();
+                    prop_assert!(
+                        brief.chars().count() < BRIEF_CHARS,
+                        "{} characters: {brief}",
+                        brief.chars().count()
+                    );
+                    if let Error::Field { path, .. } = &e {
+                        // A long path keeps its ends (its middle elided).
+                        let head: String = path.chars().take(30).collect();
+                        prop_assert!(
+                            path.is_empty()
+                                || brief.starts_with(&format!("{path}: "))
+                                || (path.chars().count() > 60 && brief.starts_with(&head)),
+                            "the path {path} is not shown: {brief}"
+                        );
+                    }
+                    longest.set(longest.get().max(format!("{e:#}").chars().count()));
+                    refused.set(refused.get() + 1)
+                }
             }
             let took = start.elapsed();
             if took > slowest.borrow().0 {
@@ -194,10 +217,11 @@ fn edited_preset_links_open_and_run_or_are_refused() {
         .unwrap();
     let (took, case) = slowest.into_inner();
     println!(
-        "fuzz: {} cases without a panic ({} opened and ran 20 steps, {} refused); slowest {:.1} ms: {case}",
+        "fuzz: {} cases without a panic ({} opened and ran 20 steps, {} refused, every message under {BRIEF_CHARS} characters, the longest in full {}); slowest {:.1} ms: {case}",
         opened.get() + refused.get(),
         opened.get(),
         refused.get(),
+        longest.get(),
         took.as_secs_f64() * 1e3
     );
 }

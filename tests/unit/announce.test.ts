@@ -70,4 +70,25 @@ describe('the live region', () => {
     a.frame(frame(9), false, 'built', String);
     expect(r.said.filter((t) => t.includes('remove'))).toHaveLength(1);
   });
+
+  it('says only what changed: a new scenario by name, a run sent back to step 0, and nothing for edits at step 0', () => {
+    const r = region();
+    const a = new Announcer(r.node);
+    a.loaded('amas-L', []);
+    expect(r.said).toEqual(['amas-L opened.']);
+    // Four edits (erase clicks) at step 0: the run did not move, nothing is said.
+    for (let i = 1; i <= 4; i++) {
+      at(i * 1000);
+      a.loaded('amas-L', []);
+    }
+    expect(r.said).toEqual(['amas-L opened.']);
+    at(10_000);
+    a.frame(frame(40), false, 'built', String);
+    a.loaded('amas-L', []);
+    expect(r.said.at(-1)).toBe('Back to step 0.');
+    at(20_000);
+    a.loaded('fracta-repair', []);
+    expect(r.said.at(-1)).toBe('fracta-repair opened.');
+    expect(r.said).toHaveLength(3);
+  });
 });

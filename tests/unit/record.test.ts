@@ -6,6 +6,8 @@ describe('recording file names', () => {
   it('carry the scenario, the seed and the step range', () => {
     expect(recordingName('amas-L', 1, 0, 400, 'webm')).toBe('amas-L_seed1_steps0-400.webm');
     expect(recordingName('amas-L', 7, 120, 120, 'png')).toBe('amas-L_seed7_step120.png');
+    expect(recordingName('amas-L', 7, 120, 120, 'png', 2)).toBe('amas-L_seed7_step120_2x.png');
+    expect(recordingName('amas-L', 1, 0, 400, 'webm', 2)).toBe('amas-L_seed1_steps0-400_2x.webm');
   });
 
   it('keep only letters, digits, dot, dash and underscore', () => {

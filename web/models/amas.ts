@@ -16,8 +16,8 @@ export const amasEditor: ModelEditor = {
     let doc = ctx.scenario();
     let chosen = 0;
     const select = el('select', { id: 'amas-part', 'aria-label': 'Which shape to edit' });
-    const addStage = el('button', { type: 'button', text: 'Add stage', 'aria-label': 'Add an intermediate stage target before the final target' });
-    const removeStage = el('button', { type: 'button', text: 'Remove stage', 'aria-label': 'Remove this stage target' });
+    const addStage = el('button', { type: 'button', text: 'Add stage', title: 'Add an intermediate stage target before the final target' });
+    const removeStage = el('button', { type: 'button', text: 'Remove stage', title: 'Remove this stage target' });
     const note = el('p', { class: 'hint' });
     const box = el('div');
     root.append(el('div', { class: 'row-buttons' }, select, addStage, removeStage), note, box);

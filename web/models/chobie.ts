@@ -61,7 +61,7 @@ export const chobieEditor: ModelEditor = {
     const count = el('input', { type: 'number', min: 3, max: 199, step: 2, value: 7, id: 'chobie-crawl-robots', 'aria-label': 'Number of robots in the crawl form (odd)' });
     const form = el('select', { id: 'chobie-crawl-form', 'aria-label': 'Crawl form' });
     for (const f of [1, 2, 3, 4]) form.append(el('option', { value: String(f), text: `form ${f}` }));
-    const draw = el('button', { type: 'button', text: 'Draw crawl form', 'aria-label': 'Replace the world by the chosen crawl form' });
+    const draw = el('button', { type: 'button', text: 'Draw crawl form', title: 'Replace the world by the chosen crawl form' });
     draw.addEventListener('click', () => {
       try {
         const answer = query<{ world: string }>('chobie', 'crawl', { robots: Number(count.value), form: Number(form.value), margin: 12 });

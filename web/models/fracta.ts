@@ -23,7 +23,7 @@ export const fractaEditor: ModelEditor = {
     const goalText = el('textarea', { id: 'fracta-goal', rows: 4, spellcheck: 'false', 'aria-describedby': 'fracta-goal-error' });
     goalText.value = String(doc.goal ?? '');
     const goalError = el('p', { id: 'fracta-goal-error', class: 'error', role: 'status', 'aria-live': 'polite' });
-    const applyGoal = el('button', { type: 'button', text: 'Apply statements', 'aria-label': 'Apply the goal statements' });
+    const applyGoal = el('button', { type: 'button', text: 'Apply statements', title: 'Apply the goal statements' });
     let timer = 0;
     const check = (): string | null => {
       try {
@@ -68,7 +68,7 @@ export const fractaEditor: ModelEditor = {
       current = Number(priority.value);
       goalShape.setText(shapes[current]);
     });
-    const addPriority = el('button', { type: 'button', text: 'Add priority', 'aria-label': 'Add a goal shape of the next priority' });
+    const addPriority = el('button', { type: 'button', text: 'Add priority', title: 'Add a goal shape of the next priority' });
     addPriority.addEventListener('click', () => {
       shapes.push(shapes[shapes.length - 1]);
       current = shapes.length - 1;
@@ -83,7 +83,7 @@ export const fractaEditor: ModelEditor = {
       renderPriorities();
       goalShape.setText(shapes[current]);
     });
-    const derive = el('button', { type: 'button', class: 'primary', text: 'Derive statements', 'aria-label': 'Derive the goal statements from the goal shapes' });
+    const derive = el('button', { type: 'button', class: 'primary', text: 'Derive statements', title: 'Derive the goal statements from the goal shapes' });
     derive.addEventListener('click', () => {
       try {
         const answer = query<{ goal: string }>('fracta', 'derive', { shape: shapes.join('---\n') });

@@ -74,7 +74,8 @@ export class GridEditor {
       input.addEventListener('change', () => this.resize(Number(this.widthInput.value), Number(this.heightInput.value)));
     }
     const button = (label: string, aria: string, f: () => void) => {
-      const b = el('button', { type: 'button', text: label, 'aria-label': aria });
+      // The spoken name holds the visible one (WCAG 2.5.3); a longer explanation is the title.
+      const b = el('button', { type: 'button', text: label, ...(aria.toLowerCase().includes(label.toLowerCase()) ? { 'aria-label': aria } : { title: aria }) });
       b.addEventListener('click', f);
       return b;
     };

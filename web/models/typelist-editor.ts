@@ -56,7 +56,7 @@ class Card {
     this.threshold = el('input', { id: `${id}-threshold`, type: 'number', min: 0, step: 'any', class: 'size-input' });
     this.holdLit = el('input', { id: `${id}-hold`, type: 'checkbox' });
     const apply = el('button', { type: 'button', text: 'Apply', 'aria-label': `Apply the type-lists of target ${index + 1}`, 'aria-keyshortcuts': 'Control+Enter' });
-    const derive = el('button', { type: 'button', text: 'Derive from shape', 'aria-label': `Derive the type-lists of target ${index + 1} from the shape in the 3-D editor` });
+    const derive = el('button', { type: 'button', text: 'Derive from shape', 'aria-label': `Derive from shape, for target ${index + 1}`, title: `Derive the type-lists of target ${index + 1} from the shape in the 3-D editor` });
     this.removeButton = el('button', { type: 'button', text: 'Remove target', 'aria-label': `Remove target ${index + 1}` });
     apply.addEventListener('click', () => this.applyText());
     derive.addEventListener('click', () => this.derive());
@@ -205,7 +205,7 @@ export class TargetsEditor {
 
   constructor(private readonly root: HTMLElement, readonly opts: TargetsOptions, private readonly idBase: string) {
     this.list = el('div', { class: 'target-list' });
-    this.addButton = el('button', { type: 'button', text: 'Add target', 'aria-label': 'Add a target (its type-lists derived from the shape in the 3-D editor)' });
+    this.addButton = el('button', { type: 'button', text: 'Add target', title: 'Add a target (its type-lists derived from the shape in the 3-D editor)' });
     this.addButton.addEventListener('click', () => this.add());
     this.error = el('p', { class: 'error', role: 'status', 'aria-live': 'polite' });
     clear(root);

@@ -86,7 +86,8 @@ export class VoxelEditor {
       this.toolButtons.push(b);
     }
     const button = (label: string, aria: string, f: () => void, extra: Record<string, string> = {}) => {
-      const b = el('button', { type: 'button', text: label, 'aria-label': aria, ...extra });
+      // The spoken name holds the visible one (WCAG 2.5.3); a longer explanation is the title.
+      const b = el('button', { type: 'button', text: label, ...(aria.toLowerCase().includes(label.toLowerCase()) ? { 'aria-label': aria } : { title: aria }), ...extra });
       b.addEventListener('click', f);
       return b;
     };

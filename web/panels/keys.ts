@@ -42,6 +42,21 @@ export function setupKeys(page: Page, run: RunPanel, scenario: ScenarioPanel): K
     });
   }
 
+  /** When the Left arrow held down was first pressed. */
+  let heldSince = 0;
+  /**
+   * Steps one Left-arrow event goes back: a press goes back one; held, the key's repeats scrub,
+   * one step each for the first half second, then twice as many every further half second (to
+   * 64), so a long run can be crossed by holding the key.
+   */
+  function backStride(e: KeyboardEvent): number {
+    if (!e.repeat) {
+      heldSince = e.timeStamp;
+      return 1;
+    }
+    return 2 ** Math.min(6, Math.floor(Math.max(0, e.timeStamp - heldSince) / 500));
+  }
+
   document.addEventListener('keydown', (e) => {
     if (e.defaultPrevented || typingIn(e.target) || (document.querySelector('dialog[open]') && e.key !== 'Escape')) return;
     if ((e.ctrlKey || e.metaKey) && e.key.toLowerCase() === 'z') {
@@ -67,7 +82,7 @@ export function setupKeys(page: Page, run: RunPanel, scenario: ScenarioPanel): K
       case 'ArrowLeft':
         if (!onView) return;
         e.preventDefault();
-        run.stepBack();
+        run.stepBack(backStride(e));
         return;
       case 'r':
       case 'R':

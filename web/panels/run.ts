@@ -1,12 +1,11 @@
 // The run panel: the transport (play, step, reset, speed, timeline, seed), the step count, status,
 // metrics and chart of each frame, and the overlays, tools and legend of the model in view.
 import * as core from '../wasm';
-import type { Frame, Metrics } from '../types';
+import type { Frame, MetricInfo, Metrics } from '../types';
 import { MetricChart } from '../ui/chart';
 import { byId, clear, el, formatNumber } from '../ui/dom';
+import { SPEED_MAX, speedText, stepsPerSecond } from '../ui/speed';
 import type { Page } from './page';
-
-const SPEEDS = [1, 3, 10, 30, 100, 300, 1000, 10000, Infinity];
 
 export interface RunPanel {
   /** The tool a click on the lattice applies ('inspect' or one of the layout's tools). */
@@ -20,7 +19,8 @@ export interface RunPanel {
   setPlaying(on: boolean): void;
   togglePlay(): void;
   stepOnce(): void;
-  stepBack(): void;
+  /** Goes `count` steps back (1 unless given) from where the last back press led. */
+  stepBack(count?: number): void;
   reset(): void;
   /** The metric charted now. */
   chartedMetric(): string;
@@ -41,13 +41,13 @@ export function setupRunPanel(page: Page): RunPanel {
   const speed = byId<HTMLInputElement>('speed');
   const speedOut = byId('speed-out');
   function applySpeed() {
-    const i = Math.max(0, Math.min(SPEEDS.length - 1, Number(speed.value)));
-    const v = SPEEDS[i];
-    const text = Number.isFinite(v) ? `${v.toLocaleString('en-US')}/s` : 'max';
-    speedOut.textContent = text;
-    speed.setAttribute('aria-valuetext', Number.isFinite(v) ? `${v} steps per second` : 'as fast as possible');
+    const position = Math.max(0, Math.min(SPEED_MAX, Number(speed.value)));
+    const v = stepsPerSecond(position);
+    const text = speedText(v);
+    speedOut.textContent = text.short;
+    speed.setAttribute('aria-valuetext', text.spoken);
     sim.setSpeed(v);
-    prefs.speedIndex = i;
+    prefs.speedIndex = position;
     page.persistPrefs();
   }
   speed.value = String(prefs.speedIndex);
@@ -61,14 +61,34 @@ export function setupRunPanel(page: Page): RunPanel {
   timeline.addEventListener('pointerdown', () => (timelineDragging = true));
   timeline.addEventListener('pointerup', () => (timelineDragging = false));
   timeline.addEventListener('pointercancel', () => (timelineDragging = false));
-  const stepBack = () => {
+  /**
+   * Where the back presses sent so far lead. Each press goes back from the last one sent, not from
+   * the frame in view: a rewind takes the worker a while, and presses made meanwhile must count.
+   * Cleared once a frame shows that step, and whenever the run moves another way.
+   */
+  let backTarget: number | null = null;
+  const stepBack = (count = 1) => {
     const frame = session.frame;
-    if (frame && frame.steps > 0) sim.seek(frame.steps - 1);
+    if (!frame) return;
+    const from = backTarget !== null && !playing ? backTarget : frame.steps;
+    if (from <= 0) return;
+    backTarget = Math.max(0, from - count);
+    sim.seek(backTarget);
   };
+  const forget = () => (backTarget = null);
+  timeline.addEventListener('input', forget);
 
-  const togglePlay = () => (playing ? sim.pause() : sim.play());
-  const stepOnce = () => sim.step(1);
+  const togglePlay = () => {
+    forget();
+    if (playing) sim.pause();
+    else sim.play();
+  };
+  const stepOnce = () => {
+    forget();
+    sim.step(1);
+  };
   const reset = () => {
+    forget();
     if (session.scenario) sim.load(session.scenario);
   };
   byId('play').addEventListener('click', togglePlay);
@@ -105,6 +125,7 @@ export function setupRunPanel(page: Page): RunPanel {
   });
 
   function showFrame(frame: Frame) {
+    if (frame.steps === backTarget) backTarget = null;
     byId('step-count').textContent = frame.steps.toLocaleString('en-US');
     if (frame.hash) byId('state-hash').textContent = frame.hash;
     const status = byId('run-status');
@@ -136,6 +157,15 @@ export function setupRunPanel(page: Page): RunPanel {
     }
   }
 
+  /** The model's metric table (name, unit, meaning), from the core: the same one the CLI and the docs use. */
+  function explanations(): Map<string, MetricInfo> {
+    try {
+      return new Map(core.metricTable(String(session.doc().model ?? '')).map((m) => [m.name, m]));
+    } catch {
+      return new Map();
+    }
+  }
+
   const metricsBox = byId('metrics');
   const metricNodes = new Map<string, HTMLElement>();
   function renderMetrics(metrics: Metrics) {
@@ -143,9 +173,14 @@ export function setupRunPanel(page: Page): RunPanel {
     if (names.join() !== [...metricNodes.keys()].join()) {
       clear(metricsBox);
       metricNodes.clear();
+      const about = explanations();
       for (const name of names) {
         const value = el('strong');
-        metricsBox.append(el('div', { class: 'metric' }, el('span', { text: name.replace(/_/g, ' ') }), value));
+        const info = about.get(name);
+        // The explanation shows on hover and on focus (a card with one is in the Tab order) and
+        // is the card's description for a screen reader.
+        const tip = info ? [el('span', { class: 'metric-about', role: 'tooltip', id: `metric-about-${name}`, text: `${info.about} Unit: ${info.unit}.` })] : [];
+        metricsBox.append(el('div', { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined }, el('span', { text: name.replace(/_/g, ' ') }), value, ...tip));
         metricNodes.set(name, value);
       }
       const numeric = names.filter((n) => typeof metrics[n] === 'number');
@@ -272,6 +307,7 @@ export function setupRunPanel(page: Page): RunPanel {
   }
 
   session.on('loaded', () => {
+    forget();
     renderRunPanel();
     seedInput.value = String(session.doc().seed ?? 0);
     // A locked seed is read-only, and New seed cannot replace it by accident.

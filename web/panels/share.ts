@@ -82,28 +82,43 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
   function openHash(): boolean {
     const hash = location.hash.slice(1);
     if (!hash) return false;
+    /** The link's scenario text, once unpacked: what the whole message is read from. */
+    let text: string | null = null;
     try {
       const unpacked = core.unpackLink(hash);
+      text = unpacked.scenario;
       const previous = session.scenario;
       const remember = (json: string) => {
         session.remember(previous, json);
         introduce(json);
       };
-      // A large scenario is validated by the worker as it opens; a small one here, at once.
-      if (!large.begin(unpacked.scenario, remember)) {
+      // A link made with another behaviour of its model opens, but its run may not be its maker's.
+      const { made_with, current } = unpacked;
+      const notice = () => {
+        linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
+        linkNotice.hidden = made_with === current;
+      };
+      // A large scenario is validated by the worker as it opens (once agreed to, when it needs
+      // much memory); a small one here, at once.
+      const started = large.begin(unpacked.scenario, remember, () => {
+        notice();
+        open(unpacked.scenario);
+      });
+      if (!started) {
         const json = core.normalize(unpacked.scenario);
         remember(json);
         session.scenario = json;
+        notice();
+        open(json);
       }
-      // A link made with another behaviour of its model opens, but its run may not be its maker's.
-      const { made_with, current } = unpacked;
-      linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
-      linkNotice.hidden = made_with === current;
-      open(large.active ? unpacked.scenario : session.scenario);
       banner.dismiss();
       return true;
     } catch (e) {
-      banner.report(`This link could not be opened, so your last scenario is shown instead.\n${core.message(e)}`);
+      // The message is brief; the whole of it is a click away when there is more.
+      const say = (message: string) => `This link could not be opened, so your last scenario is shown instead.\n${message}`;
+      const brief = core.message(e);
+      const full = text === null ? '' : core.problemInFull(text);
+      banner.report(say(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(say(full)) } : undefined);
       return false;
     }
   }

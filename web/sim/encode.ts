@@ -5,7 +5,7 @@
 // a slow machine and a fast one. No DOM here: WebCodecs, OffscreenCanvas and the two muxers only.
 import { GIFEncoder, applyPalette, quantize } from 'gifenc';
 import { ArrayBufferTarget, Muxer } from 'webm-muxer';
-import { Cancelled, frameCount, type Progress, type Recorded, type RecordSettings } from './record';
+import { Cancelled, frameCount, type Overlays, type Progress, type Recorded, type RecordSettings } from './record';
 
 /** What the recorder needs from the worker that owns the run and its view. */
 export interface RecordHost {
@@ -28,12 +28,84 @@ class Canvas {
     this.canvas = new OffscreenCanvas(width, height);
     this.ctx = this.canvas.getContext('2d', { willReadFrequently: true })!;
   }
-  draw(picture: ImageBitmap) {
+  /** Draws `picture`, then the overlays asked for, with `step` as the step counter. */
+  draw(picture: ImageBitmap, step: number, overlays: Overlays | undefined) {
     this.ctx.fillStyle = '#000';
     this.ctx.fillRect(0, 0, this.width, this.height);
     this.ctx.drawImage(picture, 0, 0);
     picture.close();
+    if (overlays) drawOverlays(this.ctx, this.width, this.height, step, overlays);
   }
+}
+
+/**
+ * The overlays, each on a dark translucent plate so it reads over any colour: the title at the
+ * top left, the step counter at the top right, the legend along the bottom left. Their size
+ * follows the frame's height, so a 2x recording has 2x text.
+ */
+function drawOverlays(ctx: OffscreenCanvasRenderingContext2D, width: number, height: number, step: number, o: Overlays) {
+  const font = Math.max(11, Math.round(height / 36));
+  const pad = Math.round(font * 0.5);
+  const line = font + 2 * pad;
+  ctx.save();
+  ctx.font = `600 ${font}px system-ui, sans-serif`;
+  ctx.textBaseline = 'middle';
+  const plate = (x: number, y: number, w: number, h: number) => {
+    ctx.fillStyle = 'rgba(15, 23, 42, 0.72)';
+    ctx.fillRect(x, y, w, h);
+  };
+  const text = (t: string, x: number, y: number) => {
+    ctx.fillStyle = '#fff';
+    ctx.fillText(t, x, y);
+  };
+  if (o.title) {
+    plate(pad, pad, Math.min(width - 2 * pad, ctx.measureText(o.title).width + 2 * pad), line);
+    text(o.title, 2 * pad, pad + line / 2);
+  }
+  if (o.step) {
+    const t = `step ${step.toLocaleString('en-US')}`;
+    const w = ctx.measureText(t).width + 2 * pad;
+    plate(width - pad - w, pad, w, line);
+    text(t, width - w, pad + line / 2);
+  }
+  if (o.legend?.length) {
+    ctx.font = `${Math.round(font * 0.85)}px system-ui, sans-serif`;
+    const sw = Math.round(font * 0.8);
+    const items = o.legend.map((e) => ({ ...e, w: sw + pad + ctx.measureText(e.name).width }));
+    // As many rows as the width needs.
+    const rows: (typeof items)[] = [[]];
+    let used = 0;
+    for (const it of items) {
+      if (used && used + it.w + 2 * pad > width - 4 * pad) {
+        rows.push([]);
+        used = 0;
+      }
+      rows[rows.length - 1].push(it);
+      used += it.w + 2 * pad;
+    }
+    const rowH = sw + pad;
+    const boxH = rows.length * rowH + pad;
+    const boxW = Math.max(...rows.map((r) => r.reduce((a, it) => a + it.w + 2 * pad, 0))) + pad;
+    const top = height - pad - boxH;
+    plate(pad, top, boxW, boxH);
+    rows.forEach((row, r) => {
+      let x = 2 * pad;
+      const y = top + pad + r * rowH;
+      for (const it of row) {
+        ctx.fillStyle = it.color;
+        ctx.beginPath();
+        if (it.round) ctx.arc(x + sw / 2, y + sw / 2, sw / 2, 0, 2 * Math.PI);
+        else ctx.rect(x, y, sw, sw);
+        ctx.fill();
+        ctx.strokeStyle = 'rgba(255, 255, 255, 0.8)';
+        ctx.lineWidth = 1;
+        ctx.stroke();
+        text(it.name, x + sw + pad / 2, y + sw / 2);
+        x += it.w + 2 * pad;
+      }
+    });
+  }
+  ctx.restore();
 }
 
 /** The first frame's size, made even: VP8 and VP9 encode whole 2×2 chroma blocks. */
@@ -88,11 +160,11 @@ async function eachFrame(host: RecordHost, s: RecordSettings, signal: AbortSigna
   return end;
 }
 
-async function recordPng(host: RecordHost): Promise<Blob> {
+async function recordPng(host: RecordHost, s: RecordSettings): Promise<Blob> {
   const picture = await host.captureFrame();
   const [w, h] = evenSize(picture, false);
   const c = new Canvas(w, h);
-  c.draw(picture);
+  c.draw(picture, host.steps(), s.overlays);
   return c.canvas.convertToBlob({ type: 'image/png' });
 }
 
@@ -158,7 +230,7 @@ async function recordWebm(host: RecordHost, s: RecordSettings, signal: AbortSign
         });
         encoder.configure(config);
       }
-      canvas.draw(picture);
+      canvas.draw(picture, host.steps(), s.overlays);
       frames = i + 1;
       const frame = new VideoFrame(canvas.canvas, { timestamp: Math.round(i * frameUs), duration: Math.round(frameUs) });
       encoder!.encode(frame, { keyFrame: i % keyEvery === 0 });
@@ -189,7 +261,7 @@ async function recordGif(host: RecordHost, s: RecordSettings, signal: AbortSigna
       const [w, h] = evenSize(picture, false);
       canvas = new Canvas(w, h);
     }
-    canvas.draw(picture);
+    canvas.draw(picture, host.steps(), s.overlays);
     const { data } = canvas.ctx.getImageData(0, 0, canvas.width, canvas.height);
     // A palette per frame: the view's colours change as fields spread and robots move.
     const palette = quantize(data, 256);
@@ -203,7 +275,7 @@ async function recordGif(host: RecordHost, s: RecordSettings, signal: AbortSigna
 export async function encode(host: RecordHost, s: RecordSettings, signal: AbortSignal, progress: Progress): Promise<Recorded> {
   const from = host.steps();
   if (s.format === 'png') {
-    const blob = await recordPng(host);
+    const blob = await recordPng(host, s);
     progress(1, 1);
     return { blob, from, to: from };
   }

@@ -14,6 +14,22 @@ export interface RecordSettings {
   scale: number;
   /** Frames per second of the video or GIF. */
   fps: number;
+  /** What is drawn over the view in every frame (each optional). */
+  overlays?: Overlays;
+}
+
+/** A legend entry drawn over a recording: a swatch of the colour (round for an agent) and the name. */
+export interface LegendEntry {
+  name: string;
+  color: string;
+  round: boolean;
+}
+
+/** Drawn over a recording's frames: the step counter, the scenario's title, the colour legend. */
+export interface Overlays {
+  step: boolean;
+  title: string | null;
+  legend: LegendEntry[] | null;
 }
 
 /** A finished recording: the file, and the steps it shows (the name's range). */

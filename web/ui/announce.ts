@@ -21,20 +21,30 @@ export class Announcer {
   private lastImmediate = -Infinity;
   private finished = false;
   private lastStep = 0;
+  /** The scenario's name when it was last loaded. */
+  private name: string | null = null;
   private disturbances: Disturbance[] = [];
   /** The disturbances already said, so passing one again after going back stays quiet. */
   private said = new Set<string>();
 
   constructor(private readonly region: HTMLElement) {}
 
-  /** A run (re)started from `disturbances`: nothing has been said about it yet. */
+  /**
+   * A run (re)started from `disturbances`: nothing has been said about it yet. Only what changed
+   * is said: a scenario of another name is named; the same one, reset or edited, is said only when
+   * it moved the run back to step 0 (an edit at step 0 changes nothing a listener hears).
+   */
   loaded(name: string, disturbances: Disturbance[]) {
+    const before = this.lastStep;
+    const renamed = name !== this.name;
+    this.name = name;
     this.disturbances = disturbances;
     this.said.clear();
     this.finished = false;
     this.lastStep = 0;
     this.lastProgress = performance.now();
-    this.say(`${name} loaded, at step 0.`);
+    if (renamed) this.say(`${name} opened.`);
+    else if (before > 0) this.say('Back to step 0.');
   }
 
   /** The scenario's disturbances changed (a click recorded one): say the new one. */

@@ -1,12 +1,19 @@
 // The gallery: the built-in lessons first (classroom exercises, each with its paper's section),
-// then every built-in scenario grouped by model; one filter for both.
+// then every built-in scenario grouped by model; one filter for both. The Lessons button and the
+// first screen's ways in open it on one part.
 import type { LessonInfo, PresetInfo } from '../types';
 import { byId, clear, el } from './dom';
 
-export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choose: (name: string) => void, chooseLesson: (name: string) => void) {
+/** What the gallery shows: the lessons, the scenarios, or both. */
+export type GalleryPart = 'lessons' | 'scenarios' | 'all';
+
+const TITLES: Record<GalleryPart, string> = { lessons: 'Lessons', scenarios: "The papers' scenarios", all: 'Scenarios' };
+
+export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choose: (name: string) => void, chooseLesson: (name: string) => void): (part: GalleryPart) => void {
   const dialog = byId<HTMLDialogElement>('gallery');
   const list = byId('gallery-list');
   const filter = byId<HTMLInputElement>('gallery-filter');
+  let part: GalleryPart = 'all';
 
   const card = (attrs: Record<string, string>, open: () => void, ...children: HTMLElement[]) => {
     const button = el('button', { type: 'button', class: 'card', ...attrs }, ...children);
@@ -21,7 +28,7 @@ export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choos
     clear(list);
     const q = filter.value.trim().toLowerCase();
     const matches = (text: string) => !q || text.toLowerCase().includes(q);
-    const shownLessons = lessons.filter((l) => matches(`lesson ${l.name} ${l.model} ${l.title} ${l.section} ${l.description}`));
+    const shownLessons = part === 'scenarios' ? [] : lessons.filter((l) => matches(`lesson ${l.name} ${l.model} ${l.title} ${l.section} ${l.description}`));
     if (shownLessons.length) list.append(el('h3', { id: 'gallery-lessons', text: 'Lessons' }));
     for (const l of shownLessons) {
       list.append(
@@ -34,7 +41,7 @@ export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choos
         ),
       );
     }
-    const shown = presets.filter((p) => matches(`${p.name} ${p.model} ${p.description}`));
+    const shown = part === 'lessons' ? [] : presets.filter((p) => matches(`${p.name} ${p.model} ${p.description}`));
     let model = '';
     for (const p of shown) {
       if (p.model !== model) {
@@ -46,9 +53,15 @@ export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choos
     if (!shown.length && !shownLessons.length) list.append(el('p', { class: 'hint', text: 'No scenario matches.' }));
   };
   filter.addEventListener('input', render);
-  byId('open-gallery').addEventListener('click', () => {
+  const open = (shown: GalleryPart) => {
+    part = shown;
+    byId('gallery-title').textContent = TITLES[shown];
     render();
     dialog.showModal();
     filter.focus();
-  });
+  };
+  byId('open-gallery').addEventListener('click', () => open('all'));
+  byId('open-scenarios').addEventListener('click', () => open('all'));
+  byId('open-lessons').addEventListener('click', () => open('lessons'));
+  return open;
 }

@@ -1,4 +1,5 @@
-// Large scenarios open in the simulation worker first. Validating a scenario builds its model,
+// Large scenarios open in the simulation worker first, and one estimated to need much memory
+// only once the user agrees. Validating a scenario builds its model,
 // which for a 4096 × 4096 lattice takes seconds; on the main thread that would freeze the page.
 // A scenario whose shapes span more than LARGE_CELLS cells (read from its text, nothing built) is
 // therefore sent straight to the worker, which validates it while it builds its run, and the page
@@ -16,6 +17,23 @@ const LARGE_CELLS = 1 << 18;
 
 export const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
 
+/**
+ * Memory a scenario adds to the page, per cell of its largest shape, measured in headless
+ * Chromium (renderer plus GPU process, resident, once the run has drawn, over the default
+ * scenario's): an AMAS target of 2000 × 2000 added 167 MB (42 B a cell) and the page's largest,
+ * 4096 × 4088, 578 MB (35 B a cell). AMAS reaches by far the largest lattices of the four models.
+ */
+const BYTES_PER_CELL = 42;
+/** The page's own memory, measured the same way with the default scenario: renderer and GPU process. */
+const PAGE_MB = 350;
+/** Above this many megabytes of its own, a scenario is opened only once the user agrees. */
+export const ASK_ABOVE_MB = 128;
+
+/** Megabytes a scenario is estimated to add to the page, from its text (nothing built). */
+export function memoryEstimateMb(cells: number): number {
+  return (cells * BYTES_PER_CELL) / 2 ** 20;
+}
+
 /** One dotted-path change: validated at once for a small scenario, by the worker for a large one. */
 export function change(json: string, path: string, valueJson: string): string {
   return isLarge(json) ? core.setPath(json, path, valueJson) : core.override(json, path, valueJson);
@@ -30,8 +48,17 @@ export class LargeOpening {
   private readonly text = byId('opening-text');
   private cells = 0;
 
-  /** `stop` ends the opening (the worker is restarted with the last good scenario). */
-  constructor(stop: () => void) {
+  /** The largest scenario (in cells) the user agreed to open: its edits are not asked again. */
+  private agreed = 0;
+
+  /**
+   * `stop` ends the opening (the worker is restarted with the last good scenario); `declined`
+   * follows a "no" to opening a scenario that needs much memory (nothing was started).
+   */
+  constructor(
+    stop: () => void,
+    private readonly declined: () => void,
+  ) {
     byId('opening-stop').addEventListener('click', () => {
       this.failed();
       stop();
@@ -48,9 +75,43 @@ export class LargeOpening {
    * for when the worker has loaded it (it gets the worker's canonical JSON). False for a scenario
    * the main thread may validate itself.
    */
-  begin(json: string, opened: (json: string) => void): boolean {
-    this.cells = core.estimateCells(json);
-    if (this.cells <= LARGE_CELLS) return false;
+  begin(json: string, opened: (json: string) => void, start: () => void): boolean {
+    const cells = core.estimateCells(json);
+    if (cells <= LARGE_CELLS) return false;
+    const mb = memoryEstimateMb(cells);
+    if (mb > ASK_ABOVE_MB && cells > this.agreed) {
+      this.ask(cells, mb, () => {
+        this.agreed = cells;
+        this.open(cells, opened);
+        start();
+      });
+      return true;
+    }
+    this.open(cells, opened);
+    start();
+    return true;
+  }
+
+  /**
+   * Asks before opening a scenario estimated to need more than ASK_ABOVE_MB: the estimate, and
+   * two answers. Declined (or dismissed), nothing is opened and the scenario in view stays.
+   */
+  private ask(cells: number, mb: number, agree: () => void) {
+    const dialog = byId<HTMLDialogElement>('large-ask');
+    byId('large-ask-text').textContent =
+      `This scenario is large: ${cells.toLocaleString('en-US')} cells. Kumiki estimates it needs about ${Math.round(mb).toLocaleString('en-US')} MB of memory, on top of about ${PAGE_MB} MB for the page itself. On a small device (a classroom Chromebook, a phone) that can close the tab.`;
+    dialog.returnValue = '';
+    const answered = () => {
+      dialog.removeEventListener('close', answered);
+      if (dialog.returnValue === 'open') agree();
+      else this.declined();
+    };
+    dialog.addEventListener('close', answered);
+    dialog.showModal();
+  }
+
+  private open(cells: number, opened: (json: string) => void) {
+    this.cells = cells;
     this.pending = opened;
     this.started = performance.now();
     this.show();

@@ -1,13 +1,15 @@
 // The "Record…" dialog: its form, its progress bar, its Cancel button, the file's name and its
 // download. The recording itself (stepping, drawing, encoding) happens in the simulation worker
 // (web/sim/encode.ts), where the view is drawn; the dialog receives the finished file.
-import { Cancelled, frameCount, type Recorded, type RecordFormat, type RecordSettings, type Progress } from '../sim/record';
-import { byId, download } from './dom';
+import { Cancelled, frameCount, type LegendEntry, type Recorded, type RecordFormat, type RecordSettings, type Progress } from '../sim/record';
+import { byId, displayText, download } from './dom';
 
 /** What the dialog needs from the page. */
 export interface RecordPage {
-  /** The scenario's name and its seed, for the file name. */
+  /** The scenario's name and its seed, for the file name and the title overlay. */
   describe(): { name: string; seed: number };
+  /** The colour legend of the model in view, for the legend overlay. */
+  legend(): LegendEntry[];
   /** Draws at `scale` times the usual resolution (1 restores it). */
   setScale(scale: number): void;
   /** Records in the worker; rejects with Cancelled as soon as `signal` aborts. */
@@ -26,10 +28,13 @@ export function sanitizeName(name: string): string {
   return clean || 'kumiki';
 }
 
-/** `amas-L_seed1_steps0-400.webm`: the scenario, the seed and the steps the file shows. */
-export function recordingName(name: string, seed: number, from: number, to: number, format: RecordFormat): string {
+/**
+ * `amas-L_seed1_steps0-400.webm`: the scenario, the seed and the steps the file shows; a 2x
+ * recording ends in `_2x` (`amas-L_seed1_step0_2x.png`), so the two never take the same name.
+ */
+export function recordingName(name: string, seed: number, from: number, to: number, format: RecordFormat, scale = 1): string {
   const range = from === to ? `step${from}` : `steps${from}-${to}`;
-  return `${sanitizeName(name)}_seed${seed}_${range}.${format}`;
+  return `${sanitizeName(name)}_seed${seed}_${range}${scale === 1 ? '' : `_${scale}x`}.${format}`;
 }
 
 /** Records as set, offers the file for download, and resolves with its name. */
@@ -39,7 +44,7 @@ async function record(page: RecordPage, s: RecordSettings, signal: AbortSignal, 
   page.setScale(s.scale);
   try {
     const { blob, from, to } = await page.record(s, signal, progress);
-    const file = recordingName(name, seed, from, to, s.format);
+    const file = recordingName(name, seed, from, to, s.format, s.scale);
     download(file, blob, blob.type);
     return file;
   } finally {
@@ -105,6 +110,11 @@ export function setupRecordDialog(page: RecordPage) {
       every: Math.max(1, Math.floor(Number(every.value))),
       scale: Number(scale.value) === 2 ? 2 : 1,
       fps: Math.min(60, Math.max(1, Number(fps.value))),
+      overlays: {
+        step: byId<HTMLInputElement>('record-overlay-step').checked,
+        title: byId<HTMLInputElement>('record-overlay-title').checked ? displayText(page.describe().name, 100) : null,
+        legend: byId<HTMLInputElement>('record-overlay-legend').checked ? page.legend() : null,
+      },
     };
     running = new AbortController();
     start.disabled = true;

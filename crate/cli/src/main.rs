@@ -117,9 +117,17 @@ enum Command {
         #[command(flatten)]
         jobs: Jobs,
     },
+    /// Every metric a model reports: model, name, unit and meaning, tab-separated, one a line
+    Metrics {
+        /// Only this model's metrics
+        model: Option<String>,
+        /// One JSON object per metric and line instead
+        #[arg(long)]
+        json: bool,
+    },
     /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema), the TypeScript types
-    /// generated from them and from the records the core hands the page (DIR/web/*.gen.ts) and
-    /// the limits table of DIR/docs/scenario-format.md
+    /// generated from them and from the records the core hands the page (DIR/web/*.gen.ts), the
+    /// metric tables (DIR/docs/metrics.md) and the limits table of DIR/docs/scenario-format.md
     Schema {
         /// Compare the schemas under DIR with what this build derives; fail if they differ
         #[arg(long)]
@@ -443,6 +451,26 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
             eprintln!("kumiki: {tally}");
             if strict && !tally.all_met() {
                 return Err(Failure::Run(format!("--strict: {tally}")));
+            }
+        }
+        Some(Command::Metrics { model, json }) => {
+            let models: Vec<&str> = match &model {
+                Some(m) => vec![kumiki_core::models::entry(m)?.name],
+                None => kumiki_core::models::MODELS.iter().map(|m| m.name).collect(),
+            };
+            for m in models {
+                for info in kumiki_core::models::metric_table(m)? {
+                    match json {
+                        true => writeln!(
+                            out,
+                            "{}",
+                            serde_json::json!({"model": m, "name": info.name, "unit": info.unit, "about": info.about})
+                        )?,
+                        false => {
+                            writeln!(out, "{m}\t{}\t{}\t{}", info.name, info.unit, info.about)?
+                        }
+                    }
+                }
             }
         }
         Some(Command::Schema { check, root }) => schema(check, &root)?,

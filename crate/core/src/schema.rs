@@ -238,9 +238,12 @@ pub const TYPESCRIPT_FILE: &str = "web/scenario.gen.ts";
 /// Where the TypeScript types of the records the core hands the page live (see [`contract`]).
 pub const CONTRACT_FILE: &str = "web/contract.gen.ts";
 
+/// Where the generated table of every model's metrics lives, from the repository root.
+pub const METRICS_FILE: &str = "docs/metrics.md";
+
 /// The published files, as paths from the repository root, and their text: the schemas (pretty
 /// JSON with a final newline), the TypeScript types of the scenario schema and those of the
-/// records that cross from Rust to the page.
+/// records that cross from Rust to the page, and the metric tables.
 pub fn files() -> Vec<(String, String)> {
     let pretty = |v: &Value| serde_json::to_string_pretty(v).expect("a schema serialises") + "\n";
     let scenario = scenario();
@@ -249,6 +252,7 @@ pub fn files() -> Vec<(String, String)> {
         (format!("{DIR}/{EXPERIMENT_FILE}"), pretty(&experiment())),
         (TYPESCRIPT_FILE.to_string(), typescript(&scenario)),
         (CONTRACT_FILE.to_string(), contract_typescript()),
+        (METRICS_FILE.to_string(), crate::models::metrics_markdown()),
     ]
 }
 

@@ -60,6 +60,13 @@ pub fn version() -> String {
     PROGRAM_VERSION.to_string()
 }
 
+/// A model's metric table: `[{name, unit, about}, ...]` in the model's order (see
+/// `kumiki_core::models::MetricInfo`); an unknown model is an error that lists the known ones.
+#[wasm_bindgen]
+pub fn metric_table(model: &str) -> Result<JsValue, JsError> {
+    to_js(models::metric_table(model).map_err(js_err)?)
+}
+
 /// The built-in scenarios: name, model, title, description.
 #[wasm_bindgen]
 pub fn presets() -> Result<JsValue, JsError> {
@@ -92,6 +99,16 @@ pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
     Scenario::from_json(json)
         .map(|s| s.to_json_pretty())
         .map_err(js_err)
+}
+
+/// The whole of what is wrong with scenario JSON, or "" when nothing is. The errors the other
+/// calls throw are brief (under 200 characters); this is the rest, for whoever asks.
+#[wasm_bindgen]
+pub fn scenario_problem_in_full(json: &str) -> String {
+    Scenario::from_json(json)
+        .err()
+        .map(|e| format!("{e:#}"))
+        .unwrap_or_default()
 }
 
 /// The share-link payload (the part after `#`) for scenario JSON.

@@ -1,0 +1,99 @@
+// The accessibility audit: axe-core (WCAG 2.1 A and AA, and its best practices) on every tab and
+// every dialog of the page, the first screen and the tour included, must find no serious or
+// critical violation. axe is evaluated in the page by the test driver (the page's CSP allows no
+// injected script, and needs not to).
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { describe, test } from 'node:test';
+import { loadWasm, openPage, session } from './harness.mjs';
+
+const require = createRequire(import.meta.url);
+const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
+const wasm = loadWasm();
+const s = session();
+
+/** Serious and critical violations on the page as it stands, one line each. */
+async function audit(page, where) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
+  const violations = await page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
+      resultTypes: ['violations'],
+    });
+    return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => ({ id: v.id, impact: v.impact, targets: v.nodes.map((n) => n.target.join(' ')).slice(0, 5) }));
+  });
+  return violations.map((v) => `${where}: ${v.id} (${v.impact}) at ${v.targets.join(', ')}`);
+}
+
+describe('accessibility audit (axe-core)', () => {
+  test('no serious or critical violation on the first screen, the tour, every tab and every dialog', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url, { keepWelcome: true });
+    const found = [];
+    await page.waitForSelector('#welcome[open]');
+    found.push(...(await audit(page, 'first screen')));
+    await page.click('#welcome-tour');
+    await page.waitForSelector('#tour:not([hidden])');
+    found.push(...(await audit(page, 'tour')));
+    await page.click('#tour-close');
+
+    for (const tab of ['run', 'scenario', 'experiments', 'about']) {
+      await page.click(`#tab-${tab}`);
+      await page.waitForSelector(`#panel-${tab}:not([hidden])`);
+      if (tab === 'scenario') await page.click('.json-editor summary');
+      found.push(...(await audit(page, `${tab} tab`)));
+    }
+
+    await page.click('#tab-run');
+    for (const [button, dialog] of [
+      ['#open-gallery', '#gallery'],
+      ['#open-lessons', '#gallery'],
+      ['#open-record', '#record'],
+    ]) {
+      await page.click(button);
+      await page.waitForSelector(`${dialog}[open]`);
+      found.push(...(await audit(page, `${dialog} dialog (from ${button})`)));
+      await page.keyboard.press('Escape');
+      await page.waitForSelector(dialog, { state: 'hidden' });
+    }
+    await page.click('#tab-scenario');
+    await page.click('#make-exercise');
+    await page.waitForSelector('#exercise-editor[open]');
+    found.push(...(await audit(page, 'exercise editor dialog')));
+    await page.keyboard.press('Escape');
+    await page.waitForSelector('#exercise-editor', { state: 'hidden' });
+    assert.deepEqual(found, []);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test("every model's run and scenario tabs pass (each has its own editors, tools and legend)", async () => {
+    const found = [];
+    const models = new Map();
+    for (const p of wasm.presets()) if (!models.has(p.model)) models.set(p.model, p.name);
+    assert.equal(models.size, 4);
+    for (const [model, preset] of models) {
+      const { page, context } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
+      found.push(...(await audit(page, `${model} run tab`)));
+      await page.click('#tab-scenario');
+      await page.waitForSelector('#panel-scenario:not([hidden])');
+      for (const summary of await page.$$('#panel-scenario details:not([open]) > summary')) await summary.click();
+      found.push(...(await audit(page, `${model} scenario tab`)));
+      await context.close();
+    }
+    assert.deepEqual(found, []);
+  });
+
+  test('a shared link, its introduction and a lesson with its exercise panel pass too', async () => {
+    const lesson = wasm.lessons()[0].name;
+    const link = wasm.encode_link(wasm.lesson_json(lesson));
+    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`, { keepIntro: true });
+    await page.waitForSelector('#intro[open]');
+    const found = await audit(page, 'shared link introduction');
+    await page.click('#intro button.primary');
+    await page.waitForSelector('#exercise:not([hidden])');
+    found.push(...(await audit(page, 'lesson')));
+    assert.deepEqual(found, []);
+    await context.close();
+  });
+});

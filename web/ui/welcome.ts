@@ -1,0 +1,134 @@
+// The first screen and the tour. A first visit (no link, nothing seen before) opens with what
+// Kumiki is and three ways in: watch a paper's experiment, take a lesson, build your own; from
+// there a short tour of five stops points at the parts of the page. "Start here" at the top
+// brings both back. The tour is a non-modal box: the page stays usable, each stop marks its part
+// of the page, and Esc or "End the tour" leaves it.
+import { byId } from './dom';
+
+/** Where the three ways in lead. */
+export interface WelcomeActions {
+  watch(): void;
+  lesson(): void;
+  build(): void;
+}
+
+interface Stop {
+  /** The element the stop points at. */
+  target: string;
+  title: string;
+  text: string;
+}
+
+export const TOUR: Stop[] = [
+  {
+    target: 'canvas-wrap',
+    title: 'The view',
+    text: 'The lattice and its robots. Drag to pan, the wheel or a pinch zooms; with the view focused, C shows a cursor for the keyboard. A click applies the tool chosen on the Run tab.',
+  },
+  {
+    target: 'transport',
+    title: 'Run it',
+    text: 'Play (Space), one step (→) and reset (R). The speed goes from 1 to 1,000 steps a second, or max. The seed fixes the randomness, so a run replays exactly.',
+  },
+  {
+    target: 'timeline-row',
+    title: 'Go back',
+    text: 'Drag the timeline to any step already reached, or press ← with the view focused; holding it scrubs.',
+  },
+  {
+    target: 'side-tabs',
+    title: 'The panels',
+    text: 'Run: live metrics, chart, overlays, click tools. Scenario: the shape, every parameter and the JSON. Experiments: many runs, plotted like the papers. About: what each paper claims and what Kumiki finds.',
+  },
+  {
+    target: 'ways-in',
+    title: 'Lessons, the gallery, sharing',
+    text: 'Lessons are short exercises on the papers; the gallery holds every built-in scenario. Copy link puts the whole scenario in the address, so whoever opens it gets the same run.',
+  },
+];
+
+export interface Welcome {
+  /** Opens the first screen. */
+  show(): void;
+  /** Starts the tour at its first stop. */
+  tour(): void;
+}
+
+export function setupWelcome(actions: WelcomeActions, seen: () => void): Welcome {
+  const dialog = byId<HTMLDialogElement>('welcome');
+  const box = byId('tour');
+  const back = byId<HTMLButtonElement>('tour-back');
+  const next = byId<HTMLButtonElement>('tour-next');
+  let at = -1;
+  let marked: HTMLElement | null = null;
+
+  function show() {
+    if (!dialog.open) dialog.showModal();
+  }
+
+  dialog.addEventListener('close', () => {
+    seen();
+    switch (dialog.returnValue) {
+      case 'watch':
+        actions.watch();
+        break;
+      case 'lesson':
+        actions.lesson();
+        break;
+      case 'build':
+        actions.build();
+        break;
+      case 'tour':
+        go(0);
+        break;
+    }
+    dialog.returnValue = '';
+  });
+
+  function mark(el: HTMLElement | null) {
+    marked?.classList.remove('tour-target');
+    marked = el;
+    marked?.classList.add('tour-target');
+  }
+
+  function go(i: number) {
+    if (i < 0 || i >= TOUR.length) {
+      end();
+      return;
+    }
+    at = i;
+    const stop = TOUR[i];
+    byId('tour-count').textContent = `Stop ${i + 1} of ${TOUR.length}`;
+    byId('tour-title').textContent = stop.title;
+    byId('tour-text').textContent = stop.text;
+    back.disabled = i === 0;
+    next.textContent = i === TOUR.length - 1 ? 'Done' : 'Next';
+    const target = byId(stop.target);
+    mark(target);
+    box.hidden = false;
+    box.dataset.stop = String(i);
+    target.scrollIntoView({ block: 'nearest' });
+    next.focus();
+  }
+
+  function end() {
+    at = -1;
+    mark(null);
+    box.hidden = true;
+    delete box.dataset.stop;
+    byId('open-welcome').focus();
+  }
+
+  back.addEventListener('click', () => go(at - 1));
+  next.addEventListener('click', () => go(at + 1));
+  byId('tour-close').addEventListener('click', end);
+  box.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape') {
+      e.preventDefault();
+      end();
+    }
+  });
+  byId('open-welcome').addEventListener('click', show);
+
+  return { show, tour: () => go(0) };
+}
