@@ -82,6 +82,11 @@ mod tests {
         match name {
             "lesson-amas-robots" => vec![("robots", json!(5))],
             "lesson-amas-collisions" => vec![("collision", json!("relay"))],
+            // The T on its stem: two corners share the traffic of the L's one.
+            "lesson-amas-heatmap" => vec![(
+                "target",
+                json!("##############\n##############\n##############\n##############\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n"),
+            )],
             "lesson-fracta-irritation" => vec![("I_th", json!(10.0))],
             // The triangle with its spare, as fracta-repair starts.
             "lesson-fracta-spare" => {

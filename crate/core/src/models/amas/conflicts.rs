@@ -68,6 +68,15 @@ impl Amas {
 
     pub(super) fn collide(&mut self, r: usize, at: u32) {
         self.collisions += 1;
+        *self.collision_cells.entry(at).or_insert(0) += 1;
+        let row = at / self.w as u32;
+        if row == self.corner_row || row == self.corner_row + 1 {
+            self.corner_collisions += 1;
+        } else if row < self.corner_row {
+            self.above_corner_collisions += 1;
+        } else if row as usize >= self.supply_top {
+            self.supply_collisions += 1;
+        }
         self.robots[r].give_way = true;
         self.robots[r].busy = self.p.penalty - 1;
         self.events.push(Event {

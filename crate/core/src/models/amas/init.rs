@@ -1,7 +1,7 @@
 //! Initialisation (ODD "Initialisation"): the lattice, the supply row full of modules, the
 //! robots on distinct supply modules, the field before any update, and the bounds of footnote 2.
 
-use std::collections::VecDeque;
+use std::collections::{BTreeMap, VecDeque};
 
 use super::field::{Field, FAR};
 use super::spec;
@@ -125,6 +125,10 @@ impl Amas {
             path_bound,
             corner_row,
             corner_relays: 0,
+            collision_cells: BTreeMap::new(),
+            corner_collisions: 0,
+            above_corner_collisions: 0,
+            supply_collisions: 0,
             events: Vec::new(),
         };
         m.recount();
@@ -180,13 +184,14 @@ impl Amas {
 }
 
 /// The row of the corner of figure 24: going up from the supply, the first row of `target`
-/// holding fewer cells than the row below it; the top row of the target if none does.
+/// holding fewer or more cells than the row below it (where an L or a T turns, standing on its
+/// foot or on its stem); the top row of the target if none does.
 fn corner_row(target: &[bool], w: usize, sh: usize) -> u32 {
     let count = |y: usize| target[y * w..(y + 1) * w].iter().filter(|&&c| c).count();
     let top = (0..sh).find(|&y| count(y) > 0).unwrap_or(0);
     (top..sh.saturating_sub(1))
         .rev()
-        .find(|&y| count(y) < count(y + 1))
+        .find(|&y| count(y) != count(y + 1))
         .unwrap_or(top) as u32
 }
 

@@ -3,6 +3,7 @@
 //! `docs/models/amas.md` for the ODD description and every interpretation made.
 
 use std::borrow::Cow;
+use std::collections::BTreeMap;
 
 use serde_json::{Map, Value};
 
@@ -159,6 +160,14 @@ pub struct Amas {
     /// reach the narrower part), or its top row if it never narrows.
     corner_row: u32,
     corner_relays: u64,
+    /// Collisions per cell (the cell a penalised robot wanted): the heat map. Only cells that
+    /// saw a collision are kept, so a large lattice pays nothing per cell for it.
+    collision_cells: BTreeMap<u32, u32>,
+    /// Collisions on the corner row or the row below it (figure 24's corner), above those
+    /// rows, and on the supply rows.
+    corner_collisions: u64,
+    above_corner_collisions: u64,
+    supply_collisions: u64,
     events: Vec<Event>,
 }
 
@@ -220,6 +229,12 @@ impl Model for Amas {
         f("collisions", Metric::Count(self.collisions));
         f("relays", Metric::Count(self.relays));
         f("corner_relays", Metric::Count(self.corner_relays));
+        f("corner_collisions", Metric::Count(self.corner_collisions));
+        f(
+            "above_corner_collisions",
+            Metric::Count(self.above_corner_collisions),
+        );
+        f("supply_collisions", Metric::Count(self.supply_collisions));
         f("lower_bound", Metric::Count(self.lower_bound));
         f("path_bound", Metric::Count(self.path_bound));
         f("built", Metric::Real(self.built_fraction()));

@@ -15,7 +15,7 @@ use crate::models::{Action, Agent, FieldInfo, Layout, LegendEntry, ToolInfo};
 
 impl Amas {
     pub(super) fn describe_layout(&self) -> Layout {
-        let fields = match self.p.field {
+        let mut fields = match self.p.field {
             FieldKind::Continuous => vec![FieldInfo {
                 name: "potential".into(),
                 label: "potential (eq. 1): 1 at the growth front, 0 at the supply".into(),
@@ -34,6 +34,12 @@ impl Amas {
                 },
             ],
         };
+        fields.push(FieldInfo {
+            name: "collisions".into(),
+            label: "collisions per cell so far (the cell a robot wanted when it had to wait)"
+                .into(),
+            arrows: false,
+        });
         Layout {
             lattice: LatticeKind::Square,
             dims: [self.w as u32, self.h as u32, 1],
@@ -100,6 +106,18 @@ impl Amas {
 
     pub(super) fn field_values(&self, name: &str) -> Option<Cow<'_, [f32]>> {
         let on = |i: usize| self.state[i] & MODULE != 0;
+        if name == "collisions" {
+            // Modules show 0 until a collision happens on them; other cells show their count
+            // only once a collision happened there (a contested placement site), so the empty
+            // air stays undrawn.
+            let mut heat: Vec<f32> = (0..self.state.len())
+                .map(|i| if on(i) { 0.0 } else { f32::NAN })
+                .collect();
+            for (&i, &c) in &self.collision_cells {
+                heat[i as usize] = c as f32;
+            }
+            return Some(Cow::Owned(heat));
+        }
         match (&self.field, name) {
             (Field::Continuous { p, .. }, "potential") => Some(Cow::Owned(
                 p.iter()
@@ -185,6 +203,8 @@ impl Amas {
                 m.insert("to_front".into(), show(to_front[i]));
             }
         }
+        let collisions = self.collision_cells.get(&(i as u32)).copied().unwrap_or(0);
+        m.insert("collisions".into(), collisions.into());
         if s & REMOVE != 0 {
             m.insert("removable".into(), self.removable(i).into());
         }

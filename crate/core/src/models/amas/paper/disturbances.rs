@@ -168,11 +168,11 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         "Holds if the fewest disturbances tried cost less than 5 % of the undisturbed median. \
          Undisturbed, the field is level across the square, each of the 28 robots starts on its \
          own supply module and builds one column, no robot meets another, and the run takes \
-         the bound's time: there is no slack to hide a lost module in. One removed module costs \
-         its column's robot an extra trip, and mixes the columns, so loaded and unloaded robots \
+         the bound's time. One removed module mixes the columns, so loaded and unloaded robots \
          meet head-on from then on: the cost jumps at the first disturbance, with either field \
-         and either rule, instead of staying flat up to a threshold. A flat start needs slack \
-         in the undisturbed run, which the setup of 5.3 (28 robots on a square 28 wide) does \
-         not leave.",
+         and either rule, instead of staying flat up to a threshold. Lack of slack does not \
+         explain it (the paper's own undisturbed run has no more slack than this one, and it \
+         found a threshold); what lets the paper's robots absorb the first disturbances is not \
+         found yet (docs/models/amas.md, interpretation 30).",
     ));
 }

@@ -122,6 +122,63 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
          edge, the T's in the middle, so robots pass one corner or two.",
     ));
 
+    // Where the collisions happen (the heat map's zones): the corner rows against the rest.
+    let mut text = Vec::new();
+    let mut ok = true;
+    let turned = |experiment: &str, field: &str, metric: &str| {
+        let mut sel = vec![("field", json!(field))];
+        if experiment == "amas-fig23-corner" {
+            sel.push(("collision", json!("token")));
+            sel.push(("robots", json!(10)));
+        }
+        r.stats(experiment, &sel, metric).mean
+    };
+    for (field, _) in FIELDS {
+        for shape in ["L", "T", "L upside down", "T upside down"] {
+            let m = |metric: &str| match shape {
+                "L upside down" => turned("amas-fig23-corner", field, metric),
+                "T upside down" => turned("amas-fig23-turned", field, metric),
+                _ => fig23(r, shape, field, "token", 10, metric).mean,
+            };
+            let all = m("collisions");
+            let corner = m("corner_collisions");
+            let above = m("above_corner_collisions");
+            let supply = m("supply_collisions");
+            let foot = all - corner - above - supply;
+            if shape == "L" {
+                ok &= corner > above && corner > foot && corner > supply;
+            }
+            let pct = |v: f64| 100.0 * v / all;
+            text.push(format!(
+                "{shape} {field}: {all:.1} per run, corner rows {corner:.1} ({:.0} %), above \
+                 them {above:.1} ({:.0} %), below them {foot:.1} ({:.0} %), supply row \
+                 {supply:.1} ({:.0} %)",
+                pct(corner),
+                pct(above),
+                pct(foot),
+                pct(supply)
+            ));
+        }
+    }
+    out.push(Finding::new(
+        "§5.2, fig. 23",
+        "Paths at the corner become the bottleneck in the L-shaped structure.",
+        format!(
+            "where the collisions happen, 10 robots, token rule (mean per run over 10 runs): {}",
+            text.join("; ")
+        ),
+        40 + 10 * 2 + r.rows("amas-fig23-turned").len(),
+        Verdict::from(ok),
+        "Each collision is recorded at the cell the waiting robot wanted (the page's collision \
+         heat map). The corner rows are the two rows where the shape turns: the lowest row whose \
+         width differs from the row below, and that row below (2 of the 12 rows). Holds if, on \
+         the L standing on its foot (figure 23's L), these two rows see more collisions than the \
+         rows above them, the rows below them and the supply row, each taken together, with \
+         both fields. The T, and both shapes upside down (stem on the supply: every module of \
+         the top is carried up the stem and round the corner), are shown beside it; where the \
+         rest of the collisions happen is discussed in docs/models/amas.md, interpretation 29.",
+    ));
+
     // Module relay prevents chains of collisions, the blackboard does not.
     let mut text = Vec::new();
     let mut ok = true;

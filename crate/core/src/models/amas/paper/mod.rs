@@ -21,6 +21,7 @@ pub const PAPER: Paper = Paper {
     experiments: &[
         "amas-fig23",
         "amas-fig23-corner",
+        "amas-fig23-turned",
         "amas-fig24",
         "amas-fig27",
         "amas-fig27-rules",

@@ -186,6 +186,9 @@ fn the_corner_is_the_row_where_the_target_narrows() {
     // A rectangle never narrows: its top row.
     let m = model(json!({"target": {"rect": [4, 3]}}));
     assert_eq!(m.corner_row, 0);
+    // The L upside down (stem on the supply) turns where it widens: the arm's lowest row.
+    let m = model(json!({"target": "######\n######\n##....\n##....\n##....\n"}));
+    assert_eq!(m.corner_row, 1);
     // Robots that stay on the supply never pass it; relays are counted where they happen.
     let mut m = model(json!({"robots": 3, "collision": "relay", "seed": 2}));
     assert_eq!(m.metrics()["never_past_corner"], json!(1.0));
@@ -194,4 +197,63 @@ fn the_corner_is_the_row_where_the_target_narrows() {
     assert!(m.metrics()["never_past_corner"].as_f64().unwrap() < 1.0);
     // Somebody placed the stem's modules.
     assert!(m.metrics()["corner_assemblers"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn the_heat_map_places_every_collision_at_the_cell_the_robot_wanted() {
+    for rule in ["token", "relay"] {
+        let mut m = model(json!({"robots": 6, "collision": rule, "field": "discrete"}));
+        let mut wanted = std::collections::BTreeMap::new();
+        while !m.completed() && m.steps < 20000 {
+            m.step();
+            for e in m.events().iter().filter(|e| e.kind == EV_COLLISION) {
+                *wanted.entry(e.cell).or_insert(0u32) += 1;
+            }
+        }
+        assert!(
+            m.collisions > 0,
+            "{rule}: six robots on the small L collide"
+        );
+        // The map holds each collision event's cell, once per collision.
+        assert_eq!(m.collision_cells, wanted, "{rule}");
+        let heat = m.field("collisions").unwrap();
+        for (i, v) in heat.iter().enumerate() {
+            let count = wanted.get(&(i as u32)).copied().unwrap_or(0);
+            if count > 0 || m.state[i] & MODULE != 0 {
+                assert_eq!(*v, count as f32, "{rule}: cell {i}");
+            } else {
+                assert!(
+                    v.is_nan(),
+                    "{rule}: cell {i} holds no module and saw no collision"
+                );
+            }
+        }
+        assert_eq!(
+            m.inspect(*wanted.keys().next().unwrap() as usize)["collisions"],
+            json!(wanted.values().next().unwrap())
+        );
+        // The zones split the collisions by row: corner rows, above, supply, and the rest below.
+        let by_row = |keep: &dyn Fn(u32) -> bool| -> u64 {
+            wanted
+                .iter()
+                .filter(|(&c, _)| keep(c / m.w as u32))
+                .map(|(_, &n)| u64::from(n))
+                .sum()
+        };
+        let corner = m.corner_row;
+        assert_eq!(
+            m.corner_collisions,
+            by_row(&|y| y == corner || y == corner + 1)
+        );
+        assert_eq!(m.above_corner_collisions, by_row(&|y| y < corner));
+        assert_eq!(
+            m.supply_collisions,
+            by_row(&|y| y > corner + 1 && y as usize >= m.supply_top)
+        );
+        assert!(m
+            .layout()
+            .fields
+            .iter()
+            .any(|f| f.name == "collisions" && !f.arrows));
+    }
 }
