@@ -19,6 +19,21 @@ pub const METRICS: &[MetricInfo] = &[
         "Times a robot was blocked by another robot in its way.",
     ),
     MetricInfo::new(
+        "corner_collisions",
+        "count",
+        "Collisions at the corner rows: the row where the shape changes width and the row below it.",
+    ),
+    MetricInfo::new(
+        "above_corner_collisions",
+        "count",
+        "Collisions above the corner rows, in the part of the shape past the corner.",
+    ),
+    MetricInfo::new(
+        "supply_collisions",
+        "count",
+        "Collisions on the supply rows, where robots pick up their modules.",
+    ),
+    MetricInfo::new(
         "relays",
         "count",
         "Modules handed from one robot to another instead of carried all the way (section 5.2).",
