@@ -74,11 +74,11 @@ impl Cubes {
     }
 
     /// Steps (i) to (iii) of section 4 for the unit at `p`: its reachable positions, their
-    /// differences, and its choice, `None` for staying where it is. Every rule chooses among
-    /// the same options, "no motion" (i = 0, D_0) and each reachable position (section 4.2);
-    /// the rules of section 5 replace only the probabilities of equations 7 and 8: the MRF
-    /// weighs them by exp(-D_i / T), random takes each alike, and steepest descent takes the
-    /// one of least difference ("always selected"), ties broken at random.
+    /// differences, and its choice, `None` for staying where it is. The MRF weighs "no motion"
+    /// (i = 0, D_0) and each reachable position by exp(-D_i / T) (section 4.2); steepest
+    /// descent takes the option of least difference among the same ("always selected"), ties
+    /// broken at random; random selection takes one of the reachable positions, each alike, so
+    /// a unit that can move does.
     pub(super) fn decide(&mut self, p: usize, temp: f64, s: &mut Scratch) -> Option<usize> {
         self.st.reachable(p, s);
         if s.moves.is_empty() {
@@ -86,7 +86,9 @@ impl Cubes {
         }
         let target = self.target[p];
         self.options.clear();
-        self.options.push((p as u32, self.d0(p)));
+        if self.selection != Selection::Random {
+            self.options.push((p as u32, self.d0(p)));
+        }
         for m in &s.moves {
             let d = self.difference(target, &self.st.profile_after(p, m.dest as usize));
             self.options.push((m.dest, d));

@@ -113,7 +113,7 @@ fn rules(results: &Results, exp: &str, figure: &str, start: &str, end: u64) -> V
             kumiki: format!("D per unit at step {end}: {}; lowest mean over the run {}; touched the goal in {rr}/{rn} runs, at it at step {end} in {re}/{rn}", rnd.short(2), reproduce::fmt(rnd_least, 2)),
             runs: rn,
             verdict: Verdict::from(rnd_least > 0.9 * mrf0.mean && rnd.mean > mrf.mean),
-            note: "Holds when the mean D never falls below 90 % of its start and ends above MRF's. A run that touches the goal leaves it again at once (random selection takes staying and each reachable position alike): a run stopped at the goal would count a passing touch as a convergence and pull the mean down.".into(),
+            note: "Holds when the mean D never falls below 90 % of its start and ends above MRF's. A run that touches the goal leaves it again at its next move (random selection always takes a reachable position): a run stopped at the goal would count a passing touch as a convergence and pull the mean down.".into(),
         },
     ]
 }

@@ -16,7 +16,7 @@ use crate::shape::{self, Grid3};
 pub enum Selection {
     /// Equations 7 and 8: P_i ∝ exp(-D_i / T), T = c / log(1 + t).
     Mrf,
-    /// Every option (staying included) equally likely.
+    /// Every reachable position equally likely (a unit that can move does).
     Random,
     /// The option of least difference, ties broken at random.
     Steepest,
