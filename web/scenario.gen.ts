@@ -232,6 +232,12 @@ export interface Cubes3dScenario {
   shape: string;
   /** t_stable of section 6: steps a unit stays under its target's threshold before it switches. */
   stable_steps: number;
+  /**
+   * With a single target, end the run when it is complete (every unit's D_0 is 0). False
+   * lets the units go on choosing after that, as the figures' fixed-length runs of the
+   * comparison rules need.
+   */
+  stop_at_goal?: boolean;
   /** The targets, the first one worked toward first (section 6 switches between them). */
   targets: TargetSpec[];
   /** The scenario format version; older versions are migrated when read. */
@@ -317,7 +323,7 @@ export interface FractaScenario {
   name: string;
   /**
    * No motion encloses empty cells (a region of up to 7 empty cells cut off from the
-   * lattice's edge).
+   * lattice's edge). Off by default: the paper states no such rule.
    */
   no_holes: boolean;
   /** How lower-priority goal statements count in the difference. */

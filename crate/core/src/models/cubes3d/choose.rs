@@ -31,17 +31,6 @@ impl Cubes {
         self.arrived.clear();
         self.deferred.clear();
         let want = self.movers as usize;
-        if self.selection == Selection::Steepest {
-            while self.arrived.len() < want {
-                let Some((p, dest)) = self.steepest(&order, s) else {
-                    break;
-                };
-                self.do_move(p, dest);
-                self.arrived.push(dest as u32);
-            }
-            self.order = order;
-            return;
-        }
         let n = order.len();
         for k in 0..n {
             if self.arrived.len() == want {
@@ -84,41 +73,12 @@ impl Cubes {
         self.order = order;
     }
 
-    /// The steepest-descent baseline of section 5: of all the reachable positions of the units
-    /// that may move (and are far enough from this step's movers), the one with the least
-    /// difference, ties broken at random. A unit takes it whether or not it is better than
-    /// staying: the rule selects a reachable position.
-    pub(super) fn steepest(&mut self, units: &[u32], s: &mut Scratch) -> Option<(usize, usize)> {
-        let mut best = None;
-        let mut least = f64::INFINITY;
-        let mut ties = 0u32;
-        for &p in units {
-            let p = p as usize;
-            if !self.eligible(p) || !self.far_from_movers(p) {
-                continue;
-            }
-            self.st.reachable(p, s);
-            for m in &s.moves {
-                let dest = m.dest as usize;
-                let d = self.difference(self.target[p], &self.st.profile_after(p, dest));
-                if d < least {
-                    (least, ties, best) = (d, 1, Some((p, dest)));
-                } else if d == least {
-                    ties += 1;
-                    if self.rng.below(ties) == 0 {
-                        best = Some((p, dest));
-                    }
-                }
-            }
-        }
-        best
-    }
-
     /// Steps (i) to (iii) of section 4 for the unit at `p`: its reachable positions, their
-    /// differences, and its choice, `None` for staying where it is. The MRF rule weighs
-    /// staying (D_0, "no motion" as i = 0) against every position; the random rule of section
-    /// 5 selects a reachable position, so a unit that can move does. (Steepest descent is
-    /// [`Cubes::steepest`].)
+    /// differences, and its choice, `None` for staying where it is. The MRF weighs "no motion"
+    /// (i = 0, D_0) and each reachable position by exp(-D_i / T) (section 4.2); steepest
+    /// descent takes the option of least difference among the same ("always selected"), ties
+    /// broken at random; random selection takes one of the reachable positions, each alike, so
+    /// a unit that can move does.
     pub(super) fn decide(&mut self, p: usize, temp: f64, s: &mut Scratch) -> Option<usize> {
         self.st.reachable(p, s);
         if s.moves.is_empty() {
@@ -126,7 +86,7 @@ impl Cubes {
         }
         let target = self.target[p];
         self.options.clear();
-        if self.selection == Selection::Mrf {
+        if self.selection != Selection::Random {
             self.options.push((p as u32, self.d0(p)));
         }
         for m in &s.moves {
@@ -140,13 +100,20 @@ impl Cubes {
             .map(|o| o.1)
             .fold(f64::INFINITY, f64::min);
         self.weights.clear();
-        let pick = if self.selection == Selection::Mrf {
-            for o in &self.options {
-                self.weights.push(math::exp(-(o.1 - least) / temp));
+        let pick = match self.selection {
+            Selection::Mrf => {
+                for o in &self.options {
+                    self.weights.push(math::exp(-(o.1 - least) / temp));
+                }
+                self.rng.weighted(&self.weights).unwrap_or(0)
             }
-            self.rng.weighted(&self.weights).unwrap_or(0)
-        } else {
-            self.rng.index(n)
+            Selection::Random => self.rng.index(n),
+            Selection::Steepest => {
+                for o in &self.options {
+                    self.weights.push(if o.1 == least { 1.0 } else { 0.0 });
+                }
+                self.rng.weighted(&self.weights).unwrap_or(0)
+            }
         };
         let dest = self.options[pick].0 as usize;
         (dest != p).then_some(dest)

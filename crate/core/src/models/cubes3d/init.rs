@@ -94,6 +94,8 @@ impl Cubes {
             floor_z: PAD as i32,
             light,
             stable_steps: spec.stable_steps,
+            stop_at_goal: spec.stop_at_goal,
+            reached: None,
             max_units,
             switches: 0,
             near2,
@@ -118,6 +120,9 @@ impl Cubes {
             model.stable.push(0);
         }
         model.recompute_all();
+        if model.targets.len() == 1 && model.zero == model.units.len() {
+            model.reached = Some(0);
+        }
         model.start_light = model.light_position();
         model
     }

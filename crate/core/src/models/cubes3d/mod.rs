@@ -54,7 +54,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
-    model_version: 2,
+    model_version: 3,
     metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Cubes3d),
     #[cfg(feature = "schema")]
@@ -119,6 +119,10 @@ pub struct Cubes {
     floor_z: i32,
     light: Option<usize>,
     stable_steps: u32,
+    /// End the run when the single target is complete (`stop_at_goal`).
+    stop_at_goal: bool,
+    /// The first step after which the single target was complete, if it has been.
+    reached: Option<u64>,
     /// The most units the structure may grow to by added units.
     max_units: usize,
     /// Target switches made by units, all together.
@@ -167,6 +171,8 @@ impl Model for Cubes {
         self.steps += 1;
         if self.targets.len() > 1 {
             self.switch_targets();
+        } else if self.reached.is_none() && self.zero == self.units.len() {
+            self.reached = Some(self.steps);
         }
     }
 
@@ -175,7 +181,7 @@ impl Model for Cubes {
     }
 
     fn completed(&self) -> bool {
-        self.targets.len() == 1 && self.zero == self.units.len()
+        self.stop_at_goal && self.targets.len() == 1 && self.zero == self.units.len()
     }
 
     fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric)) {
@@ -196,6 +202,7 @@ impl Model for Cubes {
             h.u32(s);
         }
         h.u64(self.switches);
+        h.u64(self.reached.map_or(0, |s| s + 1));
         h.u64(self.moves);
     }
 

@@ -16,7 +16,7 @@ use crate::shape::{self, Grid3};
 pub enum Selection {
     /// Equations 7 and 8: P_i ∝ exp(-D_i / T), T = c / log(1 + t).
     Mrf,
-    /// Every option (staying included) equally likely.
+    /// Every reachable position equally likely (a unit that can move does).
     Random,
     /// The option of least difference, ties broken at random.
     Steepest,
@@ -88,6 +88,11 @@ pub struct Spec {
     #[serde(default = "default_stable_steps")]
     #[schemars(range(min = 1))]
     pub(super) stable_steps: u32,
+    /// With a single target, end the run when it is complete (every unit's D_0 is 0). False
+    /// lets the units go on choosing after that, as the figures' fixed-length runs of the
+    /// comparison rules need.
+    #[serde(default = "yes", skip_serializing_if = "is_yes")]
+    pub(super) stop_at_goal: bool,
     /// Model version 1 weighted its light-seeking term by this factor (a form the paper does not
     /// give; see the docs' Interpretations). Every link made then carries it, so it is still
     /// read, and ignored: such a link opens with the notice that results may differ.
@@ -329,6 +334,12 @@ fn default_margin() -> u32 {
 }
 fn default_stable_steps() -> u32 {
     30
+}
+fn yes() -> bool {
+    true
+}
+fn is_yes(b: &bool) -> bool {
+    *b
 }
 
 pub(super) fn light_dir(text: &str) -> Result<usize> {

@@ -76,7 +76,7 @@ impl Cubes {
             fields,
             tools,
             cell_labels: true,
-            goal: self.targets.len() == 1,
+            goal: self.stop_at_goal && self.targets.len() == 1,
             chart: if self.light.is_some() {
                 "displacement"
             } else {
@@ -119,6 +119,12 @@ impl Cubes {
         );
         f("matched", Metric::Real(self.zero as f64 / n as f64));
         f("completed", Metric::Count(u64::from(self.zero == n)));
+        if self.targets.len() == 1 {
+            f(
+                "reached",
+                self.reached.map_or(Metric::Missing, Metric::Count),
+            );
+        }
         f("movable", Metric::Count(self.movable.len() as u64));
         f("connectivity_checks", Metric::Count(self.scratch.checks));
         f(

@@ -58,7 +58,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
-    model_version: 4,
+    model_version: 5,
     metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Fracta),
     #[cfg(feature = "schema")]

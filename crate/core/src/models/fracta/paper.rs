@@ -57,6 +57,9 @@ fn findings(r: &Results) -> Vec<Finding> {
 /// The depth the breadth-first search of the fewest repair motions goes to.
 const SEARCH_LIMIT: usize = 6;
 
+/// Steps after a cut-off within which a traced repair must finish.
+const HELD_BACK_LIMIT: u64 = 2000;
+
 /// Steps after a cut-off within which [`start`] looks for the first motion.
 const FIRST_MOTION_LIMIT: u64 = 200;
 
@@ -120,6 +123,39 @@ fn start(unit: u64) -> (String, Begins) {
             first.wait
         ),
         begins,
+    )
+}
+
+/// How every assembly from two lines begins (nothing is random before the first motion).
+fn assembly_start() -> String {
+    let Some(first) = search::first_motion_of_assembly(FIRST_MOTION_LIMIT) else {
+        return format!("No unit moves in the first {FIRST_MOTION_LIMIT} steps.");
+    };
+    let units = first
+        .improving
+        .iter()
+        .zip(&first.differences)
+        .map(|(u, d)| format!("{u} ({d})"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let activated = if first.improving_activated {
+        "equation 3 activates one of them"
+    } else {
+        "equation 3 activates none of them: their difference is below the mean, and x, the \
+         estimate of the difference around them, rises above it from the first step"
+    };
+    let how = if first.by_irritation {
+        ", made by units whose irritation fired"
+    } else {
+        ""
+    };
+    format!(
+        "At the start the units with a roll that lowers the summed difference are {units} \
+         (unit (difference); the structure's mean is {}); {activated}. The first motion comes \
+         {} steps in{how}, the same in every seed, so the shortest assembly is that wait plus \
+         the motions.",
+        fmt(first.mean_difference, 2),
+        first.wait
     )
 }
 
@@ -197,12 +233,12 @@ fn assembly(r: &Results) -> Vec<Finding> {
                 "fracta-triangle10 (two rows of 6 and 5), seeds 1 to 1000, capped at 2000 \
                  steps; a run counts when every unit matches a statement exactly, which for 11 \
                  units only the triangle with its spare beside a corner does (checked over 300 \
-                 seeds in the tests). No motion closes a ring round an empty cell \
-                 (`no_holes`). Without that rule (fracta-rings, the same seeds) {} runs \
-                 assembled. {} With it: {}",
+                 seeds in the tests). {} The paper states no rule against closing a ring \
+                 round empty cells; with the `no_holes` rule of earlier rounds, which forbids \
+                 it (fracta-rings, the same seeds), {} runs assembled. {}",
+                failures(r, EXP, &[]),
                 ratio(&rings),
-                failures(r, "fracta-rings", &[]),
-                failures(r, EXP, &[])
+                failures(r, "fracta-rings", &[])
             ),
         },
         Finding {
@@ -221,14 +257,15 @@ fn assembly(r: &Results) -> Vec<Finding> {
                     self-assembly from two lines)."
                 .into(),
             kumiki: format!(
-                "shortest {} steps; 5th percentile {}, 10th percentile {}",
+                "shortest {} steps, in {} runs; 5th percentile {}, 10th percentile {}",
                 fmt(s.min, 0),
+                steps.iter().filter(|&&v| v == s.min).count(),
                 fmt(percentile(&steps, 0.05), 1),
                 fmt(percentile(&steps, 0.10), 1)
             ),
             runs: s.n,
             verdict: Verdict::NotStated,
-            note: "Completed runs of fracta-assembly.".into(),
+            note: format!("Completed runs of fracta-assembly. {}", assembly_start()),
         },
     ]
 }
@@ -246,8 +283,25 @@ fn repair(r: &Results) -> Vec<Finding> {
             )
         })
         .collect();
+    let held_back: Vec<Option<(u64, u64)>> = FAULTS
+        .iter()
+        .map(|&(unit, _)| search::held_back_steps(unit, HELD_BACK_LIMIT))
+        .collect();
+    let held_text = |h: &Option<(u64, u64)>| match *h {
+        Some((steps, held)) => format!(
+            "Traced step by step (the preset's seed), the repair takes {steps} steps after the \
+             cut-off; in {held} \
+             of them a unit had a motion that lowers the summed difference and no such unit \
+             was activated."
+        ),
+        None => format!(
+            "The traced repair (the preset's seed) did not finish in {HELD_BACK_LIMIT} steps."
+        ),
+    };
     let mut out = Vec::new();
-    for ((unit, role), (fewest, (begins, _))) in FAULTS.into_iter().zip(&analysed) {
+    for (((unit, role), (fewest, (begins, _))), held) in
+        FAULTS.into_iter().zip(&analysed).zip(&held_back)
+    {
         let filter: [(&str, Value); 1] = [("disturbances.0.unit", json!(unit))];
         let done = r.values(EXP, &filter, "completed");
         let s = r.stats(EXP, &filter, "repair_steps");
@@ -274,7 +328,8 @@ fn repair(r: &Results) -> Vec<Finding> {
                  step), after which the units measure themselves against the first priority, \
                  the triangle (section 3.3). The fewest motions are a breadth-first search \
                  over the model's own motions, one unit at a time, from the 10 units the \
-                 cut-off leaves. {begins} {}",
+                 cut-off leaves. {begins} {} {}",
+                held_text(held),
                 failures(r, EXP, &filter)
             ),
         });
@@ -313,6 +368,20 @@ fn repair(r: &Results) -> Vec<Finding> {
             none.join(", ")
         ));
     }
+    let (steps, idle) = held_back
+        .iter()
+        .flatten()
+        .fold((0, 0), |(s, h), &(steps, held)| (s + steps, h + held));
+    waits.push(format!(
+        "Traced step by step at every position (the preset's seed), {idle} of the {steps} \
+         repair steps passed with a unit able to lower the summed difference and none of them \
+         activated. Equation 3 activates a unit only when its difference exceeds x, the \
+         estimate of the difference around it; a unit whose roll would help is held back while \
+         its neighbours' differences are larger than its own, which keeps its x above its \
+         difference (the corner fault's spare: difference 2 beside 4 and 5). Right after the \
+         cut-off x = diff for every unit (equation 2's initial state), so equation 3 \
+         activates no unit in that first step."
+    ));
     let held = waits.join(" ");
     let every = FAULTS.iter().all(|&(unit, _)| {
         let v = r.values(EXP, &[("disturbances.0.unit", json!(unit))], "completed");

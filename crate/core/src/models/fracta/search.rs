@@ -44,11 +44,15 @@ fn after_cut_off(unit: u64) -> Option<Fracta> {
 }
 
 /// What a repair waits for before its first motion.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct FirstMotion {
     /// The working units that, right after the cut-off, have a motion lowering the summed
     /// difference.
     pub improving: Vec<u32>,
+    /// Their differences at that moment.
+    pub differences: Vec<u32>,
+    /// The mean difference of the working units at that moment.
+    pub mean_difference: f64,
     /// Whether equation 3 activated one of them before or at the first motion.
     pub improving_activated: bool,
     /// Steps from the cut-off to the step of the first motion.
@@ -83,8 +87,22 @@ fn improving_units(m: &Fracta) -> Vec<u32> {
 /// How the repair of a fault on `unit` of `fracta-repair` begins, run with the preset's seed for
 /// at most `limit` steps after the cut-off; `None` when no unit moved by then.
 pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
-    let mut m = after_cut_off(unit)?;
+    first_motion(after_cut_off(unit)?, limit)
+}
+
+/// How the self-assembly of `fracta-triangle10` from two lines begins, within `limit` steps.
+/// Nothing is drawn at random before the first motion, so every seed begins the same way.
+pub fn first_motion_of_assembly(limit: u64) -> Option<FirstMotion> {
+    let s = crate::presets::scenario("fracta-triangle10").ok()?;
+    first_motion(Fracta::of_scenario(&s).ok()?, limit)
+}
+
+/// The units of `m` with a motion that lowers the summed difference, with their differences
+/// and the structure's mean, and when and how the first motion comes.
+fn first_motion(mut m: Fracta, limit: u64) -> Option<FirstMotion> {
     let improving = improving_units(&m);
+    let differences = improving.iter().map(|&u| m.diff[u as usize]).collect();
+    let mean_difference = m.mean_difference();
     let mut improving_activated = false;
     for wait in 0..limit {
         m.decide();
@@ -100,10 +118,33 @@ pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
             });
             return Some(FirstMotion {
                 improving,
+                differences,
+                mean_difference,
                 improving_activated,
                 wait,
                 by_irritation,
             });
+        }
+        m.act();
+    }
+    None
+}
+
+/// Over the repair of a fault on `unit` (the preset's seed, at most `limit` steps after the
+/// cut-off): the steps it took, and of them the steps in which some unit had a motion that
+/// lowers the summed difference but no such unit was activated (by equation 3 or by
+/// irritation). `None` if the preset is missing or the repair did not finish.
+pub fn held_back_steps(unit: u64, limit: u64) -> Option<(u64, u64)> {
+    let mut m = after_cut_off(unit)?;
+    let mut held = 0;
+    for step in 0..limit {
+        if m.completed() {
+            return Some((step, held));
+        }
+        let improving = improving_units(&m);
+        m.decide();
+        if !improving.is_empty() && !m.active.iter().any(|a| improving.contains(&a.0)) {
+            held += 1;
         }
         m.act();
     }

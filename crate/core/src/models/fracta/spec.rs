@@ -47,7 +47,7 @@ pub struct Spec {
     #[serde(default = "defaults::avoid_e")]
     pub(super) avoid_e: bool,
     /// No motion encloses empty cells (a region of up to 7 empty cells cut off from the
-    /// lattice's edge).
+    /// lattice's edge). Off by default: the paper states no such rule.
     #[serde(default = "defaults::no_holes")]
     pub(super) no_holes: bool,
     /// How lower-priority goal statements count in the difference.
@@ -86,7 +86,7 @@ pub mod defaults {
         true
     }
     pub fn no_holes() -> bool {
-        true
+        false
     }
     pub(super) fn priorities() -> Priorities {
         Priorities::Pooled

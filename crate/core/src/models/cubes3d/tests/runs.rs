@@ -382,24 +382,77 @@ fn the_box_preset_has_the_self_repair_papers_goal_and_movable_types() {
 }
 
 #[test]
-fn steepest_descent_takes_the_least_difference_of_all_units() {
+fn steepest_descent_takes_each_units_least_option_staying_included() {
+    // From the ladder no unit has a reachable position below its own D_0: steepest descent,
+    // with "no motion" as option 0, never moves.
     let mut m = model(json!({
         "shape": "######\n######\n", "selection": "steepest",
         "targets": [{"type_lists": "C31[C41, C31, C31]\nC41[C41, C41, C31, C31]"}]
     }));
-    let mut least = f64::INFINITY;
     for &u in &m.movable.clone() {
-        for r in m.reach_report(u as usize) {
-            least = least.min(r.1);
-        }
+        let least = m
+            .reach_report(u as usize)
+            .iter()
+            .map(|r| r.1)
+            .fold(f64::INFINITY, f64::min);
+        assert!(least > m.d0(u as usize), "unit {u}: {least}");
     }
-    let before = m.moves;
-    m.step();
-    assert_eq!(
-        m.moves,
-        before + 1,
-        "steepest descent moves even when it raises D"
-    );
-    let moved = m.events.iter().find(|e| e.kind == ARRIVED).unwrap().cell as usize;
-    assert_eq!(m.d0(moved), least);
+    for _ in 0..50 {
+        m.step();
+    }
+    assert_eq!(m.moves, 0);
+    // From the zigzag, every move goes to a position of least difference among the mover's
+    // options, no higher than its D_0, and the run stops in a minimum short of the cube.
+    let mut s = presets::scenario("cubes-cube8-zigzag")
+        .unwrap()
+        .with_override("selection", json!("steepest"))
+        .unwrap();
+    s.seed = 3;
+    let mut m = Cubes::new(&s).unwrap();
+    for _ in 0..300 {
+        let before: Vec<(usize, f64, f64)> = m
+            .movable
+            .iter()
+            .map(|&u| {
+                let u = u as usize;
+                let least = m
+                    .reach_report(u)
+                    .iter()
+                    .map(|r| r.1)
+                    .fold(f64::INFINITY, f64::min);
+                (u, m.d0(u), least)
+            })
+            .collect();
+        let moves = m.moves;
+        m.step();
+        if m.moves == moves {
+            assert!(before.iter().all(|&(_, d0, least)| least > d0));
+            continue;
+        }
+        let left = m.events.iter().find(|e| e.kind == LEFT).unwrap().cell as usize;
+        let (_, d0, least) = before.iter().find(|b| b.0 == left).copied().unwrap();
+        assert!(least <= d0, "moved from {left} though staying was better");
+    }
+    assert!(m.moves > 0 && !m.completed(), "{} moves", m.moves);
+}
+
+#[test]
+fn without_stop_at_goal_a_run_goes_on_past_the_goal() {
+    let shape = "##\n##\n---\n##\n##\n";
+    let s = |stop: bool, selection: &str| {
+        model(json!({
+            "shape": shape, "selection": selection, "stop_at_goal": stop,
+            "targets": [{"type_lists": "C31[C31, C31, C31]"}]
+        }))
+    };
+    // The cube is its own goal from step 0.
+    assert!(s(true, "random").completed());
+    let mut m = s(false, "random");
+    assert!(!m.completed());
+    assert_eq!(m.reached, Some(0));
+    // Random selection takes staying and each position alike, so the cube does not last.
+    for _ in 0..20 {
+        m.step();
+    }
+    assert!(m.moves > 0 && m.reached == Some(0));
 }

@@ -166,3 +166,25 @@ fn the_report_reads_what_a_repair_waits_for() {
     );
     assert!(corner.wait >= 12, "{corner:?}");
 }
+
+#[test]
+fn the_assembly_from_two_lines_waits_for_irritation() {
+    // At the two-line start the units with a roll that lowers the summed difference are the
+    // line ends, whose difference is below the structure's mean; equation 3 activates none of
+    // them (x, the estimate of the difference around them, rises above their own), so the
+    // first motion waits for irritation, the same in every seed.
+    let start = search::first_motion_of_assembly(50).unwrap();
+    assert!(!start.improving.is_empty(), "{start:?}");
+    assert!(
+        start
+            .differences
+            .iter()
+            .all(|&d| f64::from(d) < start.mean_difference),
+        "{start:?}"
+    );
+    assert!(
+        !start.improving_activated && start.by_irritation,
+        "{start:?}"
+    );
+    assert!(start.wait >= 10, "{start:?}");
+}
