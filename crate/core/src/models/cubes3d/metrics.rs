@@ -10,6 +10,7 @@ pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("mean_difference", "difference", "Mean over units of the difference D_0 between a unit's type-list and its target (0 when matched)."),
     MetricInfo::new("matched", "fraction", "Share of units whose difference D_0 is 0, from 0 to 1."),
     MetricInfo::new("completed", "flag", "1 when every unit matches its target type-list, else 0."),
+    MetricInfo::new("reached", "steps", "The first step at which every unit matched its target; missing until then (a run may go on past it)."),
     MetricInfo::new("movable", "units", "Units that may move in the present configuration."),
     MetricInfo::new("connectivity_checks", "count", "Connectivity checks made (rule 4: a motion must not split the structure)."),
     MetricInfo::new("connectivity_searches", "count", "Connectivity checks that needed a search beyond the local box around the unit."),
