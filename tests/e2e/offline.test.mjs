@@ -37,6 +37,11 @@ async function visit(url = server.url) {
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  // A first visit (no link) opens with the welcome, which may come just after the page is ready;
+  // skipping it is remembered, so the reloads below open straight onto the run.
+  await page.waitForSelector('#welcome[open]', { timeout: 30000 });
+  await page.click('#welcome-skip');
+  await page.waitForSelector('#welcome', { state: 'hidden' });
   await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30000 });
   return { context, page, problems };
 }
