@@ -36,6 +36,9 @@ async function visit() {
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   await page.goto(server.url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  // A first visit opens on the welcome; shown once, it stays away after reloads.
+  await page.click('#welcome-skip');
+  await page.waitForSelector('#welcome', { state: 'hidden' });
   await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30000 });
   return { context, page, problems };
 }
