@@ -276,17 +276,11 @@ async function start() {
     // A lesson opens on the run tab, where its exercise panel is.
     (name) => load(core.lessonJson(name), { opens: true }) && keys.selectTab('run'),
   );
-  const welcome = setupWelcome(
-    {
-      watch: () => openGallery('scenarios'),
-      lesson: () => openGallery('lessons'),
-      build: () => keys.selectTab('scenario', true),
-    },
-    () => {
-      prefs.welcomed = true;
-      persistPrefs();
-    },
-  );
+  const welcome = setupWelcome({
+    watch: () => openGallery('scenarios'),
+    lesson: () => openGallery('lessons'),
+    build: () => keys.selectTab('scenario', true),
+  });
   setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
   setupGrade();
   setupRecordDialog({
@@ -346,7 +340,12 @@ async function start() {
     return;
   }
   // A first visit opens on what Kumiki is and where to start; a shared link has its own introduction.
-  if (!prefs.welcomed && !location.hash.slice(1)) welcome.show();
+  // Shown once, it is seen: a reload does not bring it back ("Start here" does).
+  if (!prefs.welcomed && !location.hash.slice(1)) {
+    welcome.show();
+    prefs.welcomed = true;
+    persistPrefs();
+  }
   if (share.openHash()) return;
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;

@@ -15,7 +15,7 @@ export interface Prefs {
   chartMetric: string;
   experiment: string;
   workers: number;
-  /** The first screen was seen (closed once): it no longer opens by itself. */
+  /** The first screen was shown once: it no longer opens by itself. */
   welcomed: boolean;
 }
 

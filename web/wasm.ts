@@ -39,6 +39,8 @@ export const problemInFull = (json: string): string => core.scenario_problem_in_
 export const encodeLink = (json: string): string => core.pack_link(json);
 /** The cells of the largest shape in scenario JSON, read from its text without building it. */
 export const estimateCells = (json: string): number => core.estimate_cells(json);
+/** The most cells a shape may span in the page; a scenario over it is refused. */
+export const pageShapeCells = (): number => core.page_shape_cells();
 /** A link's scenario JSON, not yet validated, and the model versions that made and read it. */
 export const unpackLink = (link: string): { scenario: string; made_with: number; current: number } =>
   core.unpack_link(link) as { scenario: string; made_with: number; current: number };

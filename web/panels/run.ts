@@ -178,9 +178,11 @@ export function setupRunPanel(page: Page): RunPanel {
         const value = el('strong');
         const info = about.get(name);
         // The explanation shows on hover and on focus (a card with one is in the Tab order) and
-        // is the card's description for a screen reader.
+        // is the card's description for a screen reader. It sits between the name and the value
+        // (it is drawn apart from both), so the card still starts with its name and ends with
+        // its value.
         const tip = info ? [el('span', { class: 'metric-about', role: 'tooltip', id: `metric-about-${name}`, text: `${info.about} Unit: ${info.unit}.` })] : [];
-        metricsBox.append(el('div', { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined }, el('span', { text: name.replace(/_/g, ' ') }), value, ...tip));
+        metricsBox.append(el('div', { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined }, el('span', { text: name.replace(/_/g, ' ') }), ...tip, value));
         metricNodes.set(name, value);
       }
       const numeric = names.filter((n) => typeof metrics[n] === 'number');

@@ -79,7 +79,8 @@ export class LargeOpening {
     const cells = core.estimateCells(json);
     if (cells <= LARGE_CELLS) return false;
     const mb = memoryEstimateMb(cells);
-    if (mb > ASK_ABOVE_MB && cells > this.agreed) {
+    // One over the page's limits is refused by the worker at once: nothing to ask about.
+    if (mb > ASK_ABOVE_MB && cells > this.agreed && cells <= core.pageShapeCells()) {
       this.ask(cells, mb, () => {
         this.agreed = cells;
         this.open(cells, opened);

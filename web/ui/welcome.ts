@@ -54,7 +54,7 @@ export interface Welcome {
   tour(): void;
 }
 
-export function setupWelcome(actions: WelcomeActions, seen: () => void): Welcome {
+export function setupWelcome(actions: WelcomeActions): Welcome {
   const dialog = byId<HTMLDialogElement>('welcome');
   const box = byId('tour');
   const back = byId<HTMLButtonElement>('tour-back');
@@ -67,7 +67,6 @@ export function setupWelcome(actions: WelcomeActions, seen: () => void): Welcome
   }
 
   dialog.addEventListener('close', () => {
-    seen();
     switch (dialog.returnValue) {
       case 'watch':
         actions.watch();

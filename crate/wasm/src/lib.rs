@@ -101,6 +101,13 @@ pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+/// The most cells a shape may span in the page (`Limits::PAGE`): a scenario over it is refused
+/// by the worker, so the page does not ask the user about the memory it would need.
+#[wasm_bindgen]
+pub fn page_shape_cells() -> f64 {
+    kumiki_core::Limits::PAGE.shape_cells as f64
+}
+
 /// The whole of what is wrong with scenario JSON, or "" when nothing is. The errors the other
 /// calls throw are brief (under 200 characters); this is the rest, for whoever asks.
 #[wasm_bindgen]
