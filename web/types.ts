@@ -125,6 +125,13 @@ export interface WorkerTiming {
   drawMs: number;
 }
 
+/** One row of a model's metric table (Rust `models::MetricInfo`). */
+export interface MetricInfo {
+  name: string;
+  unit: string;
+  about: string;
+}
+
 export interface ExperimentInfo {
   name: string;
   title: string;

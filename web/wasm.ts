@@ -3,7 +3,7 @@
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
-import type { ExperimentInfo, LessonInfo, PresetInfo } from './types';
+import type { ExperimentInfo, LessonInfo, MetricInfo, PresetInfo } from './types';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
@@ -51,6 +51,8 @@ export const experimentJson = (name: string): string => core.experiment_json(nam
 /** A model's helper call (see `kumiki queries`): JSON arguments, a JSON answer. */
 export const query = <T = Record<string, unknown>>(model: string, name: string, args: unknown): T =>
   JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
+/** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
+export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];
 export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
 export const version = (): string => core.version();
 

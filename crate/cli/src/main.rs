@@ -116,8 +116,16 @@ enum Command {
         #[command(flatten)]
         jobs: Jobs,
     },
-    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema) and the scenario
-    /// types generated from them (DIR/web/scenario.gen.ts)
+    /// Every metric a model reports: model, name, unit and meaning, tab-separated, one a line
+    Metrics {
+        /// Only this model's metrics
+        model: Option<String>,
+        /// One JSON object per metric and line instead
+        #[arg(long)]
+        json: bool,
+    },
+    /// Write the JSON Schemas of scenarios and experiments (DIR/docs/schema), the scenario
+    /// types generated from them (DIR/web/scenario.gen.ts) and the metric tables (DIR/docs/metrics.md)
     Schema {
         /// Compare the schemas under DIR with what this build derives; fail if they differ
         #[arg(long)]
@@ -422,6 +430,26 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                 |h| load_scenario(h, limits),
                 &mut out,
             )?;
+        }
+        Some(Command::Metrics { model, json }) => {
+            let models: Vec<&str> = match &model {
+                Some(m) => vec![kumiki_core::models::entry(m)?.name],
+                None => kumiki_core::models::MODELS.iter().map(|m| m.name).collect(),
+            };
+            for m in models {
+                for info in kumiki_core::models::metric_table(m)? {
+                    match json {
+                        true => writeln!(
+                            out,
+                            "{}",
+                            serde_json::json!({"model": m, "name": info.name, "unit": info.unit, "about": info.about})
+                        )?,
+                        false => {
+                            writeln!(out, "{m}\t{}\t{}\t{}", info.name, info.unit, info.about)?
+                        }
+                    }
+                }
+            }
         }
         Some(Command::Schema { check, root }) => schema(check, &root)?,
         Some(Command::Queries) => {

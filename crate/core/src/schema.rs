@@ -236,8 +236,11 @@ fn capitalised(name: &str) -> String {
 /// Where the TypeScript types generated from the scenario schema live, from the repository root.
 pub const TYPESCRIPT_FILE: &str = "web/scenario.gen.ts";
 
+/// Where the generated table of every model's metrics lives, from the repository root.
+pub const METRICS_FILE: &str = "docs/metrics.md";
+
 /// The published files, as paths from the repository root, and their text: the schemas (pretty
-/// JSON with a final newline) and the TypeScript types of the scenario schema.
+/// JSON with a final newline), the TypeScript types of the scenario schema and the metric tables.
 pub fn files() -> Vec<(String, String)> {
     let pretty = |v: &Value| serde_json::to_string_pretty(v).expect("a schema serialises") + "\n";
     let scenario = scenario();
@@ -245,6 +248,7 @@ pub fn files() -> Vec<(String, String)> {
         (format!("{DIR}/{SCENARIO_FILE}"), pretty(&scenario)),
         (format!("{DIR}/{EXPERIMENT_FILE}"), pretty(&experiment())),
         (TYPESCRIPT_FILE.to_string(), typescript(&scenario)),
+        (METRICS_FILE.to_string(), crate::models::metrics_markdown()),
     ]
 }
 

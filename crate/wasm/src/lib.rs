@@ -61,6 +61,13 @@ pub fn version() -> String {
     PROGRAM_VERSION.to_string()
 }
 
+/// A model's metric table: `[{name, unit, about}, ...]` in the model's order (see
+/// `kumiki_core::models::MetricInfo`); an unknown model is an error that lists the known ones.
+#[wasm_bindgen]
+pub fn metric_table(model: &str) -> Result<JsValue, JsError> {
+    to_js(models::metric_table(model).map_err(js_err)?)
+}
+
 #[derive(Serialize)]
 struct PresetInfo {
     name: &'static str,

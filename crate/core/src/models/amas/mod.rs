@@ -16,6 +16,7 @@ mod actions;
 mod conflicts;
 mod field;
 mod init;
+pub mod metrics;
 pub mod paper;
 mod plan;
 mod settle;
@@ -33,6 +34,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
     model_version: 2,
+    metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Amas),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,

@@ -19,6 +19,7 @@ pub mod cycle;
 pub mod election;
 pub mod frame;
 pub mod init;
+pub mod metrics;
 pub mod motion;
 pub mod paper;
 pub mod queries;
@@ -38,6 +39,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
     model_version: 2,
+    metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Chobie),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<spec::Spec>,

@@ -33,6 +33,7 @@ mod choose;
 pub mod connect;
 mod init;
 mod light;
+pub mod metrics;
 pub mod motion;
 pub mod paper;
 pub mod queries;
@@ -54,6 +55,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
     model_version: 2,
+    metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Cubes3d),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,

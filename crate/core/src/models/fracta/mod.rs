@@ -39,6 +39,7 @@ mod faults;
 pub mod goal;
 mod init;
 mod links;
+pub mod metrics;
 pub mod paper;
 mod plan;
 pub mod queries;
@@ -58,6 +59,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
     model_version: 4,
+    metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Fracta),
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
