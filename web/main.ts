@@ -225,6 +225,8 @@ rendererChoice.addEventListener('change', () => {
   persistPrefs();
   void useRenderer();
 });
+// A debug control, shown only with `?debug` in the address (README, "Using the page").
+byId('simulate-crash').hidden = !new URLSearchParams(location.search).has('debug');
 byId('simulate-crash').addEventListener('click', () => sim.crash());
 
 // ---- start ------------------------------------------------------------------------------------
@@ -245,7 +247,7 @@ async function start() {
     // A lesson opens on the run tab, where its exercise panel is.
     (name) => load(core.lessonJson(name)) && keys.selectTab('run'),
   );
-  setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
+  setupExperiments(prefs, persistPrefs, (text) => banner.report(text), () => keys.selectTab('experiments'));
   setupRecordDialog({
     describe: () => {
       const doc = session.doc() as { name?: string; seed?: number };

@@ -13,6 +13,8 @@ export interface Prefs {
   tab: string;
   chartMetric: string;
   experiment: string;
+  /** The experiment as last edited (JSON text), kept across reloads; empty for a built-in one. */
+  experimentText: string;
   workers: number;
 }
 
@@ -25,6 +27,7 @@ const DEFAULT_PREFS: Prefs = {
   tab: 'run',
   chartMetric: '',
   experiment: '',
+  experimentText: '',
   workers: 0,
 };
 

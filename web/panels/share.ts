@@ -73,7 +73,8 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
 
   function openHash(): boolean {
     const hash = location.hash.slice(1);
-    if (!hash) return false;
+    // An experiment link (`x1.`) is the Experiments panel's.
+    if (!hash || hash.startsWith('x1.')) return false;
     try {
       const unpacked = core.unpackLink(hash);
       const previous = session.scenario;
@@ -100,7 +101,7 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
     }
   }
   window.addEventListener('hashchange', () => {
-    if (location.hash.length > 1 && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
+    if (location.hash.length > 1 && !location.hash.startsWith('#x1.') && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
   });
 
   return {

@@ -16,6 +16,7 @@
 pub mod error;
 pub mod exercise;
 pub mod experiment;
+pub mod export;
 pub mod hash;
 pub mod json;
 pub mod lattice;
@@ -24,6 +25,7 @@ pub mod limits;
 pub mod link;
 pub mod math;
 pub mod models;
+pub mod plot;
 pub mod presets;
 pub mod reproduce;
 pub mod rng;
