@@ -8,6 +8,7 @@ import type { ExperimentInfo } from '../types';
 import * as core from '../wasm';
 import { byId, download, el, formatNumber } from './dom';
 import { renderPlots } from './plots';
+import { OPEN_EXPERIMENT } from './reproduction';
 
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
@@ -87,6 +88,17 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     if (location.hash.startsWith('#x1.')) history.replaceState(null, '', `${location.pathname}${location.search}`);
   };
 
+  // The reproduction report opens the experiment behind its figures.
+  window.addEventListener(OPEN_EXPERIMENT, (e) => {
+    const name = (e as CustomEvent<string>).detail;
+    if (!builtIn.some((x) => x.name === name)) return;
+    leaveLink();
+    prefs.experiment = name;
+    prefs.experimentText = '';
+    savePrefs();
+    show(name);
+    showTab();
+  });
   select.addEventListener('change', () => {
     if (!select.value) return;
     leaveLink();
