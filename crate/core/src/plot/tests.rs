@@ -337,3 +337,32 @@ fn a_plot_that_names_an_unknown_choice_is_refused_with_the_choices() {
     .unwrap();
     assert!(matches!(&e.plots[0], PlotSpec::Lines(l) if l.spread == Some(Spread::Iqr)));
 }
+
+#[test]
+fn statistics_match_values_worked_by_hand() {
+    use super::stats::{t975, Comparison, Stats};
+    let a = [1.0, 2.0, 3.0, 4.0, 5.0];
+    let b = [6.0, 7.0, 8.0, 9.0, 10.0];
+    let s = Stats::of(&a).unwrap();
+    assert_eq!((s.n, s.mean, s.median, s.q1, s.q3), (5, 3.0, 3.0, 2.0, 4.0));
+    assert!(close(s.sd, 2.5f64.sqrt()));
+    // 3 ± t(0.975, 4) · sd / √5, t = 2.776.
+    let half = 2.776 * 2.5f64.sqrt() / 5f64.sqrt();
+    assert!(close(s.ci95[0], 3.0 - half) && close(s.ci95[1], 3.0 + half));
+    // Every value of a below every value of b: U = 0, and the exact two-sided p is 2 / C(10, 5).
+    let c = Comparison::of(&a, &b).unwrap();
+    assert_eq!((c.u, c.rank_biserial, c.method), (0.0, -1.0, "exact"));
+    assert!(close(c.p, 2.0 / 252.0), "{}", c.p);
+    assert!(close(c.cohens_d, 5.0 / 2.5f64.sqrt()));
+    assert!(close(c.difference, 5.0));
+    // Interleaved: U = 12.5 of 25 pairs would be no effect; here U = 10 and p is large.
+    let c = Comparison::of(&[1.0, 3.0, 5.0, 7.0, 9.0], &[2.0, 4.0, 6.0, 8.0, 10.0]).unwrap();
+    assert_eq!(c.u, 10.0);
+    assert!(c.p > 0.5 && c.p <= 1.0);
+    // Ties: the normal approximation with tie correction.
+    let c = Comparison::of(&[1.0, 1.0, 2.0, 2.0], &[2.0, 3.0, 3.0, 4.0]).unwrap();
+    assert_eq!(c.method, "normal");
+    assert!(c.p > 0.0 && c.p < 0.1, "{}", c.p);
+    assert!((t975(100) - 1.98397).abs() < 1e-4, "{}", t975(100));
+    assert!((t975(31) - 2.0395).abs() < 1e-3, "{}", t975(31));
+}
