@@ -256,6 +256,8 @@ rendererChoice.addEventListener('change', () => {
   persistPrefs();
   void useRenderer();
 });
+// A debug control, shown only with `?debug` in the address (README, "Using the page").
+byId('simulate-crash').hidden = !new URLSearchParams(location.search).has('debug');
 byId('simulate-crash').addEventListener('click', () => sim.crash());
 
 // ---- start ------------------------------------------------------------------------------------
@@ -281,7 +283,7 @@ async function start() {
     lesson: () => openGallery('lessons'),
     build: () => keys.selectTab('scenario', true),
   });
-  setupExperiments(prefs, persistPrefs, (text) => banner.report(text));
+  setupExperiments(prefs, persistPrefs, (text) => banner.report(text), () => keys.selectTab('experiments'));
   setupGrade();
   setupRecordDialog({
     describe: () => {

@@ -14,6 +14,8 @@ export interface Prefs {
   tab: string;
   chartMetric: string;
   experiment: string;
+  /** The experiment as last edited (JSON text), kept across reloads; empty for a built-in one. */
+  experimentText: string;
   workers: number;
   /** The first screen was shown once: it no longer opens by itself. */
   welcomed: boolean;
@@ -28,6 +30,7 @@ const DEFAULT_PREFS: Prefs = {
   tab: 'run',
   chartMetric: '',
   experiment: '',
+  experimentText: '',
   workers: 0,
   welcomed: false,
 };

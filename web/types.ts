@@ -72,12 +72,39 @@ export interface MetricInfo {
   about: string;
 }
 
+/** Per-condition statistics (Rust `plot::stats::Stats`). */
+export interface Stats {
+  n: number;
+  mean: number;
+  sd: number;
+  min: number;
+  q1: number;
+  median: number;
+  q3: number;
+  max: number;
+  ci95: [number, number];
+}
+
+/** What a plot draws (Rust `plot::figure::Figure`), the fields the page reads. */
+export interface Figure {
+  kind: 'lines' | 'trace' | 'histogram' | 'bars' | 'summary';
+  title: string;
+  described: string;
+  table: { condition: string[]; runs: number; completed: number; value: string; unit: string; stats: Stats | null }[];
+  comparisons: {
+    value: string;
+    conditions: [string, string];
+    comparison: { difference: number; cohens_d: number; u: number; rank_biserial: number; p: number; method: string };
+  }[];
+}
+
 export interface ExperimentInfo {
   name: string;
   title: string;
   description: string;
   jobs: number;
   plot: unknown;
+  traced: boolean;
 }
 
 export interface Row {

@@ -3,7 +3,7 @@
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
-import type { ExperimentInfo, LessonInfo, MetricInfo, PresetInfo } from './types';
+import type { ExperimentInfo, Figure, LessonInfo, MetricInfo, PresetInfo } from './types';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
@@ -64,7 +64,15 @@ export const query = <T = Record<string, unknown>>(model: string, name: string, 
   JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];
-export const rowsToCsv = (rowsJson: string): string => core.rows_to_csv(rowsJson);
+/** Each figure of an experiment's plots from its rows (a JSON array), and its SVG. */
+export const experimentFigures = (experiment: string, rowsJson: string): { figure: Figure; svg: string }[] =>
+  core.experiment_figures(experiment, rowsJson) as { figure: Figure; svg: string }[];
+/** The rows exported with their provenance, the bytes `kumiki sweep` writes (`csv`, `json` lines, `traces`). */
+export const experimentExport = (experiment: string, rowsJson: string, format: 'csv' | 'json' | 'traces', time: string): string =>
+  core.experiment_export(experiment, rowsJson, format, time);
+/** An experiment's link payload (`x1.…`), and the experiment inside one. */
+export const packExperiment = (json: string): string => core.pack_experiment(json);
+export const unpackExperiment = (link: string): string => core.unpack_experiment(link);
 export const version = (): string => core.version();
 
 /** A JSON Schema node, as far as the page reads one. */

@@ -1,8 +1,10 @@
 //! Registers every file in `presets/`, `lessons/` and `experiments/` by its name, so adding a preset
-//! or a lesson is adding one file.
+//! or a lesson is adding one file; and records the commit the core is built from
+//! (`KUMIKI_COMMIT`, "unknown" outside a git checkout) for the provenance of exports.
 
 use std::fmt::Write as _;
 use std::path::Path;
+use std::process::Command;
 
 fn table(dir: &str, konst: &str, out: &mut String) {
     println!("cargo::rerun-if-changed={dir}");
@@ -26,7 +28,31 @@ fn table(dir: &str, konst: &str, out: &mut String) {
     writeln!(out, "];").unwrap();
 }
 
+fn git(args: &[&str]) -> Option<String> {
+    let out = Command::new("git").args(args).output().ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+        .filter(|s| !s.is_empty())
+}
+
+fn commit() {
+    let commit = git(&["rev-parse", "--short=12", "HEAD"]).unwrap_or_else(|| "unknown".into());
+    println!("cargo::rustc-env=KUMIKI_COMMIT={commit}");
+    // Built again when HEAD moves: a new commit on the branch, or another branch checked out.
+    let mut watched = vec!["HEAD".to_string(), "packed-refs".to_string()];
+    watched.extend(git(&["symbolic-ref", "-q", "HEAD"]));
+    for path in watched {
+        // A path that does not exist would make cargo run this script on every build.
+        if let Some(p) = git(&["rev-parse", "--git-path", &path]).filter(|p| Path::new(p).exists())
+        {
+            println!("cargo::rerun-if-changed={p}");
+        }
+    }
+}
+
 fn main() {
+    commit();
     let mut out = String::new();
     table("presets", "PRESET_FILES", &mut out);
     table("lessons", "LESSON_FILES", &mut out);

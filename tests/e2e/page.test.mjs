@@ -130,7 +130,11 @@ describe('the page', () => {
   });
 
   test('a panic in the simulation is shown and the page recovers with the last good scenario', async () => {
-    const { page, context } = await openPage(s.browser, s.server.url);
+    // The crash button is a debug control: hidden unless the address asks for ?debug.
+    const plain = await openPage(s.browser, s.server.url);
+    assert.equal(await plain.page.isVisible('#simulate-crash'), false);
+    await plain.context.close();
+    const { page, context } = await openPage(s.browser, `${s.server.url}?debug`);
     const initial = await hashOf(page);
     await page.click('#tab-about');
     await page.click('#simulate-crash');

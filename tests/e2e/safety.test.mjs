@@ -174,6 +174,17 @@ describe('the About tab', () => {
     const first = rows.first().locator('td');
     assert.equal(await first.nth(1).textContent(), findings[0].claim);
     assert.equal(await first.nth(3).textContent(), String(findings[0].runs));
+    // The table fits its panel, on a desktop and on a tablet: no sideways scrolling.
+    for (const width of [1280, 820]) {
+      await page.setViewportSize({ width, height: 900 });
+      const [scroll, client] = await page.$eval('#paper-report .table-scroll', (d) => [d.scrollWidth, d.clientWidth]);
+      assert.ok(scroll <= client, `the table fits at ${width} px (${scroll} > ${client})`);
+    }
+    // Each experiment behind the figures opens in the Experiments tab.
+    const name = report.models[model].experiments[0];
+    await page.click(`#paper-report button:text-is("${name}")`);
+    assert.equal(await page.getAttribute('#tab-experiments', 'aria-selected'), 'true');
+    assert.equal(JSON.parse(await page.inputValue('#experiment-json')).name, name);
     await context.close();
   });
 });

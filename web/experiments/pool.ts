@@ -1,11 +1,11 @@
 // Runs an experiment's jobs on a pool of workers, handing out the next job to whichever worker
 // finishes first. Rows come back in any order and are stored by job index.
-import type { Row } from '../types';
 import { wasmModule } from '../wasm';
 import type { FromExperimentWorker, ToExperimentWorker } from './worker';
 
 export interface PoolEvents {
-  row(index: number, row: Row): void;
+  /** A run's row as JSON text, exactly as `kumiki sweep` writes it. */
+  row(index: number, row: string): void;
   error(message: string): void;
   done(): void;
 }
@@ -50,7 +50,7 @@ export class ExperimentPool {
         this.handOut(worker);
         return;
       case 'row':
-        this.on.row(msg.index, msg.row as Row);
+        this.on.row(msg.index, msg.row);
         this.finished++;
         if (this.finished === this.jobs) {
           this.stop();

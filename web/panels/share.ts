@@ -81,7 +81,8 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
 
   function openHash(): boolean {
     const hash = location.hash.slice(1);
-    if (!hash) return false;
+    // An experiment link (`x1.`) is the Experiments panel's.
+    if (!hash || hash.startsWith('x1.')) return false;
     /** The link's scenario text, once unpacked: what the whole message is read from. */
     let text: string | null = null;
     try {
@@ -123,7 +124,7 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
     }
   }
   window.addEventListener('hashchange', () => {
-    if (location.hash.length > 1 && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
+    if (location.hash.length > 1 && !location.hash.startsWith('#x1.') && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
   });
 
   return {

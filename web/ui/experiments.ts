@@ -1,13 +1,19 @@
-// The Experiments panel: choose or edit an experiment, run it on a pool of workers with a
-// progress bar, plot it as its file says, export the rows as CSV or JSON.
+// The Experiments panel: choose or edit an experiment, keep it across reloads, share it as a
+// link (`#x1.…`) or a file, run it on a pool of workers with a progress bar, draw its figures
+// (the core's SVG, saved as SVG or PNG), and export the rows with their provenance, the same
+// bytes `kumiki sweep` writes.
 import { ExperimentPool } from '../experiments/pool';
 import type { Prefs } from '../store';
-import type { ExperimentInfo, Row } from '../types';
+import type { ExperimentInfo } from '../types';
 import * as core from '../wasm';
 import { byId, download, el, formatNumber } from './dom';
 import { renderPlots } from './plots';
+import { OPEN_EXPERIMENT } from './reproduction';
 
-export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (msg: string) => void) {
+/** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
+const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
+
+export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (msg: string) => void, showTab: () => void) {
   const select = byId<HTMLSelectElement>('experiment-select');
   const description = byId('experiment-description');
   const editor = byId<HTMLTextAreaElement>('experiment-json');
@@ -19,16 +25,29 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   const plots = byId('experiment-plots');
   const csv = byId<HTMLButtonElement>('export-csv');
   const json = byId<HTMLButtonElement>('export-json');
+  const traces = byId<HTMLButtonElement>('export-traces');
+  const linkButton = byId<HTMLButtonElement>('experiment-link');
+  const saveButton = byId<HTMLButtonElement>('experiment-save');
+  const openInput = byId<HTMLInputElement>('experiment-open');
 
   const builtIn = core.experiments();
   for (const e of builtIn) select.append(el('option', { value: e.name, text: e.title ? `${e.name}: ${e.title}` : e.name }));
+  select.append(el('option', { value: '', text: 'Edited experiment' }));
   const cores = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
   workersInput.value = String(prefs.workers > 0 ? prefs.workers : cores);
 
   let pool: ExperimentPool | null = null;
-  let rows: Row[] = [];
-  let info: ExperimentInfo | null = null;
+  let texts: string[] = [];
+  let ran: { info: ExperimentInfo; text: string; time: string } | null = null;
 
+  const describe = (text: string) => {
+    try {
+      const info = core.experimentInfo(text);
+      description.textContent = `${info.description} (${info.jobs.toLocaleString('en-US')} runs)`;
+    } catch (e) {
+      description.textContent = `This experiment cannot run: ${core.message(e)}`;
+    }
+  };
   const show = (name: string) => {
     const e = builtIn.find((x) => x.name === name) ?? builtIn[0];
     if (!e) return;
@@ -36,16 +55,110 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     editor.value = core.experimentJson(e.name);
     description.textContent = `${e.description} (${e.jobs.toLocaleString('en-US')} runs)`;
   };
-  show(prefs.experiment);
+  /** Shows an experiment's text as an edited one, kept across reloads. */
+  const showEdited = (text: string) => {
+    editor.value = text;
+    select.value = '';
+    prefs.experimentText = text;
+    savePrefs();
+    describe(text);
+  };
+  const fromLink = (hash: string): boolean => {
+    if (!hash.startsWith('#x1.')) return false;
+    try {
+      showEdited(core.unpackExperiment(hash));
+      return true;
+    } catch (e) {
+      report(`This experiment link could not be opened.\n${core.message(e)}`);
+      return false;
+    }
+  };
+  if (fromLink(location.hash)) {
+    prefs.tab = 'experiments';
+  } else if (prefs.experimentText) {
+    showEdited(prefs.experimentText);
+  } else {
+    show(prefs.experiment);
+  }
+  window.addEventListener('hashchange', () => {
+    if (fromLink(location.hash)) showTab();
+  });
+  /** Once the experiment changes, the address no longer holds it: a reload keeps the edit. */
+  const leaveLink = () => {
+    if (location.hash.startsWith('#x1.')) history.replaceState(null, '', `${location.pathname}${location.search}`);
+  };
+
+  // The reproduction report opens the experiment behind its figures.
+  window.addEventListener(OPEN_EXPERIMENT, (e) => {
+    const name = (e as CustomEvent<string>).detail;
+    if (!builtIn.some((x) => x.name === name)) return;
+    leaveLink();
+    prefs.experiment = name;
+    prefs.experimentText = '';
+    savePrefs();
+    show(name);
+    showTab();
+  });
   select.addEventListener('change', () => {
+    if (!select.value) return;
+    leaveLink();
     prefs.experiment = select.value;
+    prefs.experimentText = '';
     savePrefs();
     show(select.value);
+  });
+  let typing: ReturnType<typeof setTimeout> | undefined;
+  editor.addEventListener('input', () => {
+    select.value = '';
+    leaveLink();
+    clearTimeout(typing);
+    typing = setTimeout(() => {
+      prefs.experimentText = editor.value;
+      savePrefs();
+    }, 300);
   });
   workersInput.addEventListener('change', () => {
     prefs.workers = Math.max(1, Math.min(16, Math.round(Number(workersInput.value)) || cores));
     workersInput.value = String(prefs.workers);
     savePrefs();
+  });
+
+  linkButton.addEventListener('click', async () => {
+    let payload: string;
+    try {
+      payload = core.packExperiment(editor.value);
+    } catch (e) {
+      status.textContent = `This experiment cannot be shared: ${core.message(e)}`;
+      return;
+    }
+    const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
+    history.replaceState(null, '', `#${payload}`);
+    linkButton.dataset.link = url;
+    try {
+      await navigator.clipboard.writeText(url);
+      linkButton.textContent = 'Link copied';
+    } catch {
+      linkButton.textContent = 'Link in address bar';
+    }
+    setTimeout(() => (linkButton.textContent = 'Copy experiment link'), 2000);
+  });
+  saveButton.addEventListener('click', () => {
+    let name = 'experiment';
+    try {
+      name = core.experimentInfo(editor.value).name;
+    } catch {
+      // A draft that does not read yet is saved as it is, under a neutral name.
+    }
+    download(`${name}.json`, editor.value, 'application/json');
+  });
+  openInput.addEventListener('change', async () => {
+    const file = openInput.files?.[0];
+    openInput.value = '';
+    if (!file) return;
+    const text = await file.text();
+    leaveLink();
+    showEdited(text);
+    status.textContent = `Opened ${file.name}.`;
   });
 
   const setProgress = (done: number, total: number) => {
@@ -59,37 +172,50 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     cancel.disabled = !on;
     select.disabled = on;
   };
+  const finished = () => texts.filter(Boolean);
+  const draw = () => {
+    if (!ran) return;
+    try {
+      renderPlots(plots, ran.text, ran.info.name, finished());
+    } catch (e) {
+      status.textContent = `The plots could not be drawn: ${core.message(e)}`;
+    }
+  };
+  const exportable = (on: boolean) => {
+    csv.disabled = json.disabled = traces.disabled = !on;
+    traces.hidden = !ran?.info.traced;
+  };
 
   runButton.addEventListener('click', () => {
     const text = editor.value;
+    let info: ExperimentInfo;
     try {
       info = core.experimentInfo(text);
     } catch (e) {
       status.textContent = `This experiment cannot run: ${core.message(e)}`;
       return;
     }
-    const current = info;
-    rows = new Array<Row>(current.jobs);
+    ran = { info, text, time: timestamp() };
+    texts = new Array<string>(info.jobs);
     let done = 0;
     const started = performance.now();
     let lastPlot = started;
-    csv.disabled = json.disabled = true;
+    exportable(false);
     plots.replaceChildren();
-    setProgress(0, current.jobs);
+    setProgress(0, info.jobs);
     running(true);
-    status.textContent = `Running ${current.jobs.toLocaleString('en-US')} runs…`;
-    const complete = () => rows.filter(Boolean);
-    pool = new ExperimentPool(text, current.jobs, {
+    status.textContent = `Running ${info.jobs.toLocaleString('en-US')} runs…`;
+    pool = new ExperimentPool(text, info.jobs, {
       row(index, row) {
-        rows[index] = row;
+        texts[index] = row;
         done++;
-        setProgress(done, current.jobs);
+        setProgress(done, info.jobs);
         const elapsed = (performance.now() - started) / 1000;
-        const left = (elapsed / done) * (current.jobs - done);
-        status.textContent = `${done.toLocaleString('en-US')} / ${current.jobs.toLocaleString('en-US')} runs · ${formatNumber(elapsed)} s${done < current.jobs ? ` · about ${formatNumber(left)} s left` : ''}`;
-        if (performance.now() - lastPlot > 2500 && done < current.jobs) {
+        const left = (elapsed / done) * (info.jobs - done);
+        status.textContent = `${done.toLocaleString('en-US')} / ${info.jobs.toLocaleString('en-US')} runs · ${formatNumber(elapsed)} s${done < info.jobs ? ` · about ${formatNumber(left)} s left` : ''}`;
+        if (performance.now() - lastPlot > 2500 && done < info.jobs) {
           lastPlot = performance.now();
-          renderPlots(plots, current.plot, complete());
+          draw();
         }
       },
       error(message) {
@@ -102,9 +228,9 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
         running(false);
         pool = null;
         const elapsed = (performance.now() - started) / 1000;
-        status.textContent = `Done: ${current.jobs.toLocaleString('en-US')} runs in ${formatNumber(elapsed)} s.`;
-        renderPlots(plots, current.plot, rows);
-        csv.disabled = json.disabled = false;
+        status.textContent = `Done: ${info.jobs.toLocaleString('en-US')} runs in ${formatNumber(elapsed)} s.`;
+        draw();
+        exportable(true);
       },
     });
     pool.start(Number(workersInput.value) || cores);
@@ -114,15 +240,22 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     pool?.stop();
     pool = null;
     running(false);
-    const partial = rows.filter(Boolean);
+    const partial = finished();
     status.textContent = `Cancelled after ${partial.length} runs.`;
-    if (info && partial.length) {
-      renderPlots(plots, info.plot, partial);
-      csv.disabled = json.disabled = false;
+    if (ran && partial.length) {
+      draw();
+      exportable(true);
     }
   });
 
-  const name = () => info?.name ?? 'experiment';
-  csv.addEventListener('click', () => download(`${name()}.csv`, core.rowsToCsv(JSON.stringify(rows.filter(Boolean))), 'text/csv'));
-  json.addEventListener('click', () => download(`${name()}.json`, JSON.stringify(rows.filter(Boolean), null, 1), 'application/json'));
+  const save = (format: 'csv' | 'json' | 'traces') => {
+    if (!ran) return;
+    const ext = format === 'json' ? 'jsonl' : 'csv';
+    const name = format === 'traces' ? `${ran.info.name}-traces` : ran.info.name;
+    const text = core.experimentExport(ran.text, `[${finished().join(',')}]`, format, ran.time);
+    download(`${name}.${ext}`, text, format === 'json' ? 'application/x-ndjson' : 'text/csv');
+  };
+  csv.addEventListener('click', () => save('csv'));
+  json.addEventListener('click', () => save('json'));
+  traces.addEventListener('click', () => save('traces'));
 }

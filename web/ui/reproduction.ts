@@ -21,6 +21,9 @@ export interface Section {
 
 const sections = (report as { models: Record<string, Section> }).models;
 
+/** The event a reproduction section sends to open one of its experiments (detail: its name). */
+export const OPEN_EXPERIMENT = 'kumiki:open-experiment';
+
 const VERDICT_TEXT: Record<Finding['verdict'], string> = {
   holds: 'holds',
   differs: 'differs',
@@ -43,6 +46,14 @@ export function renderReproduction(root: HTMLElement, model: string) {
       text: `${section.findings.length} claims: ${count('holds')} hold, ${count('differs')} differ, ${count('not_stated')} with no comparison stated. Each figure comes from the built-in experiments (${section.experiments.join(', ')}), seeded, so the command line's “kumiki reproduce” gives the same.`,
     }),
   );
+  // Each experiment behind the figures opens in the Experiments tab, ready to run again.
+  const open = el('p', { class: 'row-buttons' });
+  for (const name of section.experiments) {
+    const button = el('button', { type: 'button', text: name, 'aria-label': `Open the experiment ${name} in the Experiments tab` });
+    button.addEventListener('click', () => window.dispatchEvent(new CustomEvent(OPEN_EXPERIMENT, { detail: name })));
+    open.append(button);
+  }
+  root.append(el('p', { class: 'hint', text: 'Open an experiment to run it again:' }), open);
   const table = el('table', { class: 'findings' });
   table.append(
     el('caption', { text: `Reproduction of ${section.model}'s paper` }),

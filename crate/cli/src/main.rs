@@ -19,6 +19,7 @@ use std::process::ExitCode;
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use kumiki_core::experiment::{self, Experiment, Row, PROGRAM_VERSION};
+use kumiki_core::export::{self, Provenance};
 use kumiki_core::scenario::{parse_override, MAX_SEED, MAX_STEPS};
 use kumiki_core::{hash, lessons, link, presets, Limits, Run, Scenario};
 use serde_json::Value;
@@ -206,6 +207,11 @@ impl Size {
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum PlotFormat {
+    Svg,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Format {
     Json,
     Csv,
@@ -247,6 +253,19 @@ struct SweepArgs {
     experiment: String,
     #[arg(long, value_enum, default_value_t = Format::Json)]
     format: Format,
+    /// Also draw the experiment's plots: one EXPERIMENT-N.svg per plot, in --plot-dir
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    plot: Option<PlotFormat>,
+    /// Where --plot writes its files
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    plot_dir: PathBuf,
+    /// Print per condition n, mean, sd, median, IQR and 95% interval (and, for two conditions,
+    /// effect sizes and the Mann-Whitney U test) as JSON lines instead of the rows
+    #[arg(long, conflicts_with = "shard")]
+    summary: bool,
+    /// Also write the traced metrics in long form (run, step, metric, unit, value) as CSV to FILE
+    #[arg(long, value_name = "FILE", conflicts_with = "shard")]
+    traces: Option<PathBuf>,
     #[command(flatten)]
     jobs: Jobs,
     /// Run only shard I of N (I from 0) of the jobs, as JSON lines for kumiki merge
@@ -385,11 +404,11 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
                         .map_err(|e| format!("{}: {e}", f.display()))
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let (command, rows) = shard::merge(&texts)?;
+            let (command, provenance, rows) = shard::merge(&texts)?;
             write!(
                 out,
                 "{}",
-                shard::write(command, &rows, format == Format::Csv)
+                shard::write(command, provenance.as_ref(), &rows, format == Format::Csv)
             )?;
         }
         Some(Command::Bench { files, jobs }) => {
@@ -600,8 +619,10 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
         shard: args.shard,
         threads: args.jobs.threads(),
         progress: args.seeds.is_some(),
+        provenance: None,
+        quiet: false,
     };
-    output.emit(seeds.len(), out, |i| {
+    output.emit(seeds.len(), out, false, |i| {
         let mut s = scenario.clone();
         s.seed = seeds[i];
         let mut run = Run::new(s).expect("the scenario was validated");
@@ -612,7 +633,8 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
             scenario_hash.clone(),
             None,
         ))
-    })
+    })?;
+    Ok(())
 }
 
 fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
@@ -626,6 +648,8 @@ fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
         Experiment::named_or_json_within(target, args.size.limits())?
     };
     let jobs = experiment.jobs();
+    let provenance = Provenance::of(&experiment, &now_utc());
+    let keep = args.plot.is_some() || args.summary || args.traces.is_some();
     let output = Output {
         command: shard::Command::Sweep,
         source: experiment.name.clone(),
@@ -633,10 +657,79 @@ fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
         shard: args.shard,
         threads: args.jobs.threads(),
         progress: true,
+        provenance: Some(provenance.clone()),
+        quiet: args.summary,
     };
-    output.emit(jobs.len(), out, |i| {
+    let rows = output.emit(jobs.len(), out, keep, |i| {
         experiment.run_job(&jobs[i]).map_err(|e| e.to_string())
-    })
+    })?;
+    let models: Vec<&str> = experiment.scenarios.iter().map(Scenario::model).collect();
+    let figures = kumiki_core::plot::figure::figures(&experiment.plots, &rows, &models);
+    if args.summary {
+        for f in figures.iter().filter(|f| f.kind == "summary") {
+            for r in &f.table {
+                writeln!(
+                    out,
+                    "{}",
+                    serde_json::json!({"figure": f.title, "condition": r.condition, "runs": r.runs, "completed": r.completed, "value": r.value, "unit": r.unit, "stats": r.stats})
+                )?;
+            }
+            for c in &f.comparisons {
+                writeln!(
+                    out,
+                    "{}",
+                    serde_json::json!({"figure": f.title, "value": c.value, "conditions": c.conditions, "comparison": c.comparison})
+                )?;
+            }
+        }
+    }
+    if let Some(PlotFormat::Svg) = args.plot {
+        std::fs::create_dir_all(&args.plot_dir)
+            .map_err(|e| format!("{}: {e}", args.plot_dir.display()))?;
+        for (i, f) in figures.iter().enumerate() {
+            let path = args
+                .plot_dir
+                .join(format!("{}-{}.svg", experiment.name, i + 1));
+            std::fs::write(&path, kumiki_core::plot::svg::svg(f))
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            eprintln!("kumiki: wrote {}", path.display());
+        }
+    }
+    if let Some(path) = &args.traces {
+        std::fs::write(path, export::trace_csv(&provenance, &rows))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(())
+}
+
+/// Now as RFC 3339 UTC to the second, or the time `SOURCE_DATE_EPOCH` gives (the
+/// reproducible-builds convention), so a rerun can write the same bytes.
+fn now_utc() -> String {
+    let secs = std::env::var("SOURCE_DATE_EPOCH")
+        .ok()
+        .and_then(|s| s.trim().parse::<i64>().ok())
+        .unwrap_or_else(|| {
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs() as i64)
+        });
+    let (days, rest) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
+    // Howard Hinnant's civil_from_days.
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
 }
 
 /// How the rows of `run` and `sweep` are computed and written.
@@ -648,6 +741,10 @@ struct Output {
     threads: usize,
     /// Whether a progress bar is worth showing (when stderr is a terminal).
     progress: bool,
+    /// Written before the rows (a sweep's): a JSON line, or CSV comment lines.
+    provenance: Option<Provenance>,
+    /// Write no rows (`--summary` prints its statistics instead).
+    quiet: bool,
 }
 
 impl Output {
@@ -657,8 +754,9 @@ impl Output {
         &self,
         total: usize,
         out: &mut impl Write,
+        keep: bool,
         work: impl Fn(usize) -> Result<Row, String> + Sync,
-    ) -> Result<(), Failure> {
+    ) -> Result<Vec<Row>, Failure> {
         if self.shard.is_some() && self.format == Format::Csv {
             return Err(Failure::Run(
                 "a shard is written as JSON lines; give --format csv to kumiki merge instead"
@@ -674,6 +772,9 @@ impl Output {
             false => ProgressBar::hidden(),
         };
         let mut rows: Vec<Row> = Vec::new();
+        if let (Some(p), false) = (&self.provenance, self.quiet || self.format == Format::Csv) {
+            writeln!(out, "{}", serde_json::json!({ "provenance": p }))?;
+        }
         pool::run_ordered(
             indices.len(),
             self.threads,
@@ -681,6 +782,12 @@ impl Output {
             |k, row| -> Result<(), Failure> {
                 let row = row?;
                 bar.inc(1);
+                if keep {
+                    rows.push(row.clone());
+                }
+                if self.quiet {
+                    return Ok(());
+                }
                 match (self.shard, self.format) {
                     (Some(_), _) => {
                         let tag = Tag {
@@ -694,16 +801,21 @@ impl Output {
                     (None, Format::Json) => {
                         writeln!(out, "{}", shard::json_line(self.command, &row))?
                     }
-                    (None, Format::Csv) => rows.push(row),
+                    (None, Format::Csv) if !keep => rows.push(row),
+                    (None, Format::Csv) => {}
                 }
                 Ok(())
             },
         )?;
         bar.finish_and_clear();
-        if self.format == Format::Csv {
-            write!(out, "{}", experiment::to_csv(&rows))?;
+        if self.format == Format::Csv && !self.quiet {
+            let text = match &self.provenance {
+                Some(p) => export::csv(p, &rows),
+                None => experiment::to_csv(&rows),
+            };
+            write!(out, "{text}")?;
         }
-        Ok(())
+        Ok(rows)
     }
 }
 

@@ -13,6 +13,7 @@ use std::collections::BTreeMap;
 use std::str::FromStr;
 
 use kumiki_core::experiment::{self, Row};
+use kumiki_core::export::{self, Provenance};
 use kumiki_core::Outcome;
 use serde::{Deserialize, Serialize};
 
@@ -104,17 +105,49 @@ pub fn json_line(command: Command, row: &Row) -> String {
     .expect("rows serialise")
 }
 
-/// Rows in the unsharded order, from the text of shard files (name, text), in any order.
-pub fn merge(files: &[(String, String)]) -> Result<(Command, Vec<Row>), String> {
+/// A sweep shard's first line: the provenance of the sweep.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Header {
+    provenance: Provenance,
+}
+
+/// Rows in the unsharded order, and a sweep's provenance, from the text of shard files (name,
+/// text), in any order. Shards of one sweep must agree on the provenance, the time aside (each
+/// task starts at its own time); the merged output carries the earliest.
+pub fn merge(
+    files: &[(String, String)],
+) -> Result<(Command, Option<Provenance>, Vec<Row>), String> {
     let mut first: Option<(String, Tag)> = None;
     let mut rows: BTreeMap<usize, Row> = BTreeMap::new();
     let mut version: Option<String> = None;
+    let mut provenance: Option<(String, Provenance)> = None;
     for (name, text) in files {
         for (n, line) in text.lines().enumerate() {
             if line.trim().is_empty() {
                 continue;
             }
             let at = format!("{name}:{}", n + 1);
+            if let Ok(Header { provenance: p }) = serde_json::from_str(line) {
+                match &mut provenance {
+                    None => provenance = Some((at, p)),
+                    Some((where_, one)) => {
+                        let same = Provenance {
+                            time: one.time.clone(),
+                            ..p.clone()
+                        };
+                        if same != *one {
+                            return Err(format!(
+                                "{at}: a different sweep (program, models or experiment) from {where_}"
+                            ));
+                        }
+                        if p.time < one.time {
+                            one.time = p.time;
+                        }
+                    }
+                }
+                continue;
+            }
             let Line { shard, row } = serde_json::from_str(line).map_err(|e| {
                 format!("{at}: not a row of a shard ({e}); shards are written by --shard I/N")
             })?;
@@ -178,15 +211,20 @@ pub fn merge(files: &[(String, String)]) -> Result<(Command, Vec<Row>), String> 
             tag.jobs
         ));
     }
-    Ok((tag.command, rows.into_values().collect()))
+    Ok((
+        tag.command,
+        provenance.map(|(_, p)| p),
+        rows.into_values().collect(),
+    ))
 }
 
 /// The merged rows written the way the unsharded command writes them.
-pub fn write(command: Command, rows: &[Row], csv: bool) -> String {
-    if csv {
-        experiment::to_csv(rows)
-    } else {
-        rows.iter().map(|r| json_line(command, r) + "\n").collect()
+pub fn write(command: Command, provenance: Option<&Provenance>, rows: &[Row], csv: bool) -> String {
+    match (csv, provenance) {
+        (true, Some(p)) => export::csv(p, rows),
+        (true, None) => experiment::to_csv(rows),
+        (false, Some(p)) if command == Command::Sweep => export::json_lines(p, rows),
+        (false, _) => rows.iter().map(|r| json_line(command, r) + "\n").collect(),
     }
 }
 

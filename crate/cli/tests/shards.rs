@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn kumiki(args: &[&str]) -> Output {
+    // A fixed time, so the provenance of every shard and of the whole sweep is the same.
     Command::new(env!("CARGO_BIN_EXE_kumiki"))
+        .env("SOURCE_DATE_EPOCH", "1700000000")
         .args(args)
         .output()
         .expect("the kumiki binary runs")

@@ -25,6 +25,7 @@ use crate::error::{Error, Result};
 use crate::hash;
 use crate::limits::Limits;
 use crate::models::Metrics;
+use crate::plot::{self, PlotSpec};
 use crate::presets;
 use crate::run::Run;
 use crate::scenario::{canonical, Scenario, MAX_SEED};
@@ -43,8 +44,12 @@ pub struct Experiment {
     pub set: Vec<(String, Value)>,
     pub seeds: Vec<u64>,
     pub trace: Option<TraceSpec>,
-    /// How the page draws the result; opaque to the core.
+    /// The plots as written in the file (absent: `null`).
     pub plot: Value,
+    /// The plots, read and checked against the experiment's grid, models and traces.
+    pub plots: Vec<PlotSpec>,
+    /// The experiment as read, for the provenance of its exports.
+    pub definition: Value,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -140,6 +145,7 @@ impl Experiment {
 
     /// [`Experiment::from_value`] with scenarios (and their grid values) held to `limits`.
     pub fn from_value_within(value: Value, limits: &'static Limits) -> Result<Experiment> {
+        let definition = value.clone();
         let Value::Object(mut map) = value else {
             return Err(Error::field("", "an experiment is a JSON object"));
         };
@@ -274,6 +280,38 @@ impl Experiment {
                 "unknown field; expected version, name, title, description, scenarios, grid, set, seeds, trace or plot",
             ));
         }
+        let models: Vec<&str> = {
+            let mut m: Vec<&str> = scenarios.iter().map(Scenario::model).collect();
+            m.dedup();
+            m
+        };
+        if let Some(t) = &trace {
+            for (i, name) in t.metrics.iter().enumerate() {
+                if !models
+                    .iter()
+                    .any(|m| crate::models::metric_info(m, name).is_some())
+                {
+                    return Err(Error::field(
+                        format!("trace.metrics[{i}]"),
+                        format!(
+                            "'{name}' is not a metric of {} (see kumiki metrics)",
+                            models.join(" or ")
+                        ),
+                    ));
+                }
+            }
+        }
+        let plots = PlotSpec::read_all(
+            plot.clone(),
+            &plot::Context {
+                params: grid.iter().map(|(k, _)| k.as_str()).collect(),
+                models,
+                traced: trace
+                    .iter()
+                    .flat_map(|t| t.metrics.iter().map(String::as_str))
+                    .collect(),
+            },
+        )?;
         let experiment = Experiment {
             name,
             title,
@@ -284,6 +322,8 @@ impl Experiment {
             seeds,
             trace,
             plot,
+            plots,
+            definition,
         };
         let combos = experiment.scenarios.len() * experiment.combinations().len();
         if combos.saturating_mul(experiment.seeds.len()) > MAX_JOBS {
@@ -402,7 +442,8 @@ fn canonical_params(params: &[(String, Value)]) -> Map<String, Value> {
     }
 }
 
-/// Rows as CSV: fixed columns, then `params.*` and `metrics.*` columns in sorted order.
+/// Rows as CSV: fixed columns, then `params.*` and `metrics.*` columns in sorted order; a
+/// column of a quantity with a unit names it in brackets (`metrics.total_steps [robot steps]`).
 pub fn to_csv(rows: &[Row]) -> String {
     let mut params: Vec<&String> = rows.iter().flat_map(|r| r.params.keys()).collect();
     params.sort();
@@ -410,12 +451,16 @@ pub fn to_csv(rows: &[Row]) -> String {
     let mut metrics: Vec<&String> = rows.iter().flat_map(|r| r.metrics.keys()).collect();
     metrics.sort();
     metrics.dedup();
-    let mut out = String::from("scenario,seed,completed,steps,hash,scenario_hash,version");
+    let mut out = String::from("scenario,seed,completed,steps [steps],hash,scenario_hash,version");
     for p in &params {
         out.push_str(&format!(",{}", csv_field(&format!("params.{p}"))));
     }
     for m in &metrics {
-        out.push_str(&format!(",{}", csv_field(&format!("metrics.{m}"))));
+        let column = match crate::export::metric_unit(m) {
+            Some(unit) => format!("metrics.{m} [{unit}]"),
+            None => format!("metrics.{m}"),
+        };
+        out.push_str(&format!(",{}", csv_field(&column)));
     }
     out.push('\n');
     for r in rows {
@@ -501,7 +546,7 @@ mod tests {
         let lines: Vec<&str> = csv.lines().collect();
         assert_eq!(
             lines[0],
-            "scenario,seed,completed,steps,hash,scenario_hash,version,params.p,metrics.m"
+            "scenario,seed,completed,steps [steps],hash,scenario_hash,version,params.p,metrics.m"
         );
         assert_eq!(
             lines[1],

@@ -18,6 +18,7 @@
 pub mod error;
 pub mod exercise;
 pub mod experiment;
+pub mod export;
 pub mod grading;
 pub mod hash;
 pub mod json;
@@ -28,6 +29,7 @@ pub mod link;
 pub mod math;
 pub mod models;
 pub mod playback;
+pub mod plot;
 pub mod presets;
 pub mod reproduce;
 pub mod rng;

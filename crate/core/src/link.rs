@@ -119,22 +119,44 @@ fn shown_byte(byte: u8) -> String {
     }
 }
 
+/// Version prefix of an experiment link's payload.
+pub const EXPERIMENT_PREFIX: &str = "x1.";
+
+/// The fragment payload for an experiment (a checked experiment's JSON, without the `#`): `x1.`
+/// and the raw-deflated canonical JSON in unpadded base64url, like a scenario link.
+pub fn pack_experiment(doc: &Value) -> String {
+    let json = canonical(doc.clone()).to_string();
+    let packed = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 9);
+    format!("{EXPERIMENT_PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
+}
+
+/// The experiment JSON inside an experiment link (a URL, a `#fragment` or the payload), not yet
+/// checked.
+pub fn unpack_experiment(link: &str) -> Result<String> {
+    decode_payload(link, EXPERIMENT_PREFIX)
+}
+
 /// The JSON inside a link (the scenario and its model version), not yet validated.
 pub fn decode_json(link: &str) -> Result<String> {
+    decode_payload(link, PREFIX)
+}
+
+fn decode_payload(link: &str, prefix: &str) -> Result<String> {
     let link = link.trim();
     let fragment = match link.rfind('#') {
         Some(i) => &link[i + 1..],
         None => link,
     };
-    let payload = fragment.strip_prefix(PREFIX).ok_or_else(|| {
-        if fragment.len() > 1 && fragment.as_bytes()[0] == b'k' && fragment.contains('.') {
+    let kind = prefix.as_bytes()[0];
+    let payload = fragment.strip_prefix(prefix).ok_or_else(|| {
+        if fragment.len() > 1 && fragment.as_bytes()[0] == kind && fragment.contains('.') {
             Error::Link(format!(
-                "made by another Kumiki version ('{}'); this one reads '{PREFIX}' links",
+                "made by another Kumiki version ('{}'); this one reads '{prefix}' links",
                 fragment.split('.').next().unwrap_or_default()
             ))
         } else {
             Error::Link(format!(
-                "a Kumiki link starts with '{PREFIX}' after the '#'"
+                "a Kumiki link starts with '{prefix}' after the '#'"
             ))
         }
     })?;
@@ -142,7 +164,7 @@ pub fn decode_json(link: &str) -> Result<String> {
         .decode(payload.trim_end_matches('='))
         .map_err(|e| match e {
             base64::DecodeError::InvalidByte(at, byte) => Error::Link(format!(
-                "the link is damaged: it holds {}, which no Kumiki link has (character {} after '{PREFIX}')",
+                "the link is damaged: it holds {}, which no Kumiki link has (character {} after '{prefix}')",
                 shown_byte(byte),
                 at + 1
             )),

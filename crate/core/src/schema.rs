@@ -180,7 +180,7 @@ pub fn experiment() -> Value {
                 "required": ["metrics"],
                 "additionalProperties": false,
             },
-            "plot": { "description": "How the page draws the rows; the core does not read it." },
+            "plot": { "description": "How the rows are drawn: one plot specification or a list (docs/experiments.md), checked when the experiment is read." },
         },
         "required": ["version", "name", "scenarios"],
         "additionalProperties": false,

@@ -668,6 +668,8 @@ struct ExperimentInfo<'a> {
     description: &'a str,
     jobs: usize,
     plot: &'a Value,
+    /// Whether the runs trace metrics (the traces can be exported in long form).
+    traced: bool,
 }
 
 #[wasm_bindgen]
@@ -688,6 +690,7 @@ impl ExperimentRunner {
             description: &e.description,
             jobs: self.jobs.len(),
             plot: &e.plot,
+            traced: e.trace.is_some(),
         })
     }
 
@@ -695,13 +698,15 @@ impl ExperimentRunner {
         self.jobs.len() as u32
     }
 
-    /// Runs job `index` and returns its row.
-    pub fn run(&self, index: u32) -> Result<JsValue, JsError> {
+    /// Runs job `index` and returns its row as JSON text, exactly as `kumiki sweep` writes it:
+    /// kept as text, a real 1.0 stays 1.0 in the page's exports.
+    pub fn run(&self, index: u32) -> Result<String, JsError> {
         let job = self
             .jobs
             .get(index as usize)
             .ok_or_else(|| JsError::new("no such job"))?;
-        to_js(&self.experiment.run_job(job).map_err(js_err)?)
+        let row = self.experiment.run_job(job).map_err(js_err)?;
+        serde_json::to_string(&row).map_err(js_err)
     }
 }
 
@@ -719,6 +724,7 @@ pub fn experiments() -> Result<JsValue, JsError> {
             description: &r.experiment.description,
             jobs: r.jobs.len(),
             plot: &r.experiment.plot,
+            traced: r.experiment.trace.is_some(),
         })
         .collect();
     to_js(&infos)
@@ -732,9 +738,65 @@ pub fn experiment_json(name: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
-/// Rows (as JSON text) to CSV, the same columns as `kumiki sweep --format csv`.
+/// An experiment's link payload (`x1.…`, without the `#`), after checking the experiment.
 #[wasm_bindgen]
-pub fn rows_to_csv(rows_json: &str) -> Result<String, JsError> {
+pub fn pack_experiment(experiment_json: &str) -> Result<String, JsError> {
+    let e = Experiment::from_json(experiment_json).map_err(js_err)?;
+    Ok(link::pack_experiment(&e.definition))
+}
+
+/// The experiment JSON (pretty) inside an experiment link; checked, so a bad one is an error.
+#[wasm_bindgen]
+pub fn unpack_experiment(link_text: &str) -> Result<String, JsError> {
+    let json = link::unpack_experiment(link_text).map_err(js_err)?;
+    let e = Experiment::from_json(&json).map_err(js_err)?;
+    serde_json::to_string_pretty(&e.definition).map_err(js_err)
+}
+
+#[derive(Serialize)]
+struct Drawn {
+    figure: kumiki_core::plot::figure::Figure,
+    svg: String,
+}
+
+/// The figures of an experiment's plots from its rows (a JSON array of rows as
+/// `ExperimentRunner::run` gives them): each figure's data and its SVG, as `kumiki sweep --plot
+/// svg` draws it.
+#[wasm_bindgen]
+pub fn experiment_figures(experiment_json: &str, rows_json: &str) -> Result<JsValue, JsError> {
+    let e = Experiment::named_or_json(experiment_json).map_err(js_err)?;
     let rows = json::parse_rows(rows_json).map_err(js_err)?;
-    Ok(kumiki_core::experiment::to_csv(&rows))
+    let models: Vec<&str> = e.scenarios.iter().map(Scenario::model).collect();
+    let drawn: Vec<Drawn> = kumiki_core::plot::figure::figures(&e.plots, &rows, &models)
+        .into_iter()
+        .map(|figure| Drawn {
+            svg: kumiki_core::plot::svg::svg(&figure),
+            figure,
+        })
+        .collect();
+    to_js(&drawn)
+}
+
+/// An experiment's rows (a JSON array of row texts) exported with their provenance, the bytes
+/// `kumiki sweep` writes: `format` is `csv`, `json` (JSON lines) or `traces` (the traced
+/// metrics in long form, as `--traces`); `time` is when the sweep ran (RFC 3339).
+#[wasm_bindgen]
+pub fn experiment_export(
+    experiment_json: &str,
+    rows_json: &str,
+    format: &str,
+    time: &str,
+) -> Result<String, JsError> {
+    use kumiki_core::export;
+    let e = Experiment::named_or_json(experiment_json).map_err(js_err)?;
+    let rows = json::parse_rows(rows_json).map_err(js_err)?;
+    let p = export::Provenance::of(&e, time);
+    match format {
+        "csv" => Ok(export::csv(&p, &rows)),
+        "json" => Ok(export::json_lines(&p, &rows)),
+        "traces" => Ok(export::trace_csv(&p, &rows)),
+        other => Err(JsError::new(&format!(
+            "'{other}' is not an export format; expected csv, json or traces"
+        ))),
+    }
 }

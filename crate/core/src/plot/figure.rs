@@ -1,0 +1,617 @@
+//! What a plot draws, computed from the rows: panels of series of points (the statistic, its
+//! spread and n at each x), axis labels with units, legends in words, and the statistic and
+//! spread named in words from the spec. The SVG ([`super::svg`]) draws exactly this, and the
+//! tests check that each point is the statistic the figure names.
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+use serde_json::Value;
+
+use super::stats::{Comparison, Stats};
+use super::{statistic_of, Carry, PlotSpec, Spread, Statistic, Where};
+use crate::experiment::Row;
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Figure {
+    pub kind: &'static str,
+    /// The spec's title.
+    pub title: String,
+    /// What is drawn, in words, from the spec and the rows: "median and interquartile range of
+    /// 10 runs per point".
+    pub described: String,
+    pub statistic: Option<Statistic>,
+    pub spread: Option<Spread>,
+    pub x_label: String,
+    pub y_label: String,
+    pub log_y: bool,
+    pub panels: Vec<Panel>,
+    /// For `summary`: one row per condition and value.
+    pub table: Vec<SummaryRow>,
+    /// For `summary` with exactly two conditions: one comparison per value.
+    pub comparisons: Vec<ComparisonRow>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Panel {
+    /// The facet, in words ("tip load: 0"); empty without facets.
+    pub title: String,
+    /// Category names of a bar chart (x is the category's index).
+    pub categories: Vec<String>,
+    /// Width of a histogram's bins.
+    pub bin_width: Option<f64>,
+    pub series: Vec<Series>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Series {
+    /// In words: "collision: token", "adaptation: on".
+    pub label: String,
+    pub points: Vec<Point>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Point {
+    pub x: f64,
+    pub y: f64,
+    /// The spread's ends, when one is drawn.
+    pub band: Option<[f64; 2]>,
+    /// Runs behind the point.
+    pub n: usize,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SummaryRow {
+    /// The condition: one value per group path, in words.
+    pub condition: Vec<String>,
+    pub runs: usize,
+    pub completed: usize,
+    pub value: String,
+    pub unit: String,
+    pub stats: Option<Stats>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ComparisonRow {
+    pub value: String,
+    /// The two conditions, first and second.
+    pub conditions: [String; 2],
+    pub comparison: Comparison,
+}
+
+/// A value of a row by path: `steps`, `params.robots`, `metrics.total_steps`.
+pub fn value_at<'a>(row: &'a Row, path: &str) -> Option<std::borrow::Cow<'a, Value>> {
+    use std::borrow::Cow;
+    if let Some(k) = path.strip_prefix("params.") {
+        return row.params.get(k).map(Cow::Borrowed);
+    }
+    if let Some(k) = path.strip_prefix("metrics.") {
+        return row.metrics.get(k).map(Cow::Borrowed);
+    }
+    Some(Cow::Owned(match path {
+        "scenario" => row.scenario.clone().into(),
+        "seed" => row.seed.into(),
+        "completed" => row.completed.into(),
+        "steps" => row.steps.into(),
+        "hash" => row.hash.clone().into(),
+        _ => return None,
+    }))
+}
+
+/// The number a value plots as: a flag as 0 or 1, anything else not a number as NaN.
+pub fn number(v: Option<&Value>) -> f64 {
+    match v {
+        Some(Value::Number(n)) => n.as_f64().unwrap_or(f64::NAN),
+        Some(Value::Bool(b)) => f64::from(u8::from(*b)),
+        _ => f64::NAN,
+    }
+}
+
+fn num_at(row: &Row, path: &str) -> f64 {
+    number(value_at(row, path).as_deref())
+}
+
+/// A value in words: a flag as on/off, text as itself, a number as written.
+pub fn words(v: Option<&Value>) -> String {
+    match v {
+        None | Some(Value::Null) => "none".into(),
+        Some(Value::Bool(true)) => "on".into(),
+        Some(Value::Bool(false)) => "off".into(),
+        Some(Value::String(s)) => s.clone(),
+        Some(other) => other.to_string(),
+    }
+}
+
+/// A path's name in words: `params.tip_load` is "tip load", `params.disturbances.0.count`
+/// "disturbances 0 count".
+pub fn name_of(path: &str) -> String {
+    let short = path
+        .strip_prefix("params.")
+        .or_else(|| path.strip_prefix("metrics."))
+        .unwrap_or(path);
+    short.replace(['_', '.'], " ")
+}
+
+/// The unit of a path, from the models' metric tables (the first model that has the metric).
+pub fn unit_of(path: &str, models: &[&str]) -> Option<&'static str> {
+    if path == "steps" {
+        return Some("steps");
+    }
+    let name = path.strip_prefix("metrics.")?;
+    models
+        .iter()
+        .find_map(|m| crate::models::metric_info(m, name))
+        .map(|i| i.unit)
+}
+
+/// An axis label: the spec's, or the path's name; with the unit in brackets unless it says it.
+fn axis_label(given: Option<&str>, path: &str, models: &[&str]) -> String {
+    let label = given.map_or_else(|| name_of(path), str::to_string);
+    match unit_of(path, models) {
+        Some(unit) if !label.contains(unit) => format!("{label} [{unit}]"),
+        _ => label,
+    }
+}
+
+fn group_by<'a>(rows: &[&'a Row], path: Option<&str>) -> Vec<(String, Vec<&'a Row>)> {
+    let Some(path) = path else {
+        return vec![(String::new(), rows.to_vec())];
+    };
+    let mut order: Vec<(String, Vec<&Row>)> = Vec::new();
+    for r in rows {
+        let k = words(value_at(r, path).as_deref());
+        match order.iter_mut().find(|(key, _)| *key == k) {
+            Some((_, list)) => list.push(r),
+            None => order.push((k, vec![r])),
+        }
+    }
+    order
+}
+
+/// The statistic and band of `values` as the figure draws them.
+pub fn point_of(
+    values: &[f64],
+    statistic: Statistic,
+    spread: Spread,
+) -> Option<(f64, Option<[f64; 2]>, usize)> {
+    let s = Stats::of(values)?;
+    let y = match statistic {
+        Statistic::Mean => s.mean,
+        Statistic::Median => s.median,
+    };
+    let band = match spread {
+        Spread::None => None,
+        Spread::Minmax => Some([s.min, s.max]),
+        Spread::Sd => Some([(s.mean - s.sd).max(s.min), (s.mean + s.sd).min(s.max)]),
+        Spread::Ci95 => Some(s.ci95),
+        Spread::Iqr => Some([s.q1, s.q3]),
+    };
+    Some((y, band, s.n))
+}
+
+/// "mean", "median".
+pub fn statistic_words(s: Statistic) -> &'static str {
+    match s {
+        Statistic::Mean => "mean",
+        Statistic::Median => "median",
+    }
+}
+
+/// The spread in words, as the figure names it.
+pub fn spread_words(s: Spread) -> &'static str {
+    match s {
+        Spread::None => "",
+        Spread::Minmax => "min to max",
+        Spread::Sd => "± one standard deviation (clipped to the runs' range)",
+        Spread::Ci95 => "95% confidence interval",
+        Spread::Iqr => "interquartile range",
+    }
+}
+
+/// "3 runs", "3 to 10 runs", from the points' n.
+fn runs_words(panels: &[Panel]) -> String {
+    let ns: Vec<usize> = panels
+        .iter()
+        .flat_map(|p| p.series.iter().flat_map(|s| s.points.iter().map(|p| p.n)))
+        .collect();
+    match (ns.iter().min(), ns.iter().max()) {
+        (Some(a), Some(b)) if a == b => format!("n = {a} {}", if *a == 1 { "run" } else { "runs" }),
+        (Some(a), Some(b)) => format!("n = {a} to {b} runs"),
+        _ => "no runs".into(),
+    }
+}
+
+/// Every figure of an experiment's plots, from its rows.
+pub fn figures(specs: &[PlotSpec], rows: &[Row], models: &[&str]) -> Vec<Figure> {
+    specs.iter().map(|s| figure(s, rows, models)).collect()
+}
+
+pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
+    let all: Vec<&Row> = rows.iter().collect();
+    let mut f = Figure {
+        kind: "",
+        title: spec.title().to_string(),
+        described: String::new(),
+        statistic: None,
+        spread: None,
+        x_label: String::new(),
+        y_label: String::new(),
+        log_y: false,
+        panels: Vec::new(),
+        table: Vec::new(),
+        comparisons: Vec::new(),
+    };
+    match spec {
+        PlotSpec::Lines(s) => {
+            let spread = s.spread.unwrap_or(Spread::Minmax);
+            let statistic = statistic_of(s.statistic, spread);
+            let ys = s.y.list();
+            f.kind = "lines";
+            f.x_label = axis_label(s.x_label.as_deref(), &s.x, models);
+            f.y_label = match ys.as_slice() {
+                [one] => axis_label(s.y_label.as_deref(), one, models),
+                _ => s.y_label.clone().unwrap_or_else(|| "value".into()),
+            };
+            f.log_y = s.log_y;
+            for (facet, part) in group_by(&all, s.facet.as_deref()) {
+                let mut series = Vec::new();
+                for y in &ys {
+                    let first = series.len();
+                    for (value, rows) in group_by(&part, s.series.as_deref()) {
+                        let label = [
+                            if ys.len() > 1 {
+                                name_of(y)
+                            } else {
+                                String::new()
+                            },
+                            s.series
+                                .as_deref()
+                                .map_or(String::new(), |p| format!("{}: {value}", name_of(p))),
+                        ]
+                        .into_iter()
+                        .filter(|t| !t.is_empty())
+                        .collect::<Vec<_>>()
+                        .join(", ");
+                        let mut by_x: BTreeMap<OrdF64, Vec<f64>> = BTreeMap::new();
+                        for r in &rows {
+                            let x = num_at(r, &s.x);
+                            if x.is_finite() {
+                                by_x.entry(OrdF64(x)).or_default().push(num_at(r, y));
+                            }
+                        }
+                        let points = by_x
+                            .into_iter()
+                            .filter_map(|(x, v)| {
+                                point_of(&v, statistic, spread).map(|(y, band, n)| Point {
+                                    x: x.0,
+                                    y,
+                                    band,
+                                    n,
+                                })
+                            })
+                            .collect();
+                        series.push(Series {
+                            label: if label.is_empty() { name_of(y) } else { label },
+                            points,
+                        });
+                    }
+                    // A quantity the series do not change (a bound) is one line, not several on
+                    // top of each other.
+                    let mine = &series[first..];
+                    if mine.len() > 1 && mine.iter().all(|m| m.points == mine[0].points) {
+                        let mut one = series[first].clone();
+                        one.label = name_of(y);
+                        series.truncate(first);
+                        series.push(one);
+                    }
+                }
+                f.panels.push(Panel {
+                    title: facet_title(s.facet.as_deref(), &facet),
+                    categories: Vec::new(),
+                    bin_width: None,
+                    series,
+                });
+            }
+            f.statistic = Some(statistic);
+            f.spread = Some(spread);
+            f.described = described(statistic, spread, &f.panels, "point");
+        }
+        PlotSpec::Trace(s) => {
+            let spread = s.spread.unwrap_or(Spread::Sd);
+            let statistic = statistic_of(s.statistic, spread);
+            let carry = s.carry.unwrap_or(Carry::Last) == Carry::Last;
+            f.kind = "trace";
+            f.x_label = s.x_label.clone().unwrap_or_else(|| "step".into());
+            f.y_label = axis_label(s.y_label.as_deref(), &format!("metrics.{}", s.y), models);
+            let traced: Vec<&Row> = all
+                .iter()
+                .copied()
+                .filter(|r| {
+                    r.trace
+                        .as_ref()
+                        .is_some_and(|t| t.values.contains_key(&s.y))
+                })
+                .collect();
+            let mut steps: Vec<u64> = traced
+                .iter()
+                .flat_map(|r| r.trace.as_ref().unwrap().step.iter().copied())
+                .collect();
+            steps.sort_unstable();
+            steps.dedup();
+            if steps.len() > 1500 {
+                let every = steps.len().div_ceil(1500);
+                let last = steps.len() - 1;
+                steps = steps
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(i, _)| i % every == 0 || *i == last)
+                    .map(|(_, s)| s)
+                    .collect();
+            }
+            for (facet, part) in group_by(&traced, s.facet.as_deref()) {
+                let mut series = Vec::new();
+                for (value, rows) in group_by(&part, s.series.as_deref()) {
+                    let cols: Vec<Vec<f64>> = rows
+                        .iter()
+                        .map(|r| sampled(r, &s.y, &steps, carry))
+                        .collect();
+                    let points = steps
+                        .iter()
+                        .enumerate()
+                        .filter_map(|(k, &step)| {
+                            let v: Vec<f64> = cols.iter().map(|c| c[k]).collect();
+                            point_of(&v, statistic, spread).map(|(y, band, n)| Point {
+                                x: step as f64,
+                                y,
+                                band,
+                                n,
+                            })
+                        })
+                        .collect();
+                    series.push(Series {
+                        label: s
+                            .series
+                            .as_deref()
+                            .map_or_else(|| name_of(&s.y), |p| format!("{}: {value}", name_of(p))),
+                        points,
+                    });
+                }
+                f.panels.push(Panel {
+                    title: facet_title(s.facet.as_deref(), &facet),
+                    categories: Vec::new(),
+                    bin_width: None,
+                    series,
+                });
+            }
+            f.statistic = Some(statistic);
+            f.spread = Some(spread);
+            f.described = described(statistic, spread, &f.panels, "step");
+        }
+        PlotSpec::Histogram(s) => {
+            let bins = s.bins.unwrap_or(20) as usize;
+            let use_rows: Vec<&Row> = all
+                .iter()
+                .copied()
+                .filter(|r| s.only != Some(Where::Completed) || r.completed)
+                .collect();
+            f.kind = "histogram";
+            f.x_label = axis_label(s.x_label.as_deref(), &s.value, models);
+            f.y_label = "runs".into();
+            let mut total = 0;
+            for (value, rows) in group_by(&use_rows, s.series.as_deref()) {
+                let values: Vec<f64> = rows
+                    .iter()
+                    .map(|r| num_at(r, &s.value))
+                    .filter(|v| v.is_finite())
+                    .collect();
+                total += values.len();
+                let (lo, hi) = values
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+                        (a.min(v), b.max(v))
+                    });
+                let width = if hi > lo {
+                    (hi - lo) / bins as f64
+                } else {
+                    1.0
+                };
+                let mut counts = vec![0usize; bins];
+                for v in &values {
+                    counts[(((v - lo) / width) as usize).min(bins - 1)] += 1;
+                }
+                let points = match values.is_empty() {
+                    true => Vec::new(),
+                    false => counts
+                        .iter()
+                        .enumerate()
+                        .map(|(i, &c)| Point {
+                            x: lo + (i as f64 + 0.5) * width,
+                            y: c as f64,
+                            band: None,
+                            n: c,
+                        })
+                        .collect(),
+                };
+                f.panels.push(Panel {
+                    title: facet_title(s.series.as_deref(), &value),
+                    categories: Vec::new(),
+                    bin_width: Some(width),
+                    series: vec![Series {
+                        label: "runs".into(),
+                        points,
+                    }],
+                });
+            }
+            f.described = format!(
+                "runs per bin, {bins} bins; n = {total} runs{}",
+                if s.only == Some(Where::Completed) {
+                    " that completed"
+                } else {
+                    ""
+                }
+            );
+        }
+        PlotSpec::Bars(s) => {
+            let spread = s.spread.unwrap_or(Spread::Minmax);
+            let statistic = statistic_of(s.statistic, spread);
+            f.kind = "bars";
+            f.x_label = s.x_label.clone().unwrap_or_else(|| name_of(&s.x));
+            f.y_label = axis_label(s.y_label.as_deref(), &s.y, models);
+            let cats: Vec<String> = group_by(&all, Some(&s.x))
+                .into_iter()
+                .map(|(k, _)| k)
+                .collect();
+            let mut series = Vec::new();
+            for (value, rows) in group_by(&all, s.series.as_deref()) {
+                let by_cat = group_by(&rows, Some(&s.x));
+                let points = cats
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, c)| {
+                        let part = &by_cat.iter().find(|(k, _)| k == c)?.1;
+                        let v: Vec<f64> = part.iter().map(|r| num_at(r, &s.y)).collect();
+                        point_of(&v, statistic, spread).map(|(y, band, n)| Point {
+                            x: i as f64,
+                            y,
+                            band,
+                            n,
+                        })
+                    })
+                    .collect();
+                series.push(Series {
+                    label: s
+                        .series
+                        .as_deref()
+                        .map_or_else(|| name_of(&s.y), |p| format!("{}: {value}", name_of(p))),
+                    points,
+                });
+            }
+            f.panels.push(Panel {
+                title: String::new(),
+                categories: cats,
+                bin_width: None,
+                series,
+            });
+            f.statistic = Some(statistic);
+            f.spread = Some(spread);
+            f.described = described(statistic, spread, &f.panels, "bar");
+        }
+        PlotSpec::Summary(s) => {
+            let group: Vec<String> = s.group.clone().unwrap_or_else(|| vec!["scenario".into()]);
+            let values: Vec<String> = s.values.clone().unwrap_or_else(|| vec!["steps".into()]);
+            f.kind = "summary";
+            let mut conditions: Vec<(Vec<String>, Vec<&Row>)> = Vec::new();
+            for r in &all {
+                let key: Vec<String> = group
+                    .iter()
+                    .map(|g| words(value_at(r, g).as_deref()))
+                    .collect();
+                match conditions.iter_mut().find(|(k, _)| *k == key) {
+                    Some((_, list)) => list.push(r),
+                    None => conditions.push((key, vec![r])),
+                }
+            }
+            for (key, part) in &conditions {
+                for v in &values {
+                    let xs: Vec<f64> = part.iter().map(|r| num_at(r, v)).collect();
+                    f.table.push(SummaryRow {
+                        condition: key.clone(),
+                        runs: part.len(),
+                        completed: part.iter().filter(|r| r.completed).count(),
+                        value: v.clone(),
+                        unit: unit_of(v, models).unwrap_or("").to_string(),
+                        stats: Stats::of(&xs),
+                    });
+                }
+            }
+            if let [(ka, a), (kb, b)] = conditions.as_slice() {
+                for v in &values {
+                    let xa: Vec<f64> = a.iter().map(|r| num_at(r, v)).collect();
+                    let xb: Vec<f64> = b.iter().map(|r| num_at(r, v)).collect();
+                    if let Some(c) = Comparison::of(&xa, &xb) {
+                        f.comparisons.push(ComparisonRow {
+                            value: v.clone(),
+                            conditions: [condition_words(&group, ka), condition_words(&group, kb)],
+                            comparison: c,
+                        });
+                    }
+                }
+            }
+            f.x_label = group
+                .iter()
+                .map(|g| name_of(g))
+                .collect::<Vec<_>>()
+                .join(", ");
+            f.described = format!(
+                "per condition: n, mean, sd, median, interquartile range and 95% confidence interval of the mean{}",
+                if f.comparisons.is_empty() { "" } else { "; the two conditions compared by Cohen's d, the rank-biserial correlation and the Mann-Whitney U test" }
+            );
+        }
+    }
+    f
+}
+
+/// A condition in words: "adaptation: on, tip load: 2".
+pub fn condition_words(group: &[String], key: &[String]) -> String {
+    group
+        .iter()
+        .zip(key)
+        .map(|(g, v)| format!("{}: {v}", name_of(g)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn facet_title(path: Option<&str>, value: &str) -> String {
+    path.map_or(String::new(), |p| format!("{}: {value}", name_of(p)))
+}
+
+fn described(statistic: Statistic, spread: Spread, panels: &[Panel], per: &str) -> String {
+    let spread = match spread {
+        Spread::None => String::new(),
+        s => format!(", {}", spread_words(s)),
+    };
+    format!(
+        "{}{spread}; {} per {per}",
+        statistic_words(statistic),
+        runs_words(panels)
+    )
+}
+
+/// A run's traced value at each of `steps`: its last sample at or before the step; after its
+/// last sample, that sample with `carry`, else NaN.
+fn sampled(row: &Row, metric: &str, steps: &[u64], carry: bool) -> Vec<f64> {
+    let t = row.trace.as_ref().expect("traced rows only");
+    let values = t.values.get(metric).and_then(Value::as_array);
+    let mut out = Vec::with_capacity(steps.len());
+    let mut j = 0;
+    for &step in steps {
+        while j + 1 < t.step.len() && t.step[j + 1] <= step {
+            j += 1;
+        }
+        let beyond = t.step.last().is_some_and(|&l| step > l);
+        let v = match (t.step.get(j), values) {
+            (Some(&at), Some(vs)) if at <= step && (carry || !beyond) => number(vs.get(j)),
+            _ => f64::NAN,
+        };
+        out.push(v);
+    }
+    out
+}
+
+/// An f64 key in x order (NaN never enters).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct OrdF64(f64);
+
+impl Eq for OrdF64 {}
+
+impl PartialOrd for OrdF64 {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for OrdF64 {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
