@@ -103,6 +103,12 @@ export type ChobieDisturbance = {
 export interface ChobieScenario {
   /** Figure 12: switch to load-adaptation mode on overload (bridge task). */
   adaptation: boolean;
+  /**
+   * The flat part of the base carries the robots' sliding guide and holds the robots resting
+   * on it. Off, the base only pushes, and the structure tips over the cliff edge when the
+   * weights and loads beyond it outweigh those on the base.
+   */
+  anchored: boolean;
   /** Thickness of each of the two lateral ABS boards that carry the load, metres. */
   board: number;
   /** Side of a robot, metres. */

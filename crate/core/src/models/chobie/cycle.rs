@@ -13,6 +13,10 @@ use super::frame;
 use super::motion::{Drive, RIGHT, UP};
 use super::signals::{self, kind, Comm};
 use super::spec::{Leader, Method, Task};
+use super::Failure;
+
+/// An order: the leader, the lines it drives, and the hops from it to the first line.
+type Order = (u32, Vec<Drive>, u64);
 use super::{Chobie, Last};
 
 impl Chobie {
@@ -26,30 +30,24 @@ impl Chobie {
                 kind::OVERLOAD,
                 "mode: a robot over its threshold announces an overload",
             );
-            self.mode = if self.p.adaptation && !overloaded.is_empty() {
+            let mode = if self.p.adaptation && !overloaded.is_empty() {
                 Mode::Adaptation
             } else {
                 Mode::Construction
             };
+            if self.mode == Mode::Adaptation && mode == Mode::Construction {
+                self.resumed += 1;
+            }
+            self.mode = mode;
         }
-        let idle = self.mode == Mode::Construction && !self.p.construction;
+        let idle = (self.mode == Mode::Construction && !self.p.construction)
+            || self.failure != Failure::Standing;
         let leaders = match self.p.leader {
             _ if idle => Vec::new(),
             Leader::Temporary => self.elect(&mut comm),
             Leader::Permanent => self.direct(&mut comm),
         };
-        let mut orders = Vec::new();
-        for e in &leaders {
-            let (lines, route) = e.command(&self.body, self.mode);
-            if lines.is_empty() {
-                continue;
-            }
-            // An order that cannot be carried out on its own is dropped: its lines stay locked.
-            if self.body.check(&lines).is_err() {
-                continue;
-            }
-            orders.push((e.robot, lines, route));
-        }
+        let orders = self.orders(&leaders);
         if self.p.leader == Leader::Temporary && !orders.is_empty() {
             self.send_commands(&mut comm, &orders);
         }
@@ -95,6 +93,55 @@ impl Chobie {
         self.solve();
     }
 
+    /// The orders the leaders send: (leader, lines, route hops). In construction, a leader whose tier cannot slide alone (the robots
+    /// resting on it would be left behind) drives its top neighbour's line with it. If all
+    /// orders can be made together they are; otherwise an order that cannot be carried out on
+    /// its own is dropped (its lines stay locked) and the rest must be feasible together.
+    fn orders(&self, leaders: &[Elected]) -> Vec<Order> {
+        let body = &self.body;
+        let mut orders: Vec<(Kind, Order)> = Vec::new();
+        for e in leaders {
+            let (mut lines, route) = e.command(body, self.mode);
+            if lines.is_empty() {
+                continue;
+            }
+            if self.mode == Mode::Construction && body.check(&lines).is_err() {
+                let top = body.nbr(e.robot, UP);
+                if top != super::motion::NONE {
+                    lines.push(Drive {
+                        robots: body.line(top, RIGHT),
+                        dir: RIGHT,
+                    });
+                }
+            }
+            // Step 7: its column slides down against its right neighbour's, which rises with
+            // it where it can; where the two cannot move together, the leader's own column
+            // drives alone (the neighbour holds), or failing that the neighbour's rises alone.
+            if e.kind == Kind::Leader1 && lines.len() == 2 && body.check(&lines).is_err() {
+                if let Some(one) = lines
+                    .iter()
+                    .find(|l| body.check(std::slice::from_ref(*l)).is_ok())
+                {
+                    lines = vec![one.clone()];
+                }
+            }
+            orders.push((e.kind, (e.robot, lines, route)));
+        }
+        let joint = |orders: &[(Kind, Order)]| {
+            let all: Vec<Drive> = orders.iter().flat_map(|o| o.1 .1.iter().cloned()).collect();
+            body.check(&all).is_ok()
+        };
+        if orders.len() > 1 && !joint(&orders) {
+            orders.retain(|o| body.check(&o.1 .1).is_ok());
+            // Step 3 "then go to step 7": where leader 1's commands and leader 2's cannot be
+            // made together, leader 1's go first.
+            if !joint(&orders) && orders.iter().any(|o| o.0 == Kind::Leader1) {
+                orders.retain(|o| o.0 == Kind::Leader1);
+            }
+        }
+        orders.into_iter().map(|o| o.1).collect()
+    }
+
     /// The temporary-leader election with the selected method and priority sequence.
     fn elect(&mut self, comm: &mut Comm) -> Vec<Elected> {
         let body = &self.body;
@@ -103,11 +150,7 @@ impl Chobie {
                 let over: Vec<bool> = self.stress.iter().map(|&s| self.overloaded(s)).collect();
                 election::adaptation(body, &over, comm)
             }
-            Mode::Construction => {
-                let mut all = election::three_rule(body, comm);
-                all.retain(|e| e.kind == Kind::TopRight);
-                all
-            }
+            Mode::Construction => election::three_rule(body, comm),
             Mode::Crawl => {
                 match self.p.method {
                     Method::First => election::three_rule(body, comm),
@@ -245,11 +288,7 @@ impl Chobie {
                 let over: Vec<bool> = self.stress.iter().map(|&s| self.overloaded(s)).collect();
                 election::adaptation(body, &over, &mut scratch)
             }
-            Mode::Construction => {
-                let mut all = election::three_rule(body, &mut scratch);
-                all.retain(|e| e.kind == Kind::TopRight);
-                all
-            }
+            Mode::Construction => election::three_rule(body, &mut scratch),
             Mode::Crawl => {
                 let mut all = election::three_rule(body, &mut scratch);
                 if all.is_empty() {
@@ -310,13 +349,11 @@ impl Chobie {
             .collect()
     }
 
-    /// The robot the tip load acts on: the rightmost of the lowest row.
+    /// The robot the tip load acts on: the rightmost robot, the lowest of them (the bridge's
+    /// free end; robots that load adaptation puts under the root stay off it).
     pub(super) fn tip(&self) -> u32 {
         (0..self.body.len() as u32)
-            .max_by_key(|&r| {
-                let (x, y) = self.body.pos[r as usize];
-                (y, x)
-            })
+            .max_by_key(|&r| self.body.pos[r as usize])
             .unwrap_or(0)
     }
 
@@ -329,6 +366,14 @@ impl Chobie {
             (r != super::motion::NONE).then_some(r)
         });
         let fixed: Vec<bool> = (0..body.len() as u32).map(|r| body.grounded(r)).collect();
+        // A robot with terrain against its left face (under the root, against the cliff) is
+        // held by it when pressed against it.
+        let walls: Vec<bool> = (0..body.len() as u32)
+            .map(|r| {
+                let (x, y) = body.pos[r as usize];
+                body.ground_at(x - 1, y)
+            })
+            .collect();
         let tip = self.tip();
         let loads: Vec<[f64; 3]> = (0..body.len())
             .map(|r| {
@@ -340,7 +385,7 @@ impl Chobie {
                 [0.0, -(m.weight + self.loads[r] + tip_load), 0.0]
             })
             .collect();
-        match frame::solve(m, &body.pos, &elems, &fixed, &loads) {
+        match frame::solve_against(m, &body.pos, &elems, &fixed, &walls, &loads) {
             Some(sol) => {
                 self.stress = sol.stress;
                 self.disp = sol.disp;
@@ -351,6 +396,34 @@ impl Chobie {
             }
         }
         self.worst = self.worst.max(self.peak());
+        if self.failure == Failure::Standing {
+            if self.peak() > self.p.mech.strength {
+                self.failure = Failure::Broken;
+            } else if !self.p.anchored && self.overturning() > 0.0 {
+                self.failure = Failure::Tipped;
+            }
+        }
+    }
+
+    /// The moment of the robots' weights and the loads about the cliff edge (the top corner of
+    /// the last terrain cell under the structure), N·m, positive when it turns the structure
+    /// over the edge. Only meaningful when the base does not hold the robots (`anchored` off):
+    /// then the terrain can push but not pull, and a positive moment tips the structure.
+    pub(super) fn overturning(&self) -> f64 {
+        let m = &self.p.mech;
+        let pivot = self.edge as f64 + 0.5;
+        let tip = self.tip();
+        (0..self.body.len())
+            .map(|r| {
+                let tip_load = if r as u32 == tip {
+                    self.p.tip_load
+                } else {
+                    0.0
+                };
+                let force = m.weight + self.loads[r] + tip_load;
+                force * (self.body.pos[r].0 as f64 - pivot) * m.length
+            })
+            .sum()
     }
 
     pub(super) fn peak(&self) -> f64 {

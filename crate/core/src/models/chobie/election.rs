@@ -242,16 +242,21 @@ impl Elected {
             (Mode::Crawl, Kind::BottomLeft) => (vec![line(r, RIGHT)], 0),
             (Mode::Crawl, Kind::BottomRight) => (vec![line(near(RIGHT), DOWN)], 1),
             (Mode::Crawl, Kind::RowEnd | Kind::Corner) => (vec![line(r, RIGHT)], 0),
-            // Construction: the lower tier slides right and carries the reserves resting on it.
-            (Mode::Construction, Kind::TopRight) => {
-                (vec![line(r, RIGHT), line(near(UP), RIGHT)], 1)
-            }
+            // Construction: every leader of the three rules stands on the lower tier and drives
+            // it right on the base; the robots resting on it stay where they are (the cycle adds
+            // the top neighbour's line when the tier cannot move without it).
+            (
+                Mode::Construction,
+                Kind::TopRight | Kind::TopLeft | Kind::BottomRight | Kind::BottomLeft,
+            ) => (vec![line(r, RIGHT)], 0),
+            // Step 7: two drive commands, its own column down and its right neighbour's up;
+            // the cycle treats them as two orders (each dropped if it cannot be made).
             (Mode::Adaptation, Kind::Leader1) => {
                 let mut drives = vec![line(r, DOWN)];
                 if near(RIGHT) != NONE {
                     drives.push(line(near(RIGHT), UP));
                 }
-                (drives, 1)
+                (drives, 0)
             }
             (Mode::Adaptation, Kind::Leader2) => (vec![line(near(UP), RIGHT)], 1),
             _ => (Vec::new(), 0),

@@ -1,6 +1,6 @@
 //! The plane-frame stress model. Each robot is a node with three degrees of freedom (x, y,
-//! rotation); each locked contact between face neighbours is an Euler-Bernoulli beam element one
-//! cell long; robots resting on the terrain are clamped to it (the base carries the same sliding
+//! rotation); each locked contact between face neighbours is a Timoshenko beam element one cell
+//! long (a robot is as deep as it is long, so shear deformation is not negligible); robots resting on the terrain are clamped to it (the base carries the same sliding
 //! guide and locking rods as a robot). Loads are nodal: each robot's weight and the applied loads.
 //!
 //! The stiffness matrix is symmetric positive definite and banded once the nodes are numbered
@@ -40,11 +40,13 @@ fn element_matrix(m: &Mechanics, c: f64, s: f64) -> [[f64; 6]; 6] {
     let l = m.length;
     let ea = m.e * m.area / l;
     let ei = m.e * m.inertia;
+    // Timoshenko's element: shear deformation softens the bending terms by 1 + φ.
+    let p = m.phi;
     let (k1, k2, k3, k4) = (
-        12.0 * ei / (l * l * l),
-        6.0 * ei / (l * l),
-        4.0 * ei / l,
-        2.0 * ei / l,
+        12.0 * ei / (l * l * l * (1.0 + p)),
+        6.0 * ei / (l * l * (1.0 + p)),
+        (4.0 + p) * ei / (l * (1.0 + p)),
+        (2.0 - p) * ei / (l * (1.0 + p)),
     );
     let local = [
         [ea, 0.0, 0.0, -ea, 0.0, 0.0],
@@ -92,6 +94,49 @@ pub fn solve(
     fixed: &[bool],
     loads: &[[f64; 3]],
 ) -> Option<Solution> {
+    solve_against(m, pos, elems, fixed, &[], loads)
+}
+
+/// [`solve`] with walls: a node marked in `walls` has terrain against its left face, which can
+/// push it right but not pull it (a unilateral contact, like a robot pressed against the cliff
+/// face under the bridge's root). The frame is solved with those nodes held in x; a wall that
+/// would have to pull lets go, and the frame is solved again until every wall pushes.
+pub fn solve_against(
+    m: &Mechanics,
+    pos: &[(i32, i32)],
+    elems: &[(u32, u32)],
+    fixed: &[bool],
+    walls: &[bool],
+    loads: &[[f64; 3]],
+) -> Option<Solution> {
+    let mut held: Vec<bool> = (0..pos.len())
+        .map(|i| walls.get(i).copied().unwrap_or(false) && !fixed[i])
+        .collect();
+    loop {
+        let (sol, reaction) = solve_held(m, pos, elems, fixed, &held, loads)?;
+        let mut released = false;
+        for (i, r) in reaction.iter().enumerate() {
+            if held[i] && *r < 0.0 {
+                held[i] = false;
+                released = true;
+            }
+        }
+        if !released {
+            return Some(sol);
+        }
+    }
+}
+
+/// One linear solve with the nodes in `held` restrained in x; also returns each node's x
+/// reaction (positive: the support pushes the node right).
+fn solve_held(
+    m: &Mechanics,
+    pos: &[(i32, i32)],
+    elems: &[(u32, u32)],
+    fixed: &[bool],
+    held: &[bool],
+    loads: &[[f64; 3]],
+) -> Option<(Solution, Vec<f64>)> {
     let n = pos.len();
     // Number the free nodes along the longer axis for a narrow band.
     let (mut minx, mut maxx, mut miny, mut maxy) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
@@ -131,6 +176,7 @@ pub fn solve(
     };
     let dof = |node: u32, d: usize| match rank[node as usize] {
         usize::MAX => None,
+        _ if d == 0 && held[node as usize] => None,
         r => Some(3 * r + d),
     };
     for &(i, j) in elems {
@@ -155,6 +201,14 @@ pub fn solve(
             }
         }
     }
+    // A held x gets an identity row, so the numbering (and the band) stays as it is.
+    let mut any_held = false;
+    for (node, &h) in held.iter().enumerate() {
+        if h && rank[node] != usize::MAX {
+            k.add(3 * rank[node], 3 * rank[node], 1.0);
+            any_held = true;
+        }
+    }
     k.factor()?;
     k.solve(&mut f);
     let disp: Vec<[f64; 3]> = (0..n as u32)
@@ -170,11 +224,16 @@ pub fn solve(
         .collect();
     let mut forces = Vec::with_capacity(elems.len());
     let mut stress = vec![0.0f64; n];
+    let mut reaction = vec![0.0f64; if any_held { n } else { 0 }];
     for &(i, j) in elems {
         let (c, s) = dir(i, j);
         let ke = stiffness(s);
         let u: [f64; 6] = std::array::from_fn(|a| disp[if a < 3 { i } else { j } as usize][a % 3]);
         let fg: [f64; 6] = std::array::from_fn(|a| (0..6).map(|b| ke[a][b] * u[b]).sum());
+        if any_held {
+            reaction[i as usize] += fg[0];
+            reaction[j as usize] += fg[3];
+        }
         let t = rotation(c, s);
         let fl: [f64; 6] = std::array::from_fn(|a| (0..6).map(|b| t[a][b] * fg[b]).sum());
         let axial = fl[3];
@@ -184,11 +243,19 @@ pub fn solve(
         stress[i as usize] = stress[i as usize].max(peak);
         stress[j as usize] = stress[j as usize].max(peak);
     }
-    Some(Solution {
-        disp,
-        forces,
-        stress,
-    })
+    if any_held {
+        for (node, r) in reaction.iter_mut().enumerate() {
+            *r -= loads[node][0];
+        }
+    }
+    Some((
+        Solution {
+            disp,
+            forces,
+            stress,
+        },
+        reaction,
+    ))
 }
 
 /// A symmetric banded matrix, lower band stored column by column: entry (i, j), j ≤ i ≤ j + b,

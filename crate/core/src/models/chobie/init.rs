@@ -101,6 +101,7 @@ impl Chobie {
                 goal: s.goal,
                 tip_load,
                 hop_us,
+                anchored: s.anchored,
                 mech,
                 order: PRIORITY,
             },
@@ -118,6 +119,8 @@ impl Chobie {
             stress: vec![0.0; n],
             disp: vec![[0.0; 3]; n],
             worst: 0.0,
+            failure: super::Failure::Standing,
+            resumed: 0,
         };
         model.solve();
         model

@@ -38,7 +38,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "chobie",
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
-    model_version: 2,
+    model_version: 3,
     metrics: metrics::METRICS,
     parse: |body| models::parse(body, ModelSpec::Chobie),
     #[cfg(feature = "schema")]
@@ -59,6 +59,8 @@ pub struct Params {
     pub goal: Option<u32>,
     pub tip_load: f64,
     pub hop_us: f64,
+    /// The base's guide holds the robots resting on it (no tipping).
+    pub anchored: bool,
     pub mech: Mechanics,
     /// The priority sequence of figure 18.
     pub order: [election::Kind; 4],
@@ -114,4 +116,19 @@ pub struct Chobie {
     disp: Vec<[f64; 3]>,
     /// Largest peak stress seen so far, Pa.
     worst: f64,
+    /// Whether the structure still stands; once failed it moves no more.
+    failure: Failure,
+    /// Times the robots went back from load adaptation to construction (the overload cleared).
+    resumed: u64,
+}
+
+/// A structure that broke or fell stays so.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+pub enum Failure {
+    Standing = 0,
+    /// A robot's stress passed the tensile strength of ABS.
+    Broken = 1,
+    /// The weights and loads beyond the cliff edge turned the structure over it.
+    Tipped = 2,
 }

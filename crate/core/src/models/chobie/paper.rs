@@ -228,58 +228,100 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
     ));
 }
 
+/// A traced metric of a row, one value per cycle.
+fn traced(row: &crate::experiment::Row, metric: &str) -> Vec<f64> {
+    row.trace
+        .as_ref()
+        .and_then(|t| t.values.get(metric))
+        .and_then(Value::as_array)
+        .map(|a| a.iter().filter_map(Value::as_f64).collect())
+        .unwrap_or_default()
+}
+
 fn bridge(r: &Results, out: &mut Vec<Finding>) {
     let e = "chobie-bridge";
     let rows = r.select(e, &[("adaptation", Value::Bool(true))]);
-    let mut entered = 0;
-    let mut returned = 0;
+    // Overload episodes: a switch to adaptation mode; cleared when the robots went back to
+    // construction (every robot under the threshold again).
+    let (mut episodes, mut cleared, mut resumed_runs, mut all_cleared) = (0, 0, 0, 0);
     for row in &rows {
-        let modes: Vec<f64> = row
-            .trace
-            .as_ref()
-            .and_then(|t| t.values.get("mode"))
-            .and_then(Value::as_array)
-            .map(|a| a.iter().filter_map(Value::as_f64).collect())
-            .unwrap_or_default();
-        if let Some(first) = modes.iter().position(|&m| m == 2.0) {
-            entered += 1;
-            if modes[first..].contains(&1.0) {
-                returned += 1;
+        let modes = traced(row, "mode");
+        let mut run_episodes = 0;
+        let mut run_cleared = 0;
+        for w in modes.windows(2) {
+            if w[0] != 2.0 && w[1] == 2.0 {
+                run_episodes += 1;
+            }
+            if w[0] == 2.0 && w[1] == 1.0 {
+                run_cleared += 1;
             }
         }
+        episodes += run_episodes;
+        cleared += run_cleared;
+        if run_cleared > 0 {
+            resumed_runs += 1;
+        }
+        if run_episodes > 0 && run_cleared == run_episodes {
+            all_cleared += 1;
+        }
     }
-    let adapt = r.values(e, &[("adaptation", Value::Bool(true))], "adaptations");
-    let stuck = r
-        .values(e, &[("adaptation", Value::Bool(true))], "mode")
-        .iter()
-        .filter(|&&m| m == 2.0)
-        .count();
     out.push(Finding::new(
         "§3.4, fig. 12",
         "When a robot's stress exceeds the threshold all robots switch to load-adaptation mode, and when the overload is done away with they switch back to bridge construction.",
         format!(
-            "{entered} of {} runs entered adaptation mode; {returned} of them returned to construction; {stuck} ended in adaptation mode; transformations in adaptation mode: {}",
+            "{episodes} overloads in {} runs, {cleared} of them cleared with construction resumed; {resumed_runs} of {} runs resumed construction at least once; {all_cleared} cleared every overload (the others end in adaptation mode once their reserves are used up)",
             rows.len(),
-            Stats::of(&adapt).describe(1)
+            rows.len()
         ),
         rows.len(),
-        Verdict::from(entered > 0 && returned > 0),
-        "a run ends in adaptation mode when construction has carried the reserves past the root and a new overload lies left of them, which the eight steps cannot reach (interpretation 13)",
+        Verdict::from(cleared > 0 && resumed_runs == rows.len()),
+        "each reserve that step 7 puts into the tier pushes a tier robot down against the cliff face under the root (interpretation 13); with the reserves used up no leader is elected and the bridge stops, still overloaded",
     ));
-    let with = r.values(e, &[("adaptation", Value::Bool(true))], "max_peak_stress");
-    let without = r.values(e, &[("adaptation", Value::Bool(false))], "max_peak_stress");
-    let lower = !with.is_empty() && with.iter().zip(&without).all(|(w, o)| w < o);
+    // Equal span: each adaptive run at its final span against the plain run with the same
+    // reserves and tip load at that span (the last cycle it had that span).
+    let (mut lower, mut pairs) = (0, 0);
+    let (mut with, mut without, mut spans) = (Vec::new(), Vec::new(), Vec::new());
+    for row in &rows {
+        let Some(tip) = row.params.get("tip_load") else {
+            continue;
+        };
+        let plain = r.select(
+            e,
+            &[
+                ("scenario", json!(row.scenario)),
+                ("adaptation", Value::Bool(false)),
+                ("tip_load", tip.clone()),
+            ],
+        );
+        let (Some(plain), Some(span)) = (plain.first(), crate::reproduce::value(row, "span"))
+        else {
+            continue;
+        };
+        let (p_span, p_peak) = (traced(plain, "span"), traced(plain, "peak_stress"));
+        let at = p_span.iter().rposition(|&s| s == span);
+        let (Some(at), Some(peak)) = (at, crate::reproduce::value(row, "peak_stress")) else {
+            continue;
+        };
+        pairs += 1;
+        with.push(peak);
+        without.push(p_peak[at]);
+        spans.push(span);
+        if peak < p_peak[at] {
+            lower += 1;
+        }
+    }
     out.push(Finding::new(
         "§3.4, figs. 1, 11",
         "Load adaptation equalises the robots' stressed states: overloaded parts are thickened by other robots instead of the stress concentrating.",
         format!(
-            "largest peak stress over the run, MPa: with adaptation {}; without {}",
+            "peak stress at equal span (the adaptive run's final span, {}), MPa: with adaptation {}; without {}; lower with adaptation in {lower} of {pairs} pairs",
+            Stats::of(&spans).describe(0),
             Stats::of(&with).describe(2),
             Stats::of(&without).describe(2)
         ),
         with.len() + without.len(),
-        Verdict::from(lower),
-        "1, 3 and 5 reserves × tip loads 0, 10, 20 N, compared pair by pair; threshold 4 MPa",
+        Verdict::from(pairs > 0 && lower == pairs),
+        "1, 3 and 5 reserves × tip loads 0, 10, 20 N; threshold 4 MPa; the plain run's peak is taken at the last cycle it had the same span",
     ));
     let span_with = r.values(e, &[("adaptation", Value::Bool(true))], "span");
     let span_without = r.values(e, &[("adaptation", Value::Bool(false))], "span");
@@ -293,24 +335,33 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
         ),
         span_with.len() + span_without.len(),
         Verdict::NotStated,
-        "without adaptation the tier runs out over the void whatever the stress; with it construction stops at the first overload the reserves cannot reach",
+        "without adaptation the tier runs out over the void whatever the stress (the base's guide holds it: no tipping, interpretation 18); with it construction stops while an overload is being removed, and for good once the reserves are used up",
     ));
     let l = "chobie-load";
     let moved = r.values(l, &[("adaptation", Value::Bool(true))], "energy");
     let idle = r.values(l, &[("adaptation", Value::Bool(false))], "energy");
+    let peak_with = r.values(l, &[("adaptation", Value::Bool(true))], "peak_stress");
+    let peak_without = r.values(l, &[("adaptation", Value::Bool(false))], "peak_stress");
     let left = r.values(l, &[("adaptation", Value::Bool(true))], "overloads");
     out.push(Finding::new(
         "§3.4, figs. 13, 14",
         "With five robots, a load at the cantilever's end overloads robot B near the root, and robot A moves so that the stressed part becomes thick: load information is the trigger.",
         format!(
-            "robot-cells driven after a 300 N tip load: with adaptation {}, without {}; robots still overloaded at the end {}",
+            "300 N on the tip: robot-cells driven with adaptation {}, without {}; peak stress at the end, MPa: with {}, without {}; robots still overloaded {}",
             Stats::of(&moved).describe(0),
             Stats::of(&idle).describe(0),
+            Stats::of(&peak_with).describe(2),
+            Stats::of(&peak_without).describe(2),
             Stats::of(&left).describe(0)
         ),
         moved.len() + idle.len(),
-        Verdict::from(moved.iter().all(|&m| m > 0.0) && idle.iter().all(|&m| m == 0.0)),
-        "A stops above the overloaded robot over the void; a single robot on top does not span the root contact, so the overload stays",
+        Verdict::from(
+            moved.iter().all(|&m| m > 0.0)
+                && idle.iter().all(|&m| m == 0.0)
+                && peak_with.iter().zip(&peak_without).all(|(w, o)| w < o)
+                && left.iter().all(|&x| x == 0.0)
+        ),
+        "A moves right over B (step 8), then B's column drives down (step 7): A takes B's place in the tier and B presses against the cliff face under the root",
     ));
     let m = "chobie-mechanics";
     let frame = r.values(m, &[], "peak_stress");

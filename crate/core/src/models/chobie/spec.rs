@@ -75,6 +75,11 @@ pub struct Spec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(range(min = 1, max = Limits::PAGE.chobie.goal))]
     pub goal: Option<u32>,
+    /// The flat part of the base carries the robots' sliding guide and holds the robots resting
+    /// on it. Off, the base only pushes, and the structure tips over the cliff edge when the
+    /// weights and loads beyond it outweigh those on the base.
+    #[serde(default = "yes")]
+    pub anchored: bool,
     /// A downward load on the bridge's tip robot (the rightmost of the lowest row), newtons.
     #[serde(default)]
     pub tip_load: f64,
@@ -150,7 +155,17 @@ pub struct Mechanics {
     pub weight: f64,
     /// Overload threshold, pascals.
     pub threshold: f64,
+    /// Breaking stress (the tensile strength), pascals.
+    pub strength: f64,
+    /// Timoshenko's shear parameter of one element, φ = 12·E·I / (κ·G·A·L²): the bending
+    /// stiffness over the shear stiffness. About 3.2 for a robot as deep as it is long.
+    pub phi: f64,
 }
+
+/// Poisson's ratio of ABS (typical, 0.35), for the shear modulus G = E / (2(1 + ν)).
+pub const POISSON: f64 = 0.35;
+/// Timoshenko's shear coefficient of a rectangular section.
+pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
 
 impl Mechanics {
     /// Two lateral boards of thickness `board` and height `cell_size` carry each contact.
@@ -168,14 +183,18 @@ impl Mechanics {
         let g = non_negative("gravity", s.gravity, 1e3)?;
         let strength = positive("tensile_strength", s.tensile_strength, 1e15)?;
         let safety = positive("safety_factor", s.safety_factor, 1e6)?;
+        let (area, inertia) = (2.0 * t * a, 2.0 * t * a * a * a / 12.0);
+        let shear = e / (2.0 * (1.0 + POISSON));
         Ok(Mechanics {
             length: a,
             e,
-            area: 2.0 * t * a,
-            inertia: 2.0 * t * a * a * a / 12.0,
+            area,
+            inertia,
+            phi: 12.0 * e * inertia / (SHEAR_COEFFICIENT * shear * area * a * a),
             fibre: a / 2.0,
             weight: mass * g,
             threshold: strength / safety,
+            strength,
         })
     }
 }

@@ -28,6 +28,9 @@ pub mod code {
     pub const OVERLOADED: u8 = 4;
     /// A robot carrying an applied load.
     pub const LOADED: u8 = 5;
+    /// A robot of a structure that failed: stressed beyond the breaking stress, or any robot of
+    /// a structure that tipped over the cliff edge.
+    pub const FAILED: u8 = 6;
 }
 
 fn tool(name: &str, label: &str, action: Value) -> ToolInfo {
@@ -49,6 +52,7 @@ impl Model for Chobie {
                 LegendEntry::new(code::DRIVING, "D: driving robot", "#2b95d6"),
                 LegendEntry::new(code::OVERLOADED, "overloaded robot", "#db3737"),
                 LegendEntry::new(code::LOADED, "robot carrying a load", "#f2b824"),
+                LegendEntry::new(code::FAILED, "failed: broken or tipped", "#1c2127"),
             ],
             agents: Kind::ALL
                 .iter()
@@ -127,6 +131,7 @@ impl Model for Chobie {
         f("distance", Metric::Real(self.distance()));
         f("election_failures", Metric::Count(t.election_failures));
         f("energy", Metric::Count(t.energy));
+        f("failed", Metric::Count(self.failure as u64));
         f("leaders", Metric::Count(self.last.leaders.len() as u64));
         f("max_peak_stress", Metric::Real(self.worst / 1e6));
         f("messages", Metric::Count(t.messages));
@@ -140,14 +145,17 @@ impl Model for Chobie {
         f("messages_per_transformation", per(t.messages));
         f("mode", Metric::Count(self.mode as u64));
         f("overloads", Metric::Count(overloads as u64));
+        f("overturning", Metric::Real(self.overturning()));
         f("peak_stress", Metric::Real(self.peak() / 1e6));
         f("refused", Metric::Count(t.refused));
+        f("resumed", Metric::Count(self.resumed));
         f("robots", Metric::Count(self.body.len() as u64));
         f("slot_us", Metric::Real(self.slot_us()));
         f("slots", Metric::Count(t.slots));
         f("slots_per_transformation", per(t.slots));
         f("span", Metric::Count(self.span() as u64));
         f("stalled", Metric::Flag(!self.last.moved && self.steps > 0));
+        f("strength", Metric::Real(self.p.mech.strength / 1e6));
         f("threshold", Metric::Real(self.p.mech.threshold / 1e6));
         f("transformations", Metric::Count(t.transformations));
     }
@@ -165,6 +173,10 @@ impl Model for Chobie {
             h.f64(self.held);
         }
         h.u8(self.mode as u8);
+        // Only once the structure failed, so standing states hash as before.
+        if self.failure != super::Failure::Standing {
+            h.u8(self.failure as u8);
+        }
         let t = &self.totals;
         for v in [
             t.transformations,
@@ -191,7 +203,14 @@ impl Model for Chobie {
             let Some(i) = self.body.index(x, y) else {
                 continue;
             };
-            out[i] = if self.overloaded(self.stress[r]) {
+            let failed = match self.failure {
+                super::Failure::Standing => false,
+                super::Failure::Broken => self.stress[r] > self.p.mech.strength,
+                super::Failure::Tipped => true,
+            };
+            out[i] = if failed {
+                code::FAILED
+            } else if self.overloaded(self.stress[r]) {
                 code::OVERLOADED
             } else if self.last.driven.contains(&(r as u32)) {
                 code::DRIVING
@@ -305,6 +324,15 @@ impl Model for Chobie {
         m.insert("robot".into(), r.into());
         m.insert("stress_mpa".into(), json!(self.stress[ri] / 1e6));
         m.insert("overloaded".into(), self.overloaded(self.stress[ri]).into());
+        m.insert(
+            "structure".into(),
+            match self.failure {
+                super::Failure::Standing => "standing",
+                super::Failure::Broken => "broken: a robot passed the breaking stress",
+                super::Failure::Tipped => "tipped over the cliff edge",
+            }
+            .into(),
+        );
         m.insert("deflection_mm".into(), json!(-self.disp[ri][1] * 1e3));
         m.insert("load_n".into(), json!(self.loads[ri]));
         m.insert("on_terrain".into(), self.body.grounded(r).into());

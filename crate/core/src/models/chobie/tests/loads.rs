@@ -126,3 +126,79 @@ fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_roo
     }
     assert!(m.worst < without.worst);
 }
+
+#[test]
+fn figure_14_step_7_thickens_the_root_and_lowers_b_stress() {
+    let preset = crate::presets::scenario("chobie-load5").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    let act = json!({"kind": "load", "cells": [19], "force": 300.0});
+    m.apply(act.as_object().unwrap()).unwrap();
+    // B: the first robot over the void, next to the cliff edge.
+    let b = m.body.robot_at(2, 2);
+    let before = m.stress[b as usize];
+    assert!(m.overloaded(before));
+    let mut fired = false;
+    for _ in 0..10 {
+        step_checked(&mut m);
+        fired |= m.last.moved && m.last.leaders.iter().any(|e| e.kind == Kind::Leader1);
+    }
+    assert!(fired, "leader 1's command (step 7) was carried out");
+    // B went down against the cliff face under the root; robot A took its place in the tier.
+    assert_eq!(m.body.pos[b as usize], (2, 3));
+    assert_eq!(m.body.robot_at(2, 2), 0, "robot A");
+    assert!(m.stress[b as usize] < before);
+    assert!(m.peak() < m.p.mech.threshold, "the overload is removed");
+    assert_eq!(m.mode, Mode::Construction);
+}
+
+#[test]
+fn same_kind_leaders_move_together_when_only_their_joint_command_is_feasible() {
+    let mut m = model("#.#....\n#######\n=======\n", json!({}));
+    let leaders = election::three_rule(&m.body, &mut Comm::default());
+    assert_eq!(leaders.len(), 2);
+    assert!(leaders.iter().all(|e| e.kind == Kind::TopRight));
+    step_checked(&mut m);
+    assert_eq!(m.body.pos[0], (1, 0));
+    assert_eq!(m.body.pos[1], (3, 0));
+}
+
+#[test]
+fn an_unanchored_bridge_tips_over_the_cliff_edge_and_stops() {
+    let world = "#...............\n########........\n========........\n";
+    let mut m = model(
+        world,
+        json!({"task": "bridge", "adaptation": false, "anchored": false}),
+    );
+    let mut spans = Vec::new();
+    for _ in 0..12 {
+        m.step();
+        spans.push(m.span());
+    }
+    // A tier of eight on an eight-cell base with a reserve riding on its left end: about the
+    // edge's corner (x = 7.5) the weights' moment is 8(s − 4) + (s − 7.5) at span s, positive
+    // from s = 5.
+    assert_eq!(m.failure, Failure::Tipped);
+    assert_eq!(m.span(), 5);
+    assert!(m.overturning() > 0.0);
+    assert!(spans.ends_with(&[5, 5]), "a tipped structure moves no more");
+    assert!(m.cells().contains(&view::code::FAILED));
+    // The same bridge on a base that holds it does not tip.
+    let mut held = model(world, json!({"task": "bridge", "adaptation": false}));
+    for _ in 0..12 {
+        held.step();
+    }
+    assert_eq!(held.failure, Failure::Standing);
+    assert!(held.span() > 5);
+}
+
+#[test]
+fn a_robot_beyond_the_breaking_stress_breaks_the_structure() {
+    let mut m = model(
+        "....\n###.\n=...\n",
+        json!({"task": "bridge", "construction": false}),
+    );
+    let load = json!({"kind": "load", "cells": [6], "force": 20000.0});
+    m.apply(load.as_object().unwrap()).unwrap();
+    assert!(m.peak() > m.p.mech.strength);
+    assert_eq!(m.failure, Failure::Broken);
+}
