@@ -17,8 +17,8 @@ const metric = (page, name) =>
     '#metrics .metric',
     (nodes, n) => {
       const m = nodes.find((x) => x.firstChild.textContent === n);
-      // A card holds its name, its value and, where the metric table explains it, a tooltip.
-      return m ? Number(m.children[1].textContent.replace(/,/g, '')) : Number.NaN;
+      // A card holds its name, where the metric table explains it a tooltip, and its value (strong).
+      return m ? Number(m.querySelector('strong').textContent.replace(/,/g, '')) : Number.NaN;
     },
     name.replace(/_/g, ' '),
   );
@@ -105,7 +105,7 @@ test('a load with a typed magnitude is put on the clicked robot, recorded for th
   assert.deepEqual([recorded.kind, recorded.cells, recorded.force], ['load', [19], 300]);
   const link = wasm.decode_link(wasm.encode_link(JSON.stringify(await scenario(page))));
   assert.equal(JSON.parse(link).disturbances[0].force, 300, 'the magnitude survives a link');
-  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.children[1].textContent) > 0));
+  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) > 0));
   assert.ok((await metric(page, 'peak_stress')) > 2 * bare, 'the load raises the peak stress');
   assert.equal(await page.isVisible('#colorbar'), true, 'the stress field has its colour bar');
   assert.ok(Number((await page.textContent('#colorbar-max')).replace(/,/g, '')) > 0);
@@ -127,7 +127,7 @@ test('a load with a typed magnitude is put on the clicked robot, recorded for th
     ['move', 19],
     ['move', 17],
   ]);
-  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.children[1].textContent) === 0));
+  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) === 0));
   assert.deepEqual(problems, []);
   await context.close();
 });
