@@ -52,7 +52,9 @@ export function pwa(): Plugin {
     },
     writeBundle(_options, bundle) {
       // Every file the build wrote, in a fixed order; the version changes when any of them does.
-      const files = Object.keys(bundle).filter((f) => !notKept(f)).sort();
+      const files = Object.keys(bundle)
+        .filter((f) => !notKept(f))
+        .sort();
       const hash = createHash('sha256');
       for (const f of files) {
         const item = bundle[f];

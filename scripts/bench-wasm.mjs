@@ -17,9 +17,7 @@ const median = (xs) => {
 };
 
 function scenarioJson(spec) {
-  let json = typeof spec.scenario === 'string'
-    ? wasm.preset_json(spec.scenario)
-    : JSON.stringify(spec.scenario);
+  let json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
   for (const [path, value] of Object.entries(spec.set ?? {})) {
     json = wasm.override_scenario(json, path, JSON.stringify(value));
   }

@@ -11,7 +11,10 @@ import * as wasm from '../web/pkg/kumiki_wasm.js';
 const root = new URL('..', import.meta.url).pathname;
 const files = process.argv.slice(2).length
   ? process.argv.slice(2)
-  : readdirSync(`${root}tests/bench`).filter((f) => f.endsWith('.json')).sort().map((f) => `tests/bench/${f}`);
+  : readdirSync(`${root}tests/bench`)
+      .filter((f) => f.endsWith('.json'))
+      .sort()
+      .map((f) => `tests/bench/${f}`);
 const specs = files.map((f) => ({ file: f, ...JSON.parse(readFileSync(`${root}${f}`, 'utf8')) }));
 
 const fmt = (v, digits = 3) => (v === undefined || v === null || Number.isNaN(v) ? '–' : Number(v).toPrecision(digits));
@@ -29,7 +32,9 @@ for (const spec of specs) {
 console.log('\nworkload                        native            wasm (Node)       wasm/native  bytes/cell  page Sim/bare');
 for (const { spec, native, wasm: w } of rows) {
   if (spec.experiment) {
-    console.log(`${spec.name.padEnd(30)}  ${fmt(native.median_seconds)} s on ${native.threads} threads   ${fmt(w.median_seconds)} s on 1 thread   (${native.runs} runs)`);
+    console.log(
+      `${spec.name.padEnd(30)}  ${fmt(native.median_seconds)} s on ${native.threads} threads   ${fmt(w.median_seconds)} s on 1 thread   (${native.runs} runs)`,
+    );
     continue;
   }
   const unit = spec.work_unit ? `${spec.work_unit}/s` : 'steps/s';
@@ -52,11 +57,14 @@ console.log(
   `grading (${grading.count} hand-ins of lesson-amas-robots): ${grading.wasmMs.toFixed(1)} ms a hand-in in wasm (one worker's share), ` +
     `${grading.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core`,
 );
-const page = await benchPage(specs.filter((s) => s.page), (s) => {
-  let json = typeof s.scenario === 'string' ? wasm.preset_json(s.scenario) : JSON.stringify(s.scenario);
-  for (const [path, value] of Object.entries(s.set ?? {})) json = wasm.override_scenario(json, path, JSON.stringify(value));
-  return wasm.encode_link(json);
-});
+const page = await benchPage(
+  specs.filter((s) => s.page),
+  (s) => {
+    let json = typeof s.scenario === 'string' ? wasm.preset_json(s.scenario) : JSON.stringify(s.scenario);
+    for (const [path, value] of Object.entries(s.set ?? {})) json = wasm.override_scenario(json, path, JSON.stringify(value));
+    return wasm.encode_link(json);
+  },
+);
 console.log(`page load to interactive (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
 for (const r of page.runs) {
   const doing = r.moving === 'playing' ? `${fmt(r.stepsPerSecond)} steps/s` : `${r.moving}, paused,`;
@@ -64,7 +72,8 @@ for (const r of page.runs) {
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
   );
-  if (r.residentMb) console.log(`  resident after playing: the page's renderer process ${fmt(r.residentMb.renderer)} MB, the GPU process ${fmt(r.residentMb.gpu)} MB`);
+  if (r.residentMb)
+    console.log(`  resident after playing: the page's renderer process ${fmt(r.residentMb.renderer)} MB, the GPU process ${fmt(r.residentMb.gpu)} MB`);
   const p = r.profile;
   if (p) {
     const cpu = Object.entries(p.cpuSecondsPerSecond)
@@ -78,7 +87,13 @@ for (const r of page.runs) {
     );
   }
 }
-const out = { when: new Date().toISOString(), workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })), wasm_gzip_kb: gzKb, grading, page };
+const out = {
+  when: new Date().toISOString(),
+  workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })),
+  wasm_gzip_kb: gzKb,
+  grading,
+  page,
+};
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
 console.log('\nfull results: target/bench-results.json');
 if (overBudget(gzKb)) {

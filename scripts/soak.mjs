@@ -136,7 +136,16 @@ function report(where, model, preset, runs, taken, seconds, series, unit) {
 console.log(`soak: ${nativeSteps} steps natively, ${wasmSteps} in wasm, ${every} steps between native samples`);
 const native = nativeSoak();
 for (const r of native) {
-  report('native heap', r.model, r.preset, r.runs, r.steps, r.seconds, r.samples.map((p) => [p.step, p.live_bytes]), kb);
+  report(
+    'native heap',
+    r.model,
+    r.preset,
+    r.runs,
+    r.steps,
+    r.seconds,
+    r.samples.map((p) => [p.step, p.live_bytes]),
+    kb,
+  );
   if (r.samples[0].rss_bytes !== null) {
     // Resident memory is shown, not judged: the allocator may keep pages it was given.
     const s = summarise(r.samples.map((p) => [p.step, p.rss_bytes]));
@@ -147,7 +156,16 @@ if (wasmSteps > 0) {
   const exports = wasm.initSync({ module: readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`) });
   for (const r of native.length ? native : largestPresets()) {
     const w = wasmSoak(r.model, r.preset, exports);
-    report('wasm memory', w.model, w.preset, w.runs, w.steps, w.seconds, w.samples.map((p) => [p.step, p.memory]), mb);
+    report(
+      'wasm memory',
+      w.model,
+      w.preset,
+      w.runs,
+      w.steps,
+      w.seconds,
+      w.samples.map((p) => [p.step, p.memory]),
+      mb,
+    );
   }
 }
 writeFileSync(`${root}target/soak-results.json`, JSON.stringify({ when: new Date().toISOString(), steps, wasmSteps, every, rows }, null, 1));

@@ -27,6 +27,9 @@ cargo clippy -p kumiki-wasm --target wasm32-unknown-unknown --all-targets --quie
 step "gate: biome lint (web/, tests/, scripts/)"
 npx --no-install biome lint --error-on-warnings
 
+step "gate: biome format --check (web/, tests/, scripts/)"
+npx --no-install biome format .
+
 step "TypeScript unit tests (vitest, tests/unit/)"
 npx --no-install vitest run
 

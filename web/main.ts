@@ -101,7 +101,9 @@ const sim = new SimClient({
   },
   goal(met, because, steps) {
     const out = byId('exercise-result');
-    out.textContent = met ? `Goal met at step ${steps.toLocaleString('en-US')}: ${because}.` : `Not met yet (step ${steps.toLocaleString('en-US')}): ${because}.`;
+    out.textContent = met
+      ? `Goal met at step ${steps.toLocaleString('en-US')}: ${because}.`
+      : `Not met yet (step ${steps.toLocaleString('en-US')}): ${because}.`;
     out.classList.toggle('met', met);
     out.classList.toggle('unmet', !met);
     announcer.say(met ? `Goal met: ${because}.` : `Goal not met yet: ${because}.`);
@@ -129,7 +131,12 @@ const sim = new SimClient({
     large.failed();
     banner.keep = true;
     const model = session.layout ? String(session.doc().model ?? 'the model') : 'the model';
-    const bug = [`Kumiki ${core.version()} hit an internal error in ${model}.`, message, `Scenario: ${share.scenarioLink()}`, `Browser: ${navigator.userAgent}`].join('\n');
+    const bug = [
+      `Kumiki ${core.version()} hit an internal error in ${model}.`,
+      message,
+      `Scenario: ${share.scenarioLink()}`,
+      `Browser: ${navigator.userAgent}`,
+    ].join('\n');
     banner.report(`Kumiki hit an internal error in ${model}; your scenario is kept and was restarted from its start.\n${message}`, {
       label: 'Copy the report',
       run: () => void navigator.clipboard?.writeText(bug).catch(() => download('kumiki-error-report.txt', bug, 'text/plain')),
@@ -283,7 +290,12 @@ async function start() {
     lesson: () => openGallery('lessons'),
     build: () => keys.selectTab('scenario', true),
   });
-  setupExperiments(prefs, persistPrefs, (text) => banner.report(text), () => keys.selectTab('experiments'));
+  setupExperiments(
+    prefs,
+    persistPrefs,
+    (text) => banner.report(text),
+    () => keys.selectTab('experiments'),
+  );
   setupGrade();
   setupRecordDialog({
     describe: () => {
@@ -293,7 +305,10 @@ async function start() {
     legend: () => {
       const layout = session.layout;
       if (!layout) return [];
-      return [...layout.cells.map((c) => ({ name: c.name, color: c.color, round: false })), ...layout.agents.map((a) => ({ name: a.name, color: a.color, round: true }))];
+      return [
+        ...layout.cells.map((c) => ({ name: c.name, color: c.color, round: false })),
+        ...layout.agents.map((a) => ({ name: a.name, color: a.color, round: true })),
+      ];
     },
     setScale: (scale) => view.setCaptureScale(scale),
     record: (settings, signal, progress) => sim.record(settings, signal, progress),

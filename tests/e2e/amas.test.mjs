@@ -83,7 +83,10 @@ test('the collision heat map is an overlay of its own and counts what the core c
   await page.mouse.move(0, 0);
   await settle(page);
   const [a, b] = [await pixel(page, at.x, at.y), await pixel(page, away.x, away.y)];
-  assert.ok(a.some((v, i) => Math.abs(v - b[i]) > 40), `hot cell ${a} against cold cell ${b}`);
+  assert.ok(
+    a.some((v, i) => Math.abs(v - b[i]) > 40),
+    `hot cell ${a} against cold cell ${b}`,
+  );
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -8,9 +8,21 @@ import { loadWasm, openPage, session, settle, stepCount, waitForSteps } from './
 const wasm = loadWasm();
 const s = session('/');
 
-const PRESETS = ['chobie-crawl3', 'chobie-crawl5', 'chobie-crawl7', 'chobie-crawl9', 'chobie-form-a', 'chobie-form-b', 'chobie-form-c', 'chobie-form-d', 'chobie-bridge', 'chobie-load5'];
+const PRESETS = [
+  'chobie-crawl3',
+  'chobie-crawl5',
+  'chobie-crawl7',
+  'chobie-crawl9',
+  'chobie-form-a',
+  'chobie-form-b',
+  'chobie-form-c',
+  'chobie-form-d',
+  'chobie-bridge',
+  'chobie-load5',
+];
 
-const open = (preset, change = (x) => x) => openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(change(JSON.parse(wasm.preset_json(preset)))))}`);
+const open = (preset, change = (x) => x) =>
+  openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(change(JSON.parse(wasm.preset_json(preset)))))}`);
 const scenario = async (page) => JSON.parse(await page.$eval('#scenario-json', (t) => t.value));
 const metric = (page, name) =>
   page.$$eval(
@@ -105,7 +117,11 @@ test('a load with a typed magnitude is put on the clicked robot, recorded for th
   assert.deepEqual([recorded.kind, recorded.cells, recorded.force], ['load', [19], 300]);
   const link = wasm.decode_link(wasm.encode_link(JSON.stringify(await scenario(page))));
   assert.equal(JSON.parse(link).disturbances[0].force, 300, 'the magnitude survives a link');
-  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) > 0));
+  await page.waitForFunction(() =>
+    [...document.querySelectorAll('#metrics .metric')].some(
+      (m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) > 0,
+    ),
+  );
   assert.ok((await metric(page, 'peak_stress')) > 2 * bare, 'the load raises the peak stress');
   assert.equal(await page.isVisible('#colorbar'), true, 'the stress field has its colour bar');
   assert.ok(Number((await page.textContent('#colorbar-max')).replace(/,/g, '')) > 0);
@@ -127,7 +143,11 @@ test('a load with a typed magnitude is put on the clicked robot, recorded for th
     ['move', 19],
     ['move', 17],
   ]);
-  await page.waitForFunction(() => [...document.querySelectorAll('#metrics .metric')].some((m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) === 0));
+  await page.waitForFunction(() =>
+    [...document.querySelectorAll('#metrics .metric')].some(
+      (m) => m.firstChild.textContent === 'overloads' && Number(m.querySelector('strong').textContent) === 0,
+    ),
+  );
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -186,7 +206,11 @@ test('stepping slowly shows each slot of the last step: its meaning and its send
     await page.waitForFunction((n) => document.querySelector('#slot-label').textContent.startsWith(`Slot ${n} of`), k + 1);
     meanings.push(await page.textContent('#slot-label'));
   }
-  for (const word of ['route', 'drive', 'direction', 'completion']) assert.ok(meanings.some((m) => m.includes(word)), `${word} in ${meanings.join(' | ')}`);
+  for (const word of ['route', 'drive', 'direction', 'completion'])
+    assert.ok(
+      meanings.some((m) => m.includes(word)),
+      `${word} in ${meanings.join(' | ')}`,
+    );
   // The next step brings its own slots.
   await page.fill('#slot-range', '0');
   await page.dispatchEvent('#slot-range', 'input');

@@ -48,7 +48,7 @@ describe('rewind', () => {
     await context.close();
   });
 
-  test("a click in the past forks the run: the timeline ends there", async () => {
+  test('a click in the past forks the run: the timeline ends there', async () => {
     const { page, context } = await openPage(s.browser, s.server.url);
     await stepBy(page, 150);
     await page.locator('#timeline').fill('120');
@@ -62,7 +62,9 @@ describe('rewind', () => {
       await page.mouse.click(box.x + box.width * (0.2 + (0.6 * ((k * 7) % 40)) / 40), box.y + box.height * (0.5 + (0.45 * ((k * 13) % 40)) / 40));
       // The click was refused (a cell with nothing to act on), recorded, or missed the lattice.
       await page
-        .waitForFunction(() => !document.querySelector('#banner').hidden || document.querySelector('#scenario-json').value.includes('"disturbances"'), null, { timeout: 1000 })
+        .waitForFunction(() => !document.querySelector('#banner').hidden || document.querySelector('#scenario-json').value.includes('"disturbances"'), null, {
+          timeout: 1000,
+        })
         .catch(() => {});
       if (await page.isVisible('#banner')) await page.click('#banner-close');
     }
@@ -111,7 +113,10 @@ describe('an exercise', () => {
     const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${exerciseLink('completed and steps <= 100000')}`);
     await page.waitForSelector('#exercise:not([hidden])');
     assert.equal(await page.textContent('#exercise-title'), 'Build the L');
-    assert.equal(await page.$eval('#exercise-instructions', (d) => d.innerHTML), '<p>Build the L with <strong>5 robots</strong>.</p><ul><li>press Play</li><li>then Check</li></ul>');
+    assert.equal(
+      await page.$eval('#exercise-instructions', (d) => d.innerHTML),
+      '<p>Build the L with <strong>5 robots</strong>.</p><ul><li>press Play</li><li>then Check</li></ul>',
+    );
     assert.equal(await page.textContent('#exercise-goal'), 'completed and steps <= 100000');
     await page.click('#exercise-hint');
     assert.equal(await page.locator('#exercise-hints li').count(), 1);

@@ -259,8 +259,15 @@ describe('the voxel editor', () => {
     const box = await page.locator('.voxel-canvas').boundingBox();
     const cx = box.x + box.width / 2;
     const cy = box.y + box.height / 2;
-    await touch('touchStart', [[cx - 20, cy], [cx + 20, cy]]);
-    for (let k = 1; k <= 6; k++) await touch('touchMove', [[cx - 20 - 12 * k, cy], [cx + 20 + 12 * k, cy]]);
+    await touch('touchStart', [
+      [cx - 20, cy],
+      [cx + 20, cy],
+    ]);
+    for (let k = 1; k <= 6; k++)
+      await touch('touchMove', [
+        [cx - 20 - 12 * k, cy],
+        [cx + 20 + 12 * k, cy],
+      ]);
     await touch('touchEnd', []);
     await settle(page);
     const zoomed = await pixels(page, '.voxel-canvas');

@@ -71,8 +71,10 @@ describe('embedded in a course page on another origin', () => {
     const link = exerciseLink('completed');
     const { page, frame, context, problems } = await course(`${s.server.url}?embed#${link}`);
     assert.notEqual(new URL(s.server.url).port, String(host.address().port), 'the course page is another origin');
-    for (const shown of ['#view', '#play', '#step', '#reset', '#timeline', '#exercise', '#exercise-check']) assert.equal(await frame.isVisible(shown), true, `${shown} is shown`);
-    for (const hidden of ['.top', '.tabs', '#metrics', '#metric-chart', '#tools', '#panel-scenario', '#intro']) assert.equal(await frame.isVisible(hidden), false, `${hidden} is hidden`);
+    for (const shown of ['#view', '#play', '#step', '#reset', '#timeline', '#exercise', '#exercise-check'])
+      assert.equal(await frame.isVisible(shown), true, `${shown} is shown`);
+    for (const hidden of ['.top', '.tabs', '#metrics', '#metric-chart', '#tools', '#panel-scenario', '#intro'])
+      assert.equal(await frame.isVisible(hidden), false, `${hidden} is hidden`);
     assert.equal(await frame.textContent('#exercise-title'), 'Build the L');
     // Without an exercise the view takes the whole width.
     const plain = wasm.encode_link(wasm.preset_json('amas-L'));
@@ -169,7 +171,10 @@ describe('embedded in a course page on another origin', () => {
     await new Promise((r) => setTimeout(r, 800));
     assert.equal(await stepNow(), 0);
     assert.notEqual(await frame.title(), 'owned');
-    assert.deepEqual((await events(page)).map((e) => e.type), ['ready', 'step']);
+    assert.deepEqual(
+      (await events(page)).map((e) => e.type),
+      ['ready', 'step'],
+    );
 
     await page.evaluate(() => send({ source: 'kumiki', type: 'load', link: 'k1.***' }));
     await waitFor(page, () => events.some((e) => e.type === 'error'));
@@ -187,10 +192,17 @@ describe('embedded in a course page on another origin', () => {
 describe('an exercise done inside the frame (?embed=edit)', () => {
   test('shows the fields the exercise leaves open, holds its locks, and reports the hand-in', async () => {
     const doc = JSON.parse(wasm.preset_json('amas-L'));
-    doc.exercise = { title: 'Build the L', instructions: 'Choose the collision rule.', locked: { robots: doc.robots, seed: doc.seed }, goal: 'completed', hints: [] };
+    doc.exercise = {
+      title: 'Build the L',
+      instructions: 'Choose the collision rule.',
+      locked: { robots: doc.robots, seed: doc.seed },
+      goal: 'completed',
+      hints: [],
+    };
     const link = wasm.encode_link(JSON.stringify(doc));
     const { page, frame, context, problems } = await course(`${s.server.url}?embed=edit#${link}`);
-    for (const hidden of ['.top', '#tab-experiments', '#tab-about', '#make-exercise', '#intro']) assert.equal(await frame.isVisible(hidden), false, `${hidden} is hidden`);
+    for (const hidden of ['.top', '#tab-experiments', '#tab-about', '#make-exercise', '#intro'])
+      assert.equal(await frame.isVisible(hidden), false, `${hidden} is hidden`);
     assert.equal(await frame.isVisible('#tab-scenario'), true);
     await frame.click('#tab-scenario');
     assert.equal(await frame.isVisible('#param-collision'), true, 'the open field is there');

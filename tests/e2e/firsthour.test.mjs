@@ -23,7 +23,11 @@ describe('the first screen', () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url, { keepWelcome: true });
     await page.waitForSelector('#welcome[open]');
     assert.match(await page.textContent('#welcome-what'), /^Kumiki is a playground/);
-    assert.deepEqual(await page.$$eval('#welcome .way strong', (ws) => ws.map((w) => w.textContent)), ["Watch a paper's experiment", 'Take a lesson', 'Build your own']);
+    assert.deepEqual(await page.$$eval('#welcome .way strong', (ws) => ws.map((w) => w.textContent)), [
+      "Watch a paper's experiment",
+      'Take a lesson',
+      'Build your own',
+    ]);
     assert.equal(await page.textContent('h1'), 'Kumiki');
 
     await page.click('#way-lesson');
@@ -117,7 +121,7 @@ describe('the first screen', () => {
     await context.close();
   });
 
-  test("at 1366 × 768 the lesson with the longest instructions keeps Check and its verdict in view", async () => {
+  test('at 1366 × 768 the lesson with the longest instructions keeps Check and its verdict in view', async () => {
     const longest = wasm
       .lessons()
       .map((l) => JSON.parse(wasm.lesson_json(l.name)))

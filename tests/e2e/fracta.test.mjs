@@ -34,14 +34,20 @@ test('fracta draws hexagons with bonds and type labels that name each unit, and 
   const entries = sim.layout().cells;
   const expected = [...sim.cells()].filter((c) => c !== 0).map((c) => entries.find((e) => e.code === c).name);
   sim.free();
-  const labels = await page.evaluate(readLabels, entries.map((e) => e.name));
+  const labels = await page.evaluate(
+    readLabels,
+    entries.map((e) => e.name),
+  );
   assert.deepEqual(labels.map((l) => l.read).sort(), expected.sort(), 'one label per unit, naming its type');
   const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
   for (const l of labels) {
     assert.ok(l.score > 0.8 && l.score - l.runnerUp > 0.15, `label ${l.read} read clearly (${l.score} against ${l.runnerUp})`);
     // The renderer filled the cell under the label with the colour of the type the label names.
     const want = rgb(entries.find((e) => e.name === l.read).color);
-    assert.ok(l.colour.every((v, i) => Math.abs(v - want[i]) <= 12), `label ${l.read} sits on ${l.colour}, not on its type's colour ${want}`);
+    assert.ok(
+      l.colour.every((v, i) => Math.abs(v - want[i]) <= 12),
+      `label ${l.read} sits on ${l.colour}, not on its type's colour ${want}`,
+    );
   }
   await page.click('#play');
   await waitForSteps(page, 10);

@@ -43,8 +43,15 @@ describe('gestures on the planar view', () => {
     const cdp = await context.newCDPSession(page);
     const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
     const m = { x: p.x + 90, y: p.y + 30 };
-    await touch('touchStart', [[m.x - 20, m.y], [m.x + 20, m.y]]);
-    for (let k = 1; k <= 6; k++) await touch('touchMove', [[m.x - 20 - 10 * k, m.y], [m.x + 20 + 10 * k, m.y]]);
+    await touch('touchStart', [
+      [m.x - 20, m.y],
+      [m.x + 20, m.y],
+    ]);
+    for (let k = 1; k <= 6; k++)
+      await touch('touchMove', [
+        [m.x - 20 - 10 * k, m.y],
+        [m.x + 20 + 10 * k, m.y],
+      ]);
     await touch('touchEnd', []);
     assert.equal(await cellAt(page, m.x, m.y), underP, 'the cell between the fingers stays between them');
     assert.notEqual(await cellAt(page, q.x, q.y), underQ);
@@ -60,7 +67,9 @@ describe('gestures on the planar view', () => {
     await page.click('#tab-scenario');
     await page.waitForSelector('.grid-canvas');
     const count = async () => Number((await page.textContent('#model-editor .grid-canvas ~ .hint')).match(/^(\d+) cell/)[1]);
-    const rows = JSON.parse(await page.$eval('#scenario-json', (t) => t.value)).target.trim().split('\n');
+    const rows = JSON.parse(await page.$eval('#scenario-json', (t) => t.value))
+      .target.trim()
+      .split('\n');
     const w = rows[0].length;
     const box = await page.locator('.grid-canvas').boundingBox();
     const cell = box.width / w;
@@ -72,7 +81,10 @@ describe('gestures on the planar view', () => {
     await page.mouse.down();
     await page.mouse.move(box.x + (w - 2.5) * cell, y, { steps: 8 });
     await page.mouse.up();
-    await page.waitForFunction((n) => /^(\d+) cell/.exec(document.querySelector('#model-editor .grid-canvas ~ .hint').textContent)?.[1] === String(n), before + 3);
+    await page.waitForFunction(
+      (n) => /^(\d+) cell/.exec(document.querySelector('#model-editor .grid-canvas ~ .hint').textContent)?.[1] === String(n),
+      before + 3,
+    );
     await page.click('#model-editor button[aria-label="Undo the last drawing change"]');
     assert.equal(await count(), before, 'one undo takes the whole stroke back');
     assert.deepEqual(problems, []);

@@ -80,7 +80,9 @@ describe('the Grade view', () => {
     );
 
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-export')]);
-    const exported = readFileSync(await download.path(), 'utf8').trim().split('\n');
+    const exported = readFileSync(await download.path(), 'utf8')
+      .trim()
+      .split('\n');
     assert.equal(exported.length, 31);
     assert.match(exported[0], /^handin,student,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,/);
 
@@ -88,7 +90,10 @@ describe('the Grade view', () => {
     const list = join(tmpdir(), `kumiki-class-${process.pid}.txt`);
     writeFileSync(list, `${links.join('\n')}\n`);
     const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'check', '--file', list, '--exercise', LESSON], { encoding: 'utf8' });
-    const cli = out.trim().split('\n').map((l) => JSON.parse(l));
+    const cli = out
+      .trim()
+      .split('\n')
+      .map((l) => JSON.parse(l));
     assert.equal(cli.length, 30);
     const verdict = (r) => (r.error !== undefined ? 'could not be graded' : r.met ? 'met' : 'not met');
     for (const [i, row] of cli.entries()) {

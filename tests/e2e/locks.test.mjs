@@ -150,7 +150,7 @@ describe('locks', () => {
     await context.close();
   });
 
-  test('a link whose locked values differ from its exercise is not met, and says which field and the teacher\'s value', async () => {
+  test("a link whose locked values differ from its exercise is not met, and says which field and the teacher's value", async () => {
     const tampered = exercise();
     tampered.seed = 7;
     const { page, context } = await openPage(s.browser, `${s.server.url}#${link(tampered)}`);

@@ -76,7 +76,10 @@ describe('offline', () => {
   test('after one visit the page opens and runs a preset with the network off', async () => {
     const { context, page, problems } = await visit();
     const kept = Object.values(await cached(page)).flat();
-    assert.ok(kept.some((p) => p.endsWith('.wasm')), 'the wasm is kept');
+    assert.ok(
+      kept.some((p) => p.endsWith('.wasm')),
+      'the wasm is kept',
+    );
     assert.ok(kept.includes('/'), 'the page is kept');
     assert.ok(kept.includes('/manifest.webmanifest'));
 
@@ -95,12 +98,15 @@ describe('offline', () => {
     const link = wasm.encode_link(wasm.preset_json('cubes-cube8-ladder'));
     await page.goto(`${server.url}?embed#${link}`);
     await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-    assert.equal(await page.textContent('#state-hash'), (() => {
-      const sim = new wasm.Sim(wasm.decode_link(link));
-      const hash = sim.hash();
-      sim.free();
-      return hash;
-    })());
+    assert.equal(
+      await page.textContent('#state-hash'),
+      (() => {
+        const sim = new wasm.Sim(wasm.decode_link(link));
+        const hash = sim.hash();
+        sim.free();
+        return hash;
+      })(),
+    );
     await page.click('#step');
     await waitForSteps(page, 1);
     assert.deepEqual(problems, []);
@@ -125,17 +131,35 @@ describe('offline', () => {
 
   test('the server `npm start` runs (vite preview) stops: a reload still opens and runs', async () => {
     const port = 18000 + (process.pid % 1000);
-    const preview = spawn('npx', ['--no-install', 'vite', 'preview', '--port', String(port), '--strictPort', '--host', '127.0.0.1'], { stdio: 'ignore', detached: true });
+    const preview = spawn('npx', ['--no-install', 'vite', 'preview', '--port', String(port), '--strictPort', '--host', '127.0.0.1'], {
+      stdio: 'ignore',
+      detached: true,
+    });
     const url = `http://127.0.0.1:${port}/`;
     for (let i = 0; i < 100; i++) {
-      if (await fetch(url).then((r) => r.ok, () => false)) break;
+      if (
+        await fetch(url).then(
+          (r) => r.ok,
+          () => false,
+        )
+      )
+        break;
       await new Promise((r) => setTimeout(r, 200));
     }
     // vite preview answers with Vary: Origin, and the page's scripts load with crossorigin.
     assert.match((await fetch(url)).headers.get('vary') ?? '', /Origin/);
     await survivesOutage(url, async () => {
       process.kill(-preview.pid);
-      for (let i = 0; i < 50 && (await fetch(url).then(() => true, () => false)); i++) await new Promise((r) => setTimeout(r, 100));
+      for (
+        let i = 0;
+        i < 50 &&
+        (await fetch(url).then(
+          () => true,
+          () => false,
+        ));
+        i++
+      )
+        await new Promise((r) => setTimeout(r, 100));
     });
   });
 

@@ -90,9 +90,12 @@ describe('large scenarios', () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url);
     const before = await page.textContent('#state-hash');
     const name = await page.textContent('#scenario-name');
-    await page.evaluate((l) => {
-      location.hash = l;
-    }, linkOf(largestAmas({ supply_rows: 1, robots: 4097 })));
+    await page.evaluate(
+      (l) => {
+        location.hash = l;
+      },
+      linkOf(largestAmas({ supply_rows: 1, robots: 4097 })),
+    );
     await page.click('#large-ask-open');
     await page.waitForSelector('#banner:not([hidden])', { timeout: 60000 });
     assert.match(await page.textContent('#banner-text'), /^This scenario cannot run: robots: 4097 robots do not fit/);
@@ -110,7 +113,8 @@ describe('large scenarios', () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url);
     const name = await page.textContent('#scenario-name');
     const before = await page.textContent('#state-hash');
-    const amas = (side) => JSON.stringify({ ...JSON.parse(wasm.preset_json('amas-L')), name: `amas-${side}`, target: { rect: [side, side] }, disturbances: [] });
+    const amas = (side) =>
+      JSON.stringify({ ...JSON.parse(wasm.preset_json('amas-L')), name: `amas-${side}`, target: { rect: [side, side] }, disturbances: [] });
     const go = (json) =>
       page.evaluate((l) => {
         location.hash = l;

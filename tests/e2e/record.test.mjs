@@ -210,7 +210,9 @@ describe('recording the 2-D view (amas-L)', () => {
           super(...args);
           this.addEventListener('message', (e) => {
             const values = e.data !== null && typeof e.data === 'object' ? Object.values(e.data) : [];
-            crossed.pictures += values.filter((v) => v instanceof ImageBitmap || v instanceof ImageData || (typeof VideoFrame !== 'undefined' && v instanceof VideoFrame)).length;
+            crossed.pictures += values.filter(
+              (v) => v instanceof ImageBitmap || v instanceof ImageData || (typeof VideoFrame !== 'undefined' && v instanceof VideoFrame),
+            ).length;
             crossed.files += values.filter((v) => v instanceof Blob).length;
           });
         }
@@ -247,16 +249,23 @@ describe('recording the 2-D view (amas-L)', () => {
     await page.fill('#record-steps', '100000');
     await page.fill('#record-every', '1');
     await page.click('#record-start');
-    await page.waitForFunction(() => Number(document.querySelector('#record-progress').getAttribute('aria-valuenow')) >= 0 && /Frame [2-9]/.test(document.querySelector('#record-status').textContent));
+    await page.waitForFunction(
+      () =>
+        Number(document.querySelector('#record-progress').getAttribute('aria-valuenow')) >= 0 &&
+        /Frame [2-9]/.test(document.querySelector('#record-status').textContent),
+    );
     await page.click('#record-cancel');
     await page.waitForFunction(() => /Cancelled/.test(document.querySelector('#record-status').textContent));
     assert.equal(downloads, 0);
     assert.equal(await page.isEnabled('#record-start'), true);
     // The worker held the page's resize back to 1× while it recorded, and takes it once stopped.
-    await page.waitForFunction(([w, h]) => {
-      const c = document.querySelector('#view');
-      return c.width === w && c.height === h;
-    }, await bufferSize(page, 1));
+    await page.waitForFunction(
+      ([w, h]) => {
+        const c = document.querySelector('#view');
+        return c.width === w && c.height === h;
+      },
+      await bufferSize(page, 1),
+    );
     await page.click('#record-cancel');
     await settle(page);
     const before = await stepCount(page);

@@ -29,14 +29,20 @@ describe('rewind keys', () => {
     // Every frame shown on the way: the steps go down, never past the last press's target.
     await page.evaluate(() => {
       window.shownSteps = [];
-      new MutationObserver(() => window.shownSteps.push(Number(document.querySelector('#step-count').textContent.replace(/,/g, '')))).observe(document.querySelector('#step-count'), { childList: true, characterData: true, subtree: true });
+      new MutationObserver(() => window.shownSteps.push(Number(document.querySelector('#step-count').textContent.replace(/,/g, '')))).observe(
+        document.querySelector('#step-count'),
+        { childList: true, characterData: true, subtree: true },
+      );
     });
     for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowLeft');
     await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) === n, end - 20, { timeout: 20000 });
     await settle(page);
     assert.equal(await stepCount(page), end - 20);
     const shown = await page.evaluate(() => window.shownSteps);
-    assert.ok(shown.every((v) => v >= end - 20 && v < end), `steps shown: ${shown}`);
+    assert.ok(
+      shown.every((v) => v >= end - 20 && v < end),
+      `steps shown: ${shown}`,
+    );
     // And Right steps forward again from there.
     await page.keyboard.press('ArrowRight');
     await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) === n, end - 19);

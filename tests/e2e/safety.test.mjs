@@ -41,9 +41,21 @@ async function answerTime(page) {
 }
 
 const HOSTILE = [
-  ['a square shape of 2.7 × 10^11 cells in a few kilobytes', withKeys({ target: `${'#'.repeat(1 << 19)}\n${'#\n'.repeat(1 << 19)}` }), /target: the shape spans 524288 × 524289 cells/],
-  ['a hex shape far over the limit', JSON.stringify({ ...JSON.parse(wasm.preset_json('fracta-triangle10')), start: `${'# '.repeat(20000)}\n${'#\n'.repeat(20000)}` }), /the shape spans/],
-  ['a cubic shape far over the limit', JSON.stringify({ ...JSON.parse(wasm.preset_json('cubes-cube8-ladder')), shape: `${'#'.repeat(5000)}\n${'#\n'.repeat(5000)}---\n#` }), /the shape spans/],
+  [
+    'a square shape of 2.7 × 10^11 cells in a few kilobytes',
+    withKeys({ target: `${'#'.repeat(1 << 19)}\n${'#\n'.repeat(1 << 19)}` }),
+    /target: the shape spans 524288 × 524289 cells/,
+  ],
+  [
+    'a hex shape far over the limit',
+    JSON.stringify({ ...JSON.parse(wasm.preset_json('fracta-triangle10')), start: `${'# '.repeat(20000)}\n${'#\n'.repeat(20000)}` }),
+    /the shape spans/,
+  ],
+  [
+    'a cubic shape far over the limit',
+    JSON.stringify({ ...JSON.parse(wasm.preset_json('cubes-cube8-ladder')), shape: `${'#'.repeat(5000)}\n${'#\n'.repeat(5000)}---\n#` }),
+    /the shape spans/,
+  ],
   ['a deflate bomb', ' '.repeat(6 << 20), /larger than 4 MiB/],
   ['deep nesting', `${'['.repeat(100000)}${']'.repeat(100000)}`, /not valid JSON/],
   ['a huge number', withKeys({ robots: 1e12 }), /robots: 1000000000000 is not a whole number from 0 to/],
@@ -142,7 +154,9 @@ describe('framing', () => {
   });
 
   test('a course page on another origin may embed it; a page with no origin may not', async () => {
-    const host = createServer((_, res) => res.writeHead(200, { 'content-type': 'text/html' }).end(`<iframe id="k" src="${s.server.url}" width="900" height="600"></iframe>`));
+    const host = createServer((_, res) =>
+      res.writeHead(200, { 'content-type': 'text/html' }).end(`<iframe id="k" src="${s.server.url}" width="900" height="600"></iframe>`),
+    );
     await new Promise((r) => host.listen(0, '127.0.0.1', r));
     const context = await s.browser.newContext();
     const page = await context.newPage();

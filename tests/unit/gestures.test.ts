@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { type DragKind, type GestureHandlers, type GestureOptions, Gestures, type Modifiers, type Point, type PointerSample, type Timer } from '../../web/render/gestures';
+import {
+  type DragKind,
+  type GestureHandlers,
+  type GestureOptions,
+  Gestures,
+  type Modifiers,
+  type Point,
+  type PointerSample,
+  type Timer,
+} from '../../web/render/gestures';
 
 /** A timer the test fires by hand. */
 class FakeTimer implements Timer {
@@ -73,9 +82,19 @@ describe('tap or drag', () => {
       g.pointerUp(pointer(...(moves.at(-1) ?? [100, 100]), { buttons: 0 }));
       return of('tap');
     };
-    expect(wobble([[102, 101], [103, 102]])).toEqual([['tap', { x: 103, y: 102 }, 0, NO_MODS]]);
+    expect(
+      wobble([
+        [102, 101],
+        [103, 102],
+      ]),
+    ).toEqual([['tap', { x: 103, y: 102 }, 0, NO_MODS]]);
     // Movement adds up: there and back again is 6 pixels of movement.
-    expect(wobble([[103, 100], [100, 100]])).toEqual([]);
+    expect(
+      wobble([
+        [103, 100],
+        [100, 100],
+      ]),
+    ).toEqual([]);
     expect(wobble([[103, 103]])).toEqual([]);
   });
 

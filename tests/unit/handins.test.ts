@@ -32,7 +32,21 @@ describe('hand-ins', () => {
 
   test('the CSV export has a column for every metric the goal read, and the error rows', () => {
     const text = gradesCsv([
-      { handin: 1, student: 'Ada', link: A, name: 'Ada', met: true, because: 'the run completed', completed: true, steps: 209, hash: '2cce7f7c37266b5e', locked_edited: [], changed: ['collision'], exercise_edited: false, goal_metrics: { collisions: 9 } },
+      {
+        handin: 1,
+        student: 'Ada',
+        link: A,
+        name: 'Ada',
+        met: true,
+        because: 'the run completed',
+        completed: true,
+        steps: 209,
+        hash: '2cce7f7c37266b5e',
+        locked_edited: [],
+        changed: ['collision'],
+        exercise_edited: false,
+        goal_metrics: { collisions: 9 },
+      },
       { handin: 2, student: 'Linus', link: null, error: 'row 4 holds no Kumiki link: I forgot, sorry' },
     ]);
     expect(text.split('\n')).toEqual([

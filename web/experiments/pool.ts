@@ -16,7 +16,11 @@ export class ExperimentPool {
   private finished = 0;
   private stopped = false;
 
-  constructor(private readonly experiment: string, private readonly jobs: number, private readonly on: PoolEvents) {}
+  constructor(
+    private readonly experiment: string,
+    private readonly jobs: number,
+    private readonly on: PoolEvents,
+  ) {}
 
   /** Starts `size` workers (no more than there are jobs), each with the page's compiled module. */
   async start(size: number) {

@@ -3,10 +3,7 @@
 import init, { ExperimentRunner, panic_message } from '../pkg/kumiki_wasm.js';
 
 export type ToExperimentWorker = { type: 'setup'; experiment: string; module: WebAssembly.Module } | { type: 'run'; index: number };
-export type FromExperimentWorker =
-  | { type: 'ready' }
-  | { type: 'row'; index: number; row: string }
-  | { type: 'error'; index: number; message: string };
+export type FromExperimentWorker = { type: 'ready' } | { type: 'row'; index: number; row: string } | { type: 'error'; index: number; message: string };
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (m: FromExperimentWorker) => scope.postMessage(m);

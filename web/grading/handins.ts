@@ -102,7 +102,22 @@ export interface GradedRow {
 /** The Grade view's table as CSV: kumiki check's columns, with the student and the link first. */
 export function gradesCsv(rows: GradedRow[]): string {
   const metrics = [...new Set(rows.flatMap((r) => Object.keys(r.goal_metrics ?? {})))].sort();
-  const head = ['handin', 'student', 'name', 'met', 'because', 'completed', 'steps', 'hash', 'locked_edited', 'changed', 'exercise_edited', ...metrics.map((m) => `metrics.${m}`), 'error', 'link'];
+  const head = [
+    'handin',
+    'student',
+    'name',
+    'met',
+    'because',
+    'completed',
+    'steps',
+    'hash',
+    'locked_edited',
+    'changed',
+    'exercise_edited',
+    ...metrics.map((m) => `metrics.${m}`),
+    'error',
+    'link',
+  ];
   const lines = [head.join(',')];
   for (const r of rows) {
     const graded = r.error === undefined;

@@ -51,7 +51,10 @@ export const amasEditor: ModelEditor = {
       editor = null;
       clear(box);
       if (typeof value === 'string') {
-        note.textContent = part.key === 'initial' ? 'Cells of the target already built when the run starts.' : 'Paint the cells the robots should fill; the supply row is below.';
+        note.textContent =
+          part.key === 'initial'
+            ? 'Cells of the target already built when the run starts.'
+            : 'Paint the cells the robots should fill; the supply row is below.';
         editor = new GridEditor(box, {
           lattice: 'square',
           label: `AMAS ${part.label}`,
@@ -91,10 +94,19 @@ export const amasEditor: ModelEditor = {
 
     return {
       update(scenario) {
-        const before = parts().map((p) => p.label).join();
+        const before = parts()
+          .map((p) => p.label)
+          .join();
         doc = scenario;
         const value = partValue(parts()[Math.min(chosen, parts().length - 1)]);
-        if (parts().map((p) => p.label).join() !== before || !editor || typeof value !== 'string') show();
+        if (
+          parts()
+            .map((p) => p.label)
+            .join() !== before ||
+          !editor ||
+          typeof value !== 'string'
+        )
+          show();
         else editor.setText(value);
       },
       destroy() {

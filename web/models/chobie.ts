@@ -46,7 +46,10 @@ export const chobieEditor: ModelEditor = {
     let world = String(ctx.scenario().world ?? '');
     let robots = layer(world, '#');
     let terrain = layer(world, '=');
-    const note = el('p', { class: 'hint', text: 'Both layers are aligned at the top-left corner; gravity points down. A robot must rest on terrain, and the robots must form one piece.' });
+    const note = el('p', {
+      class: 'hint',
+      text: 'Both layers are aligned at the top-left corner; gravity points down. A robot must rest on terrain, and the robots must form one piece.',
+    });
     const error = el('p', { id: 'chobie-world-error', class: 'error', role: 'status', 'aria-live': 'polite' });
     const apply = (): string | null => {
       const merged = merge(robots, terrain);
@@ -58,7 +61,15 @@ export const chobieEditor: ModelEditor = {
     const terrainBox = el('div');
 
     // The crawl forms of figure 7, reconstructed (see docs/models/chobie.md).
-    const count = el('input', { type: 'number', min: 3, max: 199, step: 2, value: 7, id: 'chobie-crawl-robots', 'aria-label': 'Number of robots in the crawl form (odd)' });
+    const count = el('input', {
+      type: 'number',
+      min: 3,
+      max: 199,
+      step: 2,
+      value: 7,
+      id: 'chobie-crawl-robots',
+      'aria-label': 'Number of robots in the crawl form (odd)',
+    });
     const form = el('select', { id: 'chobie-crawl-form', 'aria-label': 'Crawl form' });
     for (const f of [1, 2, 3, 4]) form.append(el('option', { value: String(f), text: `form ${f}` }));
     const draw = el('button', { type: 'button', text: 'Draw crawl form', title: 'Replace the world by the chosen crawl form' });

@@ -32,7 +32,8 @@ export const cubes3dEditor: ModelEditor = {
     const fillPicker = () => {
       const list = targets();
       const want = [['-1', 'initial shape (where the units start)']];
-      for (const [i, t] of list.entries()) want.push([String(i), `target ${i + 1}${t.name ? ` “${String(t.name)}”` : ''}${typeof t.shape === 'string' ? '' : ' (no shape yet)'}`]);
+      for (const [i, t] of list.entries())
+        want.push([String(i), `target ${i + 1}${t.name ? ` “${String(t.name)}”` : ''}${typeof t.shape === 'string' ? '' : ' (no shape yet)'}`]);
       if ([...picker.options].map((o) => `${o.value}:${o.text}`).join() !== want.map((w) => w.join(':')).join()) {
         picker.replaceChildren(...want.map(([value, text]) => el('option', { value, text })));
       }

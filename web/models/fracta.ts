@@ -61,7 +61,8 @@ export const fractaEditor: ModelEditor = {
     });
     const renderPriorities = () => {
       clear(priority);
-      for (let i = 0; i < shapes.length; i++) priority.append(el('option', { value: String(i), text: i === 0 ? 'priority 1 (the goal)' : `priority ${i + 1} (with spares)` }));
+      for (let i = 0; i < shapes.length; i++)
+        priority.append(el('option', { value: String(i), text: i === 0 ? 'priority 1 (the goal)' : `priority ${i + 1} (with spares)` }));
       priority.value = String(current);
     };
     priority.addEventListener('change', () => {
@@ -103,7 +104,14 @@ export const fractaEditor: ModelEditor = {
       goalText,
       goalError,
       el('div', { class: 'row-buttons' }, applyGoal),
-      el('details', {}, el('summary', { text: 'Derive statements from goal shapes' }), el('div', { class: 'row-buttons' }, priority, addPriority, removePriority), shapeBox, el('div', { class: 'row-buttons' }, derive)),
+      el(
+        'details',
+        {},
+        el('summary', { text: 'Derive statements from goal shapes' }),
+        el('div', { class: 'row-buttons' }, priority, addPriority, removePriority),
+        shapeBox,
+        el('div', { class: 'row-buttons' }, derive),
+      ),
     );
 
     return {

@@ -54,12 +54,18 @@ export class GridEditor {
   private geo: Geometry | null = null;
   private readonly maxSide: number;
 
-  constructor(private readonly root: HTMLElement, private readonly opts: GridEditorOptions) {
+  constructor(
+    private readonly root: HTMLElement,
+    private readonly opts: GridEditorOptions,
+  ) {
     this.maxSide = opts.maxSide ?? 200;
     this.shape = this.read(opts.text) ?? { w: 8, h: 6, d: 1, cells: new Array(48).fill(0) };
     const id = `grid-${++editors}`;
     const toolGroup = el('div', { class: 'tools', role: 'radiogroup', 'aria-label': 'Drawing tool' });
-    for (const [tool, label] of [['paint', 'Paint'], ['erase', 'Erase']] as const) {
+    for (const [tool, label] of [
+      ['paint', 'Paint'],
+      ['erase', 'Erase'],
+    ] as const) {
       const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(tool === this.tool), text: label, 'data-tool': tool });
       b.addEventListener('click', () => {
         this.tool = tool;
@@ -105,7 +111,14 @@ export class GridEditor {
     });
     this.error = el('p', { class: 'error', role: 'status', 'aria-live': 'polite' });
     this.status = el('p', { class: 'hint' });
-    const details = el('details', {}, el('summary', { text: 'As text (import / export)' }), el('label', { for: this.text.id, class: 'sr-only', text: `${opts.label} as text` }), this.text, el('div', { class: 'row-buttons' }, useText));
+    const details = el(
+      'details',
+      {},
+      el('summary', { text: 'As text (import / export)' }),
+      el('label', { for: this.text.id, class: 'sr-only', text: `${opts.label} as text` }),
+      this.text,
+      el('div', { class: 'row-buttons' }, useText),
+    );
     clear(root);
     root.append(toolbar, this.canvas, this.error, this.status, details);
     this.bind();

@@ -47,7 +47,11 @@ class Card {
   dirty = false;
   private timer = 0;
 
-  constructor(private readonly owner: TargetsEditor, readonly index: number, idBase: string) {
+  constructor(
+    private readonly owner: TargetsEditor,
+    readonly index: number,
+    idBase: string,
+  ) {
     const id = `${idBase}-${index}`;
     this.name = el('input', { id: `${id}-name`, type: 'text', class: 'target-name' });
     this.text = el('textarea', { id: `${id}-lists`, rows: 3, spellcheck: 'false', class: 'type-lists', 'aria-describedby': `${id}-error ${id}-hint` });
@@ -55,8 +59,18 @@ class Card {
     this.hint = el('p', { class: 'hint', id: `${id}-hint` });
     this.threshold = el('input', { id: `${id}-threshold`, type: 'number', min: 0, step: 'any', class: 'size-input' });
     this.holdLit = el('input', { id: `${id}-hold`, type: 'checkbox' });
-    const apply = el('button', { type: 'button', text: 'Apply', 'aria-label': `Apply the type-lists of target ${index + 1}`, 'aria-keyshortcuts': 'Control+Enter' });
-    const derive = el('button', { type: 'button', text: 'Derive from shape', 'aria-label': `Derive from shape, for target ${index + 1}`, title: `Derive the type-lists of target ${index + 1} from the shape in the 3-D editor` });
+    const apply = el('button', {
+      type: 'button',
+      text: 'Apply',
+      'aria-label': `Apply the type-lists of target ${index + 1}`,
+      'aria-keyshortcuts': 'Control+Enter',
+    });
+    const derive = el('button', {
+      type: 'button',
+      text: 'Derive from shape',
+      'aria-label': `Derive from shape, for target ${index + 1}`,
+      title: `Derive the type-lists of target ${index + 1} from the shape in the 3-D editor`,
+    });
     this.removeButton = el('button', { type: 'button', text: 'Remove target', 'aria-label': `Remove target ${index + 1}` });
     apply.addEventListener('click', () => this.applyText());
     derive.addEventListener('click', () => this.derive());
@@ -203,14 +217,21 @@ export class TargetsEditor {
   private readonly addButton: HTMLButtonElement;
   private readonly error: HTMLElement;
 
-  constructor(private readonly root: HTMLElement, readonly opts: TargetsOptions, private readonly idBase: string) {
+  constructor(
+    private readonly root: HTMLElement,
+    readonly opts: TargetsOptions,
+    private readonly idBase: string,
+  ) {
     this.list = el('div', { class: 'target-list' });
     this.addButton = el('button', { type: 'button', text: 'Add target', title: 'Add a target (its type-lists derived from the shape in the 3-D editor)' });
     this.addButton.addEventListener('click', () => this.add());
     this.error = el('p', { class: 'error', role: 'status', 'aria-live': 'polite' });
     clear(root);
     root.append(
-      el('p', { class: 'hint', text: 'With two or more targets each unit switches to the next when its own difference D_0 stays below the threshold of its target for stable steps.' }),
+      el('p', {
+        class: 'hint',
+        text: 'With two or more targets each unit switches to the next when its own difference D_0 stays below the threshold of its target for stable steps.',
+      }),
       this.list,
       el('div', { class: 'row-buttons' }, this.addButton),
       this.error,

@@ -73,7 +73,10 @@ export class VoxelEditor {
   private readonly resizeObserver: ResizeObserver;
   private destroyed = false;
 
-  constructor(private readonly root: HTMLElement, idPrefix: string) {
+  constructor(
+    private readonly root: HTMLElement,
+    idPrefix: string,
+  ) {
     const id = idPrefix;
     const toolGroup = el('div', { class: 'tools', role: 'radiogroup', 'aria-label': 'Editing tool' });
     for (const [tool, label, aria] of [
@@ -87,7 +90,12 @@ export class VoxelEditor {
     }
     const button = (label: string, aria: string, f: () => void, extra: Record<string, string> = {}) => {
       // The spoken name holds the visible one (WCAG 2.5.3); a longer explanation is the title.
-      const b = el('button', { type: 'button', text: label, ...(aria.toLowerCase().includes(label.toLowerCase()) ? { 'aria-label': aria } : { title: aria }), ...extra });
+      const b = el('button', {
+        type: 'button',
+        text: label,
+        ...(aria.toLowerCase().includes(label.toLowerCase()) ? { 'aria-label': aria } : { title: aria }),
+        ...extra,
+      });
       b.addEventListener('click', f);
       return b;
     };
@@ -112,7 +120,8 @@ export class VoxelEditor {
       class: 'voxel-canvas',
       tabindex: 0,
       role: 'application',
-      'aria-label': 'Shape in 3-D. Click a face to add a unit, Alt-click or right-click or long-press to remove; drag to turn, Shift-drag to pan, wheel or pinch to zoom. Keys: arrows move the cursor, Page Up and Page Down change its layer, Space or Enter toggles a unit, Delete removes, Shift+arrows turn the view, brackets change the shown layer.',
+      'aria-label':
+        'Shape in 3-D. Click a face to add a unit, Alt-click or right-click or long-press to remove; drag to turn, Shift-drag to pan, wheel or pinch to zoom. Keys: arrows move the cursor, Page Up and Page Down change its layer, Space or Enter toggles a unit, Delete removes, Shift+arrows turn the view, brackets change the shown layer.',
     });
     this.wrap = el('div', { class: 'voxel-wrap' }, this.canvas, fit);
     this.hint = el('p', { class: 'voxel-hint', 'aria-hidden': 'true' });
@@ -141,7 +150,14 @@ export class VoxelEditor {
     clear(root);
     root.append(
       el('div', { class: 'row-buttons voxel-toolbar' }, toolGroup, this.undoButton, this.redoButton),
-      el('div', { class: 'row-buttons voxel-slice' }, el('label', { for: this.sliceSelect.id, text: 'Show' }), this.sliceSelect, this.levelInput, this.levelOut),
+      el(
+        'div',
+        { class: 'row-buttons voxel-slice' },
+        el('label', { for: this.sliceSelect.id, text: 'Show' }),
+        this.sliceSelect,
+        this.levelInput,
+        this.levelOut,
+      ),
       this.wrap,
       this.error,
       this.status,
@@ -409,7 +425,11 @@ export class VoxelEditor {
     if (cs.length) {
       const lo = [0, 1, 2].map((a) => Math.min(...cs.map((c) => c[a])));
       const hi = [0, 1, 2].map((a) => Math.max(...cs.map((c) => c[a])) + 1);
-      this.viewer?.fit_box(new Float64Array([lo[0] - b.ox - 0.5, lo[1] - b.oy - 0.5, 0]), new Float64Array([hi[0] - b.ox + 0.5, hi[1] - b.oy + 0.5, hi[2] + 0.5]), 0.92);
+      this.viewer?.fit_box(
+        new Float64Array([lo[0] - b.ox - 0.5, lo[1] - b.oy - 0.5, 0]),
+        new Float64Array([hi[0] - b.ox + 0.5, hi[1] - b.oy + 0.5, hi[2] + 0.5]),
+        0.92,
+      );
     } else {
       this.viewer?.fit_box(new Float64Array([0, 0, 0]), new Float64Array([b.w, b.h, 1]), 1.08);
     }
@@ -584,7 +604,10 @@ export class VoxelEditor {
           break;
         case '[':
         case ']':
-          this.setSlice(this.sliceMode === 'all' ? 'below' : this.sliceMode, (this.sliceMode === 'all' ? this.box.d - 1 : this.level) + (e.key === ']' ? 1 : -1));
+          this.setSlice(
+            this.sliceMode === 'all' ? 'below' : this.sliceMode,
+            (this.sliceMode === 'all' ? this.box.d - 1 : this.level) + (e.key === ']' ? 1 : -1),
+          );
           break;
         case '+':
         case '=':

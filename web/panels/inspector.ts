@@ -31,7 +31,8 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     const code = await sim.code(cell);
     return session.layout?.cells.find((c) => c.code === code)?.name ?? (code ? `code ${code}` : 'empty');
   }
-  const cellFacts = (cell: number, name: string) => el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: name }));
+  const cellFacts = (cell: number, name: string) =>
+    el('dl', {}, el('dt', { text: 'cell' }), el('dd', { text: `${cell} ${coords(cell)}` }), el('dt', { text: 'state' }), el('dd', { text: name }));
   /** The cell whose facts the panel shows (or is about to): answers for another arrive too late. */
   let shown = -1;
 
@@ -106,7 +107,11 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     if (shown !== cell) return;
     if (typeof facts.type_list === 'string') dl.append(el('dt', { text: 'type-list' }), el('dd', { text: facts.type_list }));
     if (typeof facts.difference === 'number') dl.append(el('dt', { text: 'difference' }), el('dd', { text: formatNumber(facts.difference) }));
-    if (Array.isArray(facts.reachable)) dl.append(el('dt', { text: 'reachable' }), el('dd', { text: facts.movable === false ? 'cannot move' : `${facts.reachable.length} position${facts.reachable.length === 1 ? '' : 's'}` }));
+    if (Array.isArray(facts.reachable))
+      dl.append(
+        el('dt', { text: 'reachable' }),
+        el('dd', { text: facts.movable === false ? 'cannot move' : `${facts.reachable.length} position${facts.reachable.length === 1 ? '' : 's'}` }),
+      );
     inspector.hidden = false;
     inspector.replaceChildren(dl);
   }

@@ -69,7 +69,13 @@ export function setupKeys(page: Page, run: RunPanel, scenario: ScenarioPanel): K
     // The page's keys act only when no control has the focus: Space on a checkbox ticks it, and
     // the arrows move sliders and tool groups. Left steps back only from the view.
     const onView = e.target === byId('view');
-    if (!onView && e.target instanceof HTMLElement && e.target !== document.body && e.target.closest('input, select, textarea, button, a, summary, [role="radiogroup"], [role="tablist"], [tabindex]')) return;
+    if (
+      !onView &&
+      e.target instanceof HTMLElement &&
+      e.target !== document.body &&
+      e.target.closest('input, select, textarea, button, a, summary, [role="radiogroup"], [role="tablist"], [tabindex]')
+    )
+      return;
     switch (e.key) {
       case ' ':
         e.preventDefault();

@@ -130,7 +130,13 @@ export function setupRunPanel(page: Page): RunPanel {
     if (frame.hash) byId('state-hash').textContent = frame.hash;
     const status = byId('run-status');
     const goal = session.layout?.goal ?? true;
-    status.textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? (goal ? 'step limit reached' : `ran ${frame.steps.toLocaleString('en-US')} steps`) : '';
+    status.textContent = frame.completed
+      ? `completed in ${frame.steps.toLocaleString('en-US')} steps`
+      : frame.finished
+        ? goal
+          ? 'step limit reached'
+          : `ran ${frame.steps.toLocaleString('en-US')} steps`
+        : '';
     status.classList.toggle('failed', frame.finished && !frame.completed && goal);
     // In an exercise the goal's verdict is the one in colour: completing may not be meeting it.
     status.classList.toggle('plain', session.doc().exercise !== undefined);
@@ -182,14 +188,22 @@ export function setupRunPanel(page: Page): RunPanel {
         // (it is drawn apart from both), so the card still starts with its name and ends with
         // its value.
         const tip = info ? [el('span', { class: 'metric-about', role: 'tooltip', id: `metric-about-${name}`, text: `${info.about} Unit: ${info.unit}.` })] : [];
-        metricsBox.append(el('div', { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined }, el('span', { text: name.replace(/_/g, ' ') }), ...tip, value));
+        metricsBox.append(
+          el(
+            'div',
+            { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined },
+            el('span', { text: name.replace(/_/g, ' ') }),
+            ...tip,
+            value,
+          ),
+        );
         metricNodes.set(name, value);
       }
       const numeric = names.filter((n) => typeof metrics[n] === 'number');
       clear(chartSelect);
       for (const n of numeric) chartSelect.append(el('option', { value: n, text: n.replace(/_/g, ' ') }));
       const layout = session.layout;
-      const preferred = layout && numeric.includes(layout.chart) ? layout.chart : numeric[0] ?? '';
+      const preferred = layout && numeric.includes(layout.chart) ? layout.chart : (numeric[0] ?? '');
       const want = numeric.includes(prefs.chartMetric) ? prefs.chartMetric : preferred;
       chartSelect.value = want;
       if (want !== prefs.chartMetric) {
@@ -267,7 +281,15 @@ export function setupRunPanel(page: Page): RunPanel {
     for (const t of clickable) {
       for (const [key, value] of Object.entries(t.action)) {
         if (typeof value !== 'number') continue;
-        const input = el('input', { type: 'number', step: 'any', value: String(value), id: `tool-${t.name}-${key}`, 'data-tool': t.name, 'data-key': key, 'aria-label': `${t.label}: ${key}` });
+        const input = el('input', {
+          type: 'number',
+          step: 'any',
+          value: String(value),
+          id: `tool-${t.name}-${key}`,
+          'data-tool': t.name,
+          'data-key': key,
+          'aria-label': `${t.label}: ${key}`,
+        });
         values.append(el('label', { class: 'row' }, `${t.label}: ${key} `, input));
       }
     }

@@ -152,7 +152,14 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     const model = String(doc.model);
     const spec = modelEditors[model];
     renderExercise(exercise);
-    renderParams(byId<HTMLFormElement>('param-form'), doc, (key, value) => page.applyChange(key, value), spec?.owns, new Set(Object.keys(exercise?.locked ?? {})), core.modelSchema(model));
+    renderParams(
+      byId<HTMLFormElement>('param-form'),
+      doc,
+      (key, value) => page.applyChange(key, value),
+      spec?.owns,
+      new Set(Object.keys(exercise?.locked ?? {})),
+      core.modelSchema(model),
+    );
     jsonDirty = false;
     syncJsonEditor();
     jsonError.textContent = '';
@@ -192,7 +199,13 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     const editorBody = root.querySelector<HTMLElement>(':scope > div');
     if (editorBody) editorBody.inert = lockedHere.length > 0;
     root.querySelector('.locked-note')?.remove();
-    if (lockedHere.length) root.append(el('p', { class: 'locked-note', text: `Locked by the exercise: ${lockedHere.map((k) => k.replace(/_/g, ' ')).join(', ')}. The editor shows them read-only.` }));
+    if (lockedHere.length)
+      root.append(
+        el('p', {
+          class: 'locked-note',
+          text: `Locked by the exercise: ${lockedHere.map((k) => k.replace(/_/g, ' ')).join(', ')}. The editor shows them read-only.`,
+        }),
+      );
   }
 
   /** Opens the editor's text; false, with the reason beside the editor, when it cannot run. */

@@ -52,7 +52,11 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
     clear(description);
     // An exercise shows its instructions and goal, never its preset's description (which may
     // give the answer away).
-    if (exercise) description.append(...renderMarkdown(exercise.instructions), el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`));
+    if (exercise)
+      description.append(
+        ...renderMarkdown(exercise.instructions),
+        el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`),
+      );
     else description.append(el('p', { text: displayText(doc.description ?? '', 4000, true) || 'It comes with no description.' }));
     const dialog = byId<HTMLDialogElement>('intro');
     if (!dialog.open) dialog.showModal();

@@ -136,7 +136,13 @@ async function videoCodec(width: number, height: number, fps: number): Promise<{
  * drawn. Resolves with the step the recording ends at: the start plus the steps recorded, or the
  * run's last step when it ended first (its last state is then the last frame).
  */
-async function eachFrame(host: RecordHost, s: RecordSettings, signal: AbortSignal, progress: Progress, each: (picture: ImageBitmap, index: number) => Promise<void>): Promise<number> {
+async function eachFrame(
+  host: RecordHost,
+  s: RecordSettings,
+  signal: AbortSignal,
+  progress: Progress,
+  each: (picture: ImageBitmap, index: number) => Promise<void>,
+): Promise<number> {
   const total = frameCount(s.steps, s.every);
   let at = host.steps();
   const end = at + total * s.every;

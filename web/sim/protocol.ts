@@ -24,10 +24,7 @@ export interface ViewMarks {
   bonds: boolean;
 }
 
-export type CameraMove =
-  | { op: 'drag'; dx: number; dy: number; orbit: boolean }
-  | { op: 'zoom'; factor: number; x: number; y: number }
-  | { op: 'fit' };
+export type CameraMove = { op: 'drag'; dx: number; dy: number; orbit: boolean } | { op: 'zoom'; factor: number; x: number; y: number } | { op: 'fit' };
 
 export interface Picked {
   cell: number;

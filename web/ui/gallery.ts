@@ -9,7 +9,12 @@ export type GalleryPart = 'lessons' | 'scenarios' | 'all';
 
 const TITLES: Record<GalleryPart, string> = { lessons: 'Lessons', scenarios: "The papers' scenarios", all: 'Scenarios' };
 
-export function setupGallery(presets: PresetInfo[], lessons: LessonInfo[], choose: (name: string) => void, chooseLesson: (name: string) => void): (part: GalleryPart) => void {
+export function setupGallery(
+  presets: PresetInfo[],
+  lessons: LessonInfo[],
+  choose: (name: string) => void,
+  chooseLesson: (name: string) => void,
+): (part: GalleryPart) => void {
   const dialog = byId<HTMLDialogElement>('gallery');
   const list = byId('gallery-list');
   const filter = byId<HTMLInputElement>('gallery-filter');

@@ -149,7 +149,9 @@ export function setupGrade() {
     clear(body);
     const end = Math.min(rows.length, pageStart + PAGE_ROWS);
     for (let i = pageStart; i < end; i++) body.append(rows[i] ? tableRow(rows[i]) : pendingRow(i + 1, pool !== null));
-    pageLabel.textContent = rows.length ? `Rows ${(pageStart + 1).toLocaleString('en-US')} to ${end.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')}` : '';
+    pageLabel.textContent = rows.length
+      ? `Rows ${(pageStart + 1).toLocaleString('en-US')} to ${end.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')}`
+      : '';
     prev.disabled = pageStart === 0;
     next.disabled = end >= rows.length;
   };
@@ -239,7 +241,12 @@ export function setupGrade() {
 
 /** A row not graded yet: still to come, or left when grading was cancelled. */
 function pendingRow(handin: number, grading: boolean): HTMLTableRowElement {
-  return el('tr', { class: 'pending' }, el('td', { text: String(handin) }), el('td', { colspan: '7', class: 'hint', text: grading ? 'being graded…' : 'not graded' }));
+  return el(
+    'tr',
+    { class: 'pending' },
+    el('td', { text: String(handin) }),
+    el('td', { colspan: '7', class: 'hint', text: grading ? 'being graded…' : 'not graded' }),
+  );
 }
 
 function tableRow(r: GradedRow): HTMLTableRowElement {
@@ -247,7 +254,15 @@ function tableRow(r: GradedRow): HTMLTableRowElement {
   const metrics = Object.entries(r.goal_metrics ?? {})
     .map(([k, v]) => `${k.replace(/_/g, ' ')} ${formatNumber(v)}`)
     .join(', ');
-  const open = r.link ? el('a', { href: r.link.startsWith('http') ? r.link : `${location.pathname}${r.link.startsWith('#') ? '' : '#'}${r.link}`, target: '_blank', rel: 'noopener', text: 'open', 'aria-label': `Open hand-in ${r.handin}` }) : '';
+  const open = r.link
+    ? el('a', {
+        href: r.link.startsWith('http') ? r.link : `${location.pathname}${r.link.startsWith('#') ? '' : '#'}${r.link}`,
+        target: '_blank',
+        rel: 'noopener',
+        text: 'open',
+        'aria-label': `Open hand-in ${r.handin}`,
+      })
+    : '';
   const reason = r.error ?? [r.because, r.changed?.length ? `changed: ${r.changed.join(', ')}` : ''].filter(Boolean).join('. ');
   return el(
     'tr',

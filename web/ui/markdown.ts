@@ -38,5 +38,7 @@ const node = (s: Span): Node | string => (s.kind === 'text' ? s.text : el(s.kind
 
 /** The instructions as DOM nodes, built from text only. */
 export function renderMarkdown(text: string): HTMLElement[] {
-  return parseMarkdown(text).map((b) => (b.kind === 'p' ? el('p', {}, ...b.spans.map(node)) : el('ul', {}, ...b.items.map((item) => el('li', {}, ...item.map(node))))));
+  return parseMarkdown(text).map((b) =>
+    b.kind === 'p' ? el('p', {}, ...b.spans.map(node)) : el('ul', {}, ...b.items.map((item) => el('li', {}, ...item.map(node)))),
+  );
 }

@@ -80,7 +80,9 @@ export function setupRecordDialog(page: RecordPage) {
     cancel.textContent = running ? 'Cancel' : 'Close';
     const n = Math.max(1, Number(steps.value) || 1);
     const k = Math.max(1, Number(every.value) || 1);
-    byId('record-summary').textContent = still ? 'One picture of the view as it stands.' : `${frameCount(n, k)} frames, ${(frameCount(n, k) / Math.max(1, Number(fps.value) || 1)).toFixed(1)} s long.`;
+    byId('record-summary').textContent = still
+      ? 'One picture of the view as it stands.'
+      : `${frameCount(n, k)} frames, ${(frameCount(n, k) / Math.max(1, Number(fps.value) || 1)).toFixed(1)} s long.`;
   };
   for (const f of [format, steps, every, fps]) f.addEventListener('input', syncFields);
 
@@ -125,7 +127,8 @@ export function setupRecordDialog(page: RecordPage) {
       const file = await record(page, settings, running.signal, showProgress);
       status.textContent = `Saved ${file}`;
     } catch (err) {
-      status.textContent = err instanceof Cancelled ? 'Cancelled: nothing was saved.' : `The recording failed: ${err instanceof Error ? err.message : String(err)}`;
+      status.textContent =
+        err instanceof Cancelled ? 'Cancelled: nothing was saved.' : `The recording failed: ${err instanceof Error ? err.message : String(err)}`;
     } finally {
       running = null;
       start.disabled = false;

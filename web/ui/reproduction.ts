@@ -57,11 +57,7 @@ export function renderReproduction(root: HTMLElement, model: string) {
   const table = el('table', { class: 'findings' });
   table.append(
     el('caption', { text: `Reproduction of ${section.model}'s paper` }),
-    el(
-      'thead',
-      {},
-      el('tr', {}, ...['§', 'The paper', 'Kumiki', 'Runs', 'Verdict'].map((h) => el('th', { scope: 'col', text: h }))),
-    ),
+    el('thead', {}, el('tr', {}, ...['§', 'The paper', 'Kumiki', 'Runs', 'Verdict'].map((h) => el('th', { scope: 'col', text: h })))),
   );
   const body = el('tbody');
   for (const f of section.findings) {
