@@ -25,6 +25,12 @@ export function clear(node: Element) {
   while (node.firstChild) node.firstChild.remove();
 }
 
+/** A file name for figure `index` (from 1) of an experiment: `amas-fig23-1.svg`. */
+export function figureFileName(experiment: string, index: number, ext: 'svg' | 'png'): string {
+  const base = experiment.replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '') || 'experiment';
+  return `${base}-${index}.${ext}`;
+}
+
 /** Offers text (or bytes) as a file download. */
 export function download(name: string, data: BlobPart, type: string) {
   const url = URL.createObjectURL(new Blob([data], { type }));

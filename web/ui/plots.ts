@@ -3,13 +3,7 @@
 // writes a summary as a table, and saves each figure as SVG or PNG (twice the size).
 import type { Figure } from '../types';
 import * as core from '../wasm';
-import { clear, download, el, formatNumber } from './dom';
-
-/** A file name for figure `index` (from 1) of an experiment: `amas-fig23-1.svg`. */
-export function figureFileName(experiment: string, index: number, ext: 'svg' | 'png'): string {
-  const base = experiment.replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '') || 'experiment';
-  return `${base}-${index}.${ext}`;
-}
+import { clear, download, el, figureFileName, formatNumber } from './dom';
 
 /** The SVG as a PNG of twice its size, drawn on a white background. */
 export async function svgToPng(svg: string): Promise<Blob> {
