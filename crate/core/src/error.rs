@@ -206,13 +206,26 @@ fn nearest_instead_of_list(reason: &str) -> String {
 /// The allowed name closest to `name` by edit distance, if it is close (at most a third of its
 /// letters differ, and at least one may).
 fn nearest<'a>(name: &str, names: &[&'a str]) -> Option<&'a str> {
-    let limit = (name.chars().count() / 3).max(1);
-    names
-        .iter()
-        .map(|n| (edit_distance(name, n), *n))
-        .filter(|(d, _)| *d <= limit)
+    nearest_within(
+        name,
+        names.iter().copied(),
+        (name.chars().count() / 3).max(1),
+    )
+}
+
+/// The candidate closest to `word` by edit distance, if at most `limit` edits away; of equally
+/// close ones, the first by name.
+pub(crate) fn nearest_within<'a>(
+    word: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+    limit: usize,
+) -> Option<&'a str> {
+    candidates
+        .into_iter()
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|&(d, _)| d <= limit)
         .min()
-        .map(|(_, n)| n)
+        .map(|(_, c)| c)
 }
 
 /// Levenshtein distance, in characters.
