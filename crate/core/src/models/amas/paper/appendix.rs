@@ -65,10 +65,14 @@ pub(super) fn figb1_findings(r: &Results, out: &mut Vec<Finding>) {
             text.join("; ")
         ),
         2 * 2 * 5 * 10,
-        Verdict::from(ok),
-        "Holds if relay takes fewer total steps than no relay at every penalty from 1 to 5 \
-         steps, with both fields. A collision costs its penalty and a relay replaces one, so the \
-         gap is expected to widen with the penalty; the percentages show whether it does.",
+        Verdict::NotStated,
+        &format!(
+            "The appendix states the comparison, not its outcome, so no verdict is given: \
+             Kumiki's own figures. Relay {} fewer total steps than no relay at every penalty from \
+             1 to 5 steps with both fields; the percentages show how the gap changes with the \
+             penalty.",
+            if ok { "takes" } else { "does not take" }
+        ),
     ));
     // Where relay stops paying: the relay duration at which relay is no better than no relay,
     // for each collision penalty.
@@ -97,12 +101,19 @@ pub(super) fn figb1_findings(r: &Results, out: &mut Vec<Finding>) {
             text.join("; ")
         ),
         r.rows("amas-figB1").len(),
-        Verdict::from(ok),
-        "The appendix states the comparison, not its outcome. Judged against what the \
-         appendix's question implies: holds if, at every penalty, relay still pays while a \
-         relay takes no longer than the collision it replaces (the crossing, if any, lies above \
-         the penalty). Without relay the relay duration plays no part: its row at relay \
-         duration 1 is the reference.",
+        Verdict::NotStated,
+        &format!(
+            "The appendix states the comparison, not its outcome, so no verdict is given: \
+             Kumiki's own figures. Relay {} at every penalty while a relay takes no longer than \
+             the collision it replaces (the crossing, if any, lies above the penalty). Without \
+             relay the relay duration plays no part: its row at relay duration 1 is the \
+             reference.",
+            if ok {
+                "still pays"
+            } else {
+                "does not always pay"
+            }
+        ),
     ));
     // Which field is better (5.2: the continuous field, for its clearance at the corner) as
     // collisions cost more: the field with fewer collisions should gain.
@@ -157,9 +168,14 @@ pub(super) fn figb1_findings(r: &Results, out: &mut Vec<Finding>) {
             text.join("; ")
         ),
         2 * 2 * 5 * 10,
-        Verdict::from(gains),
-        "Holds if, under both rules, the continuous field's total steps relative to the \
-         discrete field's are lower at a penalty of 5 than at 1. Figure B.1's text names only \
-         the relay duration and the penalty; both fields are run (interpretation 20).",
+        Verdict::NotStated,
+        &format!(
+            "The appendix does not say which field is better at which penalty; the expectation \
+             is Kumiki's reading of 5.2, so no verdict is given. Under both rules the continuous \
+             field's total steps relative to the discrete field's are {} at a penalty of 5 than \
+             at 1 (the percentages show whether they move steadily). Figure B.1's text names only \
+             the relay duration and the penalty; both fields are run (interpretation 20).",
+            if gains { "lower" } else { "not lower" }
+        ),
     ));
 }
