@@ -487,7 +487,9 @@ pub fn to_csv(rows: &[Row]) -> String {
     out
 }
 
-fn csv_value(v: Option<&Value>) -> String {
+/// A parameter's or metric's value as a CSV cell: empty when missing, text guarded, numbers as
+/// JSON writes them.
+pub(crate) fn csv_value(v: Option<&Value>) -> String {
     match v {
         None | Some(Value::Null) => String::new(),
         Some(Value::String(s)) => csv_text(s),

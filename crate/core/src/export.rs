@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
-use crate::experiment::{csv_text, to_csv, Experiment, Row, PROGRAM_VERSION};
+use crate::experiment::{csv_text, csv_value, to_csv, Experiment, Row, PROGRAM_VERSION};
 use crate::models;
 
 /// The commit this program was built from (see build.rs).
@@ -110,11 +110,7 @@ pub fn trace_csv(p: &Provenance, rows: &[Row]) -> String {
         let Some(t) = &r.trace else { continue };
         let lead: String = std::iter::once(csv_text(&r.scenario))
             .chain(std::iter::once(r.seed.to_string()))
-            .chain(params.iter().map(|k| match r.params.get(*k) {
-                None | Some(Value::Null) => String::new(),
-                Some(Value::String(s)) => csv_text(s),
-                Some(v) => csv_text(&v.to_string()),
-            }))
+            .chain(params.iter().map(|k| csv_value(r.params.get(*k))))
             .collect::<Vec<_>>()
             .join(",");
         for (name, values) in &t.values {

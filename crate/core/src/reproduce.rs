@@ -252,7 +252,9 @@ impl Stats {
     }
 }
 
-fn quantile(sorted: &[f64], q: f64) -> f64 {
+/// Linear interpolation between order statistics of sorted values (Hyndman and Fan's type 7, the
+/// default of R and NumPy).
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
     let pos = q * (sorted.len() - 1) as f64;
     let lo = pos.floor() as usize;
     let hi = pos.ceil() as usize;

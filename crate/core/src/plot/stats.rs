@@ -22,44 +22,34 @@ pub struct Stats {
 }
 
 impl Stats {
-    /// The statistics of `values`, non-finite ones left out; `None` without any.
+    /// The statistics of `values`, non-finite ones left out; `None` without any. The summary is
+    /// the reproduction report's ([`crate::reproduce::Stats`]), with the interval added.
     pub fn of(values: &[f64]) -> Option<Stats> {
-        let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+        let v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
         if v.is_empty() {
             return None;
         }
-        v.sort_by(f64::total_cmp);
-        let n = v.len();
-        let mean = v.iter().sum::<f64>() / n as f64;
-        let sd = match n {
+        let r = crate::reproduce::Stats::of(&v);
+        let half = match r.n {
             1 => 0.0,
-            _ => (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt(),
-        };
-        let half = match n {
-            1 => 0.0,
-            _ => t975(n - 1) * sd / (n as f64).sqrt(),
+            n => t975(n - 1) * r.sd / (n as f64).sqrt(),
         };
         Some(Stats {
-            n,
-            mean,
-            sd,
-            min: v[0],
-            q1: quantile(&v, 0.25),
-            median: quantile(&v, 0.5),
-            q3: quantile(&v, 0.75),
-            max: v[n - 1],
-            ci95: [mean - half, mean + half],
+            n: r.n,
+            mean: r.mean,
+            sd: r.sd,
+            min: r.min,
+            q1: r.q1,
+            median: r.median,
+            q3: r.q3,
+            max: r.max,
+            ci95: [r.mean - half, r.mean + half],
         })
     }
 }
 
-/// Linear interpolation between order statistics of sorted values (Hyndman and Fan's type 7, the
-/// default of R and NumPy), as the reproduction report computes them.
-pub fn quantile(sorted: &[f64], p: f64) -> f64 {
-    let pos = p * (sorted.len() - 1) as f64;
-    let (lo, hi) = (pos.floor() as usize, pos.ceil() as usize);
-    sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)
-}
+/// Type-7 quantiles, as the reproduction report computes them.
+pub use crate::reproduce::quantile;
 
 /// The 0.975 quantile of Student's t with `df` degrees of freedom: exact to three decimals from
 /// the table up to 30, then the Cornish-Fisher expansion (error below 1e-4).
