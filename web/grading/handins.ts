@@ -77,7 +77,10 @@ export function parseHandins(text: string): Handin[] {
 
 /** A value as one CSV cell. */
 function csvCell(v: unknown): string {
-  const s = v === undefined || v === null ? '' : String(v);
+  const raw = v === undefined || v === null ? '' : String(v);
+  // Text a spreadsheet would read as a formula (a student's name can be anything) gets a leading
+  // `'`, as the core's CSV does (experiment::csv_text); numbers are written as they are.
+  const s = typeof v === 'string' && /^[=+\-@\t\r]/.test(raw) ? `'${raw}` : raw;
   return /[",\n\r]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
 }
 
