@@ -93,7 +93,7 @@ const sim = new SimClient({
   error(message, context) {
     if (context === 'load' && large.active) {
       large.failed();
-      if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+      if (!session.scenario) loadDefault();
     }
     if (context === 'apply') banner.report(`That did not work: ${message}`);
     else if (context === 'load') banner.report(`This scenario cannot run: ${message}`);
@@ -148,15 +148,20 @@ const structure = new StructureViews(view, (cell) => sim.inspect(cell));
 const large = new LargeOpening(
   () => {
     sim.recover();
-    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+    if (!session.scenario) loadDefault();
   },
   () => {
     share.leaveLink();
-    if (!session.scenario) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+    if (!session.scenario) loadDefault();
   },
 );
 
 // ---- opening a scenario -----------------------------------------------------------------------
+
+/** Opens the default preset, as a fresh start (not an edit, not in the undo history). */
+function loadDefault(): boolean {
+  return load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+}
 
 /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
 function load(json: string, { record = true, quiet = false, onProblem, opens = false }: LoadOptions = {}): boolean {
@@ -340,14 +345,14 @@ async function start() {
       core.version(),
     );
     // An embedded page shows its link or the default scenario, never what this browser last edited.
-    if (!share.openHash()) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+    if (!share.openHash()) loadDefault();
     return;
   }
   const unfinished = openingScenario();
   if (unfinished !== null) {
     // The page was closed or stopped while a scenario was opening: it may be what stopped it.
     openedScenario();
-    load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+    loadDefault();
     share.leaveLink();
     banner.keep = true;
     banner.report('The last scenario did not finish opening before the page closed, so the default one is shown. It may be too large for this device.', {
@@ -367,7 +372,7 @@ async function start() {
   // A link that could not be opened is explained in the banner; the scenario shown instead keeps it.
   banner.keep = banner.shown;
   const saved = savedScenario();
-  if (!(saved && load(saved, { record: false, quiet: true, opens: true }))) load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+  if (!(saved && load(saved, { record: false, quiet: true, opens: true }))) loadDefault();
 }
 
 start().catch((e: unknown) => banner.report(`Kumiki could not start: ${core.message(e)}`));

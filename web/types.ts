@@ -103,7 +103,6 @@ export interface ExperimentInfo {
   title: string;
   description: string;
   jobs: number;
-  plot: unknown;
   traced: boolean;
 }
 

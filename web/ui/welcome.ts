@@ -19,7 +19,7 @@ interface Stop {
   text: string;
 }
 
-export const TOUR: Stop[] = [
+const TOUR: Stop[] = [
   {
     target: 'canvas-wrap',
     title: 'The view',
@@ -50,8 +50,6 @@ export const TOUR: Stop[] = [
 export interface Welcome {
   /** Opens the first screen. */
   show(): void;
-  /** Starts the tour at its first stop. */
-  tour(): void;
 }
 
 export function setupWelcome(actions: WelcomeActions): Welcome {
@@ -129,5 +127,5 @@ export function setupWelcome(actions: WelcomeActions): Welcome {
   });
   byId('open-welcome').addEventListener('click', show);
 
-  return { show, tour: () => go(0) };
+  return { show };
 }

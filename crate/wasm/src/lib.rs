@@ -591,7 +591,7 @@ pub fn exercise_title(text: &str) -> Result<String, JsError> {
 /// Grades one hand-in as `kumiki check` does (page limits): the link replayed to its end and
 /// judged by the teacher's exercise (`exercise`: a link or a lesson's name) when given, else by
 /// its own. A graded row (`{name, met, because, completed, steps, hash, locked_edited, changed,
-/// exercise_edited, goal_metrics, summary}`) or `{error}`.
+/// exercise_edited, goal_metrics}`) or `{error}`.
 #[wasm_bindgen]
 pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, JsError> {
     #[derive(Serialize)]
@@ -599,7 +599,6 @@ pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, J
         #[serde(flatten)]
         grade: kumiki_core::exercise::Grade,
         goal_metrics: std::collections::BTreeMap<String, Value>,
-        summary: String,
     }
     #[derive(Serialize)]
     struct Failed {
@@ -610,7 +609,6 @@ pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, J
         .and_then(|o| kumiki_core::exercise::grade(&o.scenario, original.as_ref()));
     match graded {
         Ok(mut grade) => to_js(&Graded {
-            summary: grade.summary(),
             goal_metrics: std::mem::take(&mut grade.goal_metrics),
             grade,
         }),
@@ -667,7 +665,6 @@ struct ExperimentInfo<'a> {
     title: &'a str,
     description: &'a str,
     jobs: usize,
-    plot: &'a Value,
     /// Whether the runs trace metrics (the traces can be exported in long form).
     traced: bool,
 }
@@ -689,7 +686,6 @@ impl ExperimentRunner {
             title: &e.title,
             description: &e.description,
             jobs: self.jobs.len(),
-            plot: &e.plot,
             traced: e.trace.is_some(),
         })
     }
@@ -710,7 +706,7 @@ impl ExperimentRunner {
     }
 }
 
-/// The built-in experiments: name, title, description, job count, plot.
+/// The built-in experiments: name, title, description, job count.
 #[wasm_bindgen]
 pub fn experiments() -> Result<JsValue, JsError> {
     let runners: Vec<ExperimentRunner> = presets::experiment_names()
@@ -723,7 +719,6 @@ pub fn experiments() -> Result<JsValue, JsError> {
             title: &r.experiment.title,
             description: &r.experiment.description,
             jobs: r.jobs.len(),
-            plot: &r.experiment.plot,
             traced: r.experiment.trace.is_some(),
         })
         .collect();
