@@ -58,6 +58,15 @@ describe('accessibility audit (axe-core)', () => {
       await page.keyboard.press('Escape');
       await page.waitForSelector(dialog, { state: 'hidden' });
     }
+    // The teachers' Grade view opens from the gallery.
+    await page.click('#open-gallery');
+    await page.click('#open-grade');
+    await page.waitForSelector('#grade[open]');
+    found.push(...(await audit(page, 'grade dialog')));
+    for (const dialog of ['#grade', '#gallery']) {
+      if (await page.isVisible(dialog)) await page.keyboard.press('Escape');
+      await page.waitForSelector(dialog, { state: 'hidden' });
+    }
     await page.click('#tab-scenario');
     await page.click('#make-exercise');
     await page.waitForSelector('#exercise-editor[open]');
