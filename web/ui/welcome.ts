@@ -64,6 +64,14 @@ export function setupWelcome(actions: WelcomeActions): Welcome {
     if (!dialog.open) dialog.showModal();
   }
 
+  // The dialog hides at once, but its 'close' event, and the browser's move of the focus off its
+  // buttons, come a task later: keys pressed meanwhile reached a hidden button, which the page's
+  // keys (the arrows, Space) ignore. The focus leaves as the dialog is answered.
+  const letGo = () => {
+    if (document.activeElement instanceof HTMLElement && dialog.contains(document.activeElement)) document.activeElement.blur();
+  };
+  dialog.addEventListener('submit', letGo);
+  dialog.addEventListener('cancel', letGo);
   dialog.addEventListener('close', () => {
     switch (dialog.returnValue) {
       case 'watch':
