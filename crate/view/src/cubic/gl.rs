@@ -4,9 +4,13 @@
 //! and an editing cursor in depth. Instance and outline buffers are uploaded only when the
 //! revision changes, so orbiting a large structure costs one draw call per kind of thing.
 
+use super::mesh::{
+    box_edges, centre, cone_mesh, cube_mesh, f32s, rotation_to, sphere_mesh, IDENTITY, VERTEX,
+};
 use super::model::{
     CubicModel, ModelCache, ADD_COLOR, ARROW_COLOR, GHOST_COLOR, LAMP_COLOR, REACH_COLOR,
 };
+use super::shaders::{LINE_FS, LINE_VS, MESH_FS, MESH_VS, PLANE_FS, PLANE_VS};
 use crate::camera::{normalize, Camera3D, Mat4, V3};
 use crate::gl::{attribute, push_f32s, static_buffer, Program};
 use crate::palette::{parse_color, Rgba};
@@ -14,122 +18,9 @@ use crate::scene::{CursorKind, RenderStats, SceneRef};
 use wasm_bindgen::JsValue;
 use web_sys::{WebGl2RenderingContext as Gl, WebGlBuffer, WebGlVertexArrayObject};
 
-const MESH_VS: &str = "#version 300 es
-layout(location = 0) in vec3 a_pos;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec3 a_offset;
-layout(location = 3) in vec3 a_scale;
-layout(location = 4) in vec4 a_color;
-uniform mat4 u_vp;
-uniform mat3 u_rot;
-out vec3 v_normal;
-out vec3 v_local;
-out vec4 v_color;
-void main() {
-  vec3 world = a_offset + u_rot * (a_pos * a_scale);
-  gl_Position = u_vp * vec4(world, 1.0);
-  v_normal = u_rot * a_normal;
-  v_local = a_pos;
-  v_color = a_color;
-}";
-
-// Modes: 0 lit solid with dark edges, 1 translucent ghost with bright edges, 2 soft shadow,
-// 3 emissive (the lamp).
-const MESH_FS: &str = "#version 300 es
-precision highp float;
-in vec3 v_normal;
-in vec3 v_local;
-in vec4 v_color;
-uniform int u_mode;
-uniform vec3 u_key;
-uniform vec3 u_eye_dir;
-uniform vec3 u_lamp;
-uniform float u_lamp_on;
-uniform float u_alpha;
-uniform float u_fill;
-uniform float u_edge;
-out vec4 outColor;
-void main() {
-  vec3 n = normalize(v_normal);
-  vec3 base = v_color.rgb;
-  // Distance to the face's border, 0 at its centre and 1 on its edges.
-  vec3 a = abs(v_local) * 2.0;
-  vec3 inPlane = step(abs(n), vec3(0.5));
-  float e = max(max(a.x * inPlane.x, a.y * inPlane.y), a.z * inPlane.z);
-  float aa = max(fwidth(e), 1e-4);
-  float edge = smoothstep(1.0 - u_edge - aa, 1.0 - u_edge + aa, e);
-  if (u_mode == 2) {
-    float r = max(a.x, a.y);
-    outColor = vec4(0.0, 0.0, 0.0, u_alpha * v_color.a * (1.0 - smoothstep(0.45, 1.05, r)));
-    return;
-  }
-  if (u_mode == 3) {
-    outColor = vec4(base, v_color.a * u_alpha);
-    return;
-  }
-  float hemi = 0.5 + 0.5 * n.z;
-  float key = max(dot(n, u_key), 0.0);
-  float head = max(dot(n, u_eye_dir), 0.0);
-  float lamp = u_lamp_on * max(dot(n, u_lamp), 0.0);
-  vec3 lit = base * (0.26 + 0.20 * hemi + 0.48 * key + 0.16 * head) + base * vec3(1.0, 0.86, 0.55) * 0.30 * lamp;
-  if (u_mode == 1) {
-    vec3 col = mix(base * (0.75 + 0.35 * key), vec3(1.0), 0.25 * edge);
-    outColor = vec4(col, u_alpha * mix(u_fill, 0.85, edge));
-    return;
-  }
-  lit = mix(lit, lit * 0.52, edge);
-  outColor = vec4(lit, v_color.a * u_alpha);
-}";
-
-const PLANE_VS: &str = "#version 300 es
-layout(location = 0) in vec2 a_uv;
-uniform mat4 u_vp;
-uniform vec2 u_min;
-uniform vec2 u_max;
-uniform float u_z;
-out vec2 v_xy;
-void main() {
-  v_xy = mix(u_min, u_max, a_uv);
-  gl_Position = u_vp * vec4(v_xy, u_z, 1.0);
-}";
-
-const PLANE_FS: &str = "#version 300 es
-precision highp float;
-in vec2 v_xy;
-uniform vec4 u_fill;
-uniform vec4 u_line;
-uniform vec2 u_centre;
-uniform float u_fade;
-out vec4 outColor;
-void main() {
-  vec2 g = abs(fract(v_xy) - 0.5);
-  vec2 w = fwidth(v_xy);
-  vec2 l = 1.0 - smoothstep(vec2(0.0), w * 1.2, 0.5 - g);
-  float line = max(l.x, l.y);
-  float fade = u_fade > 0.0 ? 1.0 - smoothstep(u_fade * 0.45, u_fade, length(v_xy - u_centre)) : 1.0;
-  vec3 col = mix(u_fill.rgb, u_line.rgb, line * u_line.a);
-  float alpha = max(u_fill.a, line * u_line.a) * fade;
-  if (alpha <= 0.003) discard;
-  outColor = vec4(col, alpha);
-}";
-
-const LINE_VS: &str = "#version 300 es
-layout(location = 0) in vec3 a_pos;
-uniform mat4 u_vp;
-void main() { gl_Position = u_vp * vec4(a_pos, 1.0); }";
-
-const LINE_FS: &str = "#version 300 es
-precision mediump float;
-uniform vec4 u_color;
-out vec4 outColor;
-void main() { outColor = u_color; }";
-
 /// Bytes per instance: offset and scale (6 floats) and an RGBA colour.
 const STRIDE: usize = 28;
-/// Floats per mesh vertex: position and normal.
-const VERTEX: usize = 6;
 
-const IDENTITY: [f32; 9] = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
 const BOND_COLOR: &str = "#c9d3dd";
 
 /// A static mesh of positions and normals.
@@ -205,11 +96,6 @@ impl Batch {
 fn put(out: &mut Vec<u8>, offset: V3, scale: V3, rgba: Rgba) {
     push_f32s(out, offset.into_iter().chain(scale).map(|v| v as f32));
     out.extend_from_slice(&rgba);
-}
-
-/// The centre of cell (x, y, z).
-fn centre(c: [u32; 3]) -> V3 {
-    c.map(|v| f64::from(v) + 0.5)
 }
 
 /// A group of wire boxes in the outline buffer, drawn in one colour.
@@ -593,200 +479,5 @@ impl CubicGl {
             gl.uniform4f(color.as_ref(), r, g, b, a);
             gl.draw_arrays(Gl::LINES, o.first, o.vertices);
         }
-    }
-}
-
-fn f32s(v: V3) -> [f32; 3] {
-    v.map(|x| x as f32)
-}
-
-/// Appends the 12 edges (24 vertices) of a box `grow` from the centre of cell `c` each way.
-fn box_edges(c: [u32; 3], grow: f64, out: &mut Vec<u8>) {
-    let mid = centre(c);
-    let lo = mid.map(|v| v - grow);
-    let hi = mid.map(|v| v + grow);
-    let corner = |bits: [bool; 3]| {
-        std::array::from_fn::<f32, 3, _>(|a| (if bits[a] { hi[a] } else { lo[a] }) as f32)
-    };
-    for a in 0..3 {
-        let others: Vec<usize> = (0..3).filter(|&x| x != a).collect();
-        for s in 0..4 {
-            let mut from = [false; 3];
-            from[others[0]] = s & 1 == 1;
-            from[others[1]] = (s >> 1) & 1 == 1;
-            let mut to = from;
-            to[a] = true;
-            push_f32s(out, corner(from).into_iter().chain(corner(to)));
-        }
-    }
-}
-
-/// Column-major rotation taking +z to the unit vector `d`.
-fn rotation_to(d: V3) -> [f32; 9] {
-    let c = d[2];
-    if c > 0.9999 {
-        return IDENTITY;
-    }
-    if c < -0.9999 {
-        return [1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0];
-    }
-    // Axis z × d, angle acos(c): Rodrigues' formula.
-    let [x, y, z] = normalize([-d[1], d[0], 0.0]);
-    let s = (1.0 - c * c).sqrt();
-    let t = 1.0 - c;
-    [
-        t * x * x + c,
-        t * x * y + s * z,
-        t * x * z - s * y,
-        t * x * y - s * z,
-        t * y * y + c,
-        t * y * z + s * x,
-        t * x * z + s * y,
-        t * y * z - s * x,
-        t * z * z + c,
-    ]
-    .map(|v| v as f32)
-}
-
-/// 36 vertices of a unit cube centred on the origin, counter-clockwise outside: position, normal.
-fn cube_mesh() -> Vec<f32> {
-    let faces: [[V3; 3]; 6] = [
-        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-        [[-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
-        [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]],
-        [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
-        [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
-        [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
-    ];
-    let mut out = Vec::with_capacity(36 * VERTEX);
-    for [n, u, v] in faces {
-        let corner = |su: f64, sv: f64| -> V3 {
-            std::array::from_fn(|a| n[a] * 0.5 + u[a] * su * 0.5 + v[a] * sv * 0.5)
-        };
-        for p in [
-            corner(-1.0, -1.0),
-            corner(1.0, -1.0),
-            corner(1.0, 1.0),
-            corner(-1.0, -1.0),
-            corner(1.0, 1.0),
-            corner(-1.0, 1.0),
-        ] {
-            out.extend(p.into_iter().chain(n).map(|x| x as f32));
-        }
-    }
-    out
-}
-
-/// A sphere of diameter 1: position, normal.
-fn sphere_mesh(segments: u32, rings: u32) -> Vec<f32> {
-    let at = |i: u32, j: u32| {
-        let th = f64::from(i) / f64::from(segments) * std::f64::consts::PI * 2.0;
-        let ph = f64::from(j) / f64::from(rings) * std::f64::consts::PI;
-        let n = [ph.sin() * th.cos(), ph.sin() * th.sin(), ph.cos()];
-        [n[0] * 0.5, n[1] * 0.5, n[2] * 0.5, n[0], n[1], n[2]]
-    };
-    let mut out = Vec::with_capacity((segments * rings * 6) as usize * VERTEX);
-    for j in 0..rings {
-        for i in 0..segments {
-            let (a, b, c, d) = (at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));
-            for v in [a, b, c, a, c, d] {
-                out.extend(v.map(|x| x as f32));
-            }
-        }
-    }
-    out
-}
-
-/// A cone along +z (base at z = -0.5, apex at +0.5), diameter 1: position, normal.
-fn cone_mesh(segments: u32) -> Vec<f32> {
-    let slope = 0.5;
-    let rim = |a: f64| [a.cos() * 0.5, a.sin() * 0.5, -0.5];
-    let side = |a: f64| normalize([a.cos(), a.sin(), slope]);
-    let down = [0.0, 0.0, -1.0];
-    let mut out = Vec::with_capacity(segments as usize * 6 * VERTEX);
-    for i in 0..segments {
-        let a0 = f64::from(i) / f64::from(segments) * std::f64::consts::PI * 2.0;
-        let a1 = f64::from(i + 1) / f64::from(segments) * std::f64::consts::PI * 2.0;
-        let am = (a0 + a1) / 2.0;
-        for (p, n) in [
-            (rim(a0), side(a0)),
-            (rim(a1), side(a1)),
-            ([0.0, 0.0, 0.5], side(am)),
-            (rim(a1), down),
-            (rim(a0), down),
-            ([0.0, 0.0, -0.5], down),
-        ] {
-            out.extend(p.into_iter().chain(n).map(|x| x as f32));
-        }
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::camera::{cross, dot, sub};
-
-    fn vertices(mesh: &[f32]) -> Vec<(V3, V3)> {
-        mesh.chunks(VERTEX)
-            .map(|v| {
-                let v = v.iter().map(|&x| f64::from(x)).collect::<Vec<_>>();
-                ([v[0], v[1], v[2]], [v[3], v[4], v[5]])
-            })
-            .collect()
-    }
-
-    #[test]
-    fn every_mesh_triangle_winds_counter_clockwise_seen_from_outside() {
-        for (name, mesh) in [
-            ("cube", cube_mesh()),
-            ("sphere", sphere_mesh(14, 10)),
-            ("cone", cone_mesh(18)),
-        ] {
-            let v = vertices(&mesh);
-            assert_eq!(v.len() % 3, 0, "{name}");
-            for t in v.chunks(3) {
-                let face = cross(sub(t[1].0, t[0].0), sub(t[2].0, t[0].0));
-                // Degenerate triangles at the sphere's poles have no winding.
-                if dot(face, face) < 1e-12 {
-                    continue;
-                }
-                let normal = [0, 1, 2].map(|a| t[0].1[a] + t[1].1[a] + t[2].1[a]);
-                assert!(dot(face, normal) > 0.0, "{name}: {t:?}");
-            }
-        }
-        assert_eq!(cube_mesh().len(), 36 * VERTEX);
-    }
-
-    #[test]
-    fn the_arrow_rotation_takes_z_to_the_direction() {
-        for d in [
-            normalize([1.0, -2.0, 0.5]),
-            [0.0, 0.0, -1.0],
-            [0.0, 0.0, 1.0],
-            normalize([0.0, 1.0, -3.0]),
-        ] {
-            let r = rotation_to(d);
-            // Column-major: the image of +z is the third column.
-            let z = [r[6], r[7], r[8]].map(f64::from);
-            assert!(sub(z, d).iter().all(|e| e.abs() < 1e-6), "{d:?} -> {z:?}");
-        }
-    }
-
-    #[test]
-    fn a_box_has_twelve_edges_of_its_full_width() {
-        let mut out = Vec::new();
-        box_edges([2, 3, 4], 0.5, &mut out);
-        let f: Vec<f32> = out
-            .chunks(4)
-            .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        assert_eq!(f.len(), 12 * 2 * 3);
-        for e in f.chunks(6) {
-            let d: Vec<f32> = (0..3).map(|a| (e[a + 3] - e[a]).abs()).collect();
-            assert_eq!(d.iter().filter(|&&x| x == 1.0).count(), 1, "{e:?}");
-            assert_eq!(d.iter().filter(|&&x| x == 0.0).count(), 2, "{e:?}");
-        }
-        assert!(f.iter().step_by(3).all(|&x| x == 2.0 || x == 3.0));
     }
 }

@@ -3,7 +3,9 @@
 
 pub mod canvas;
 pub mod gl;
+mod mesh;
 pub mod model;
+mod shaders;
 
 pub use canvas::CubicCanvas;
 pub use gl::CubicGl;
