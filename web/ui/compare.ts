@@ -48,7 +48,8 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
   function ensureSecond(): SimClient {
     if (second) return second;
     const client = new SimClient({
-      loaded: () => {},
+      // Framed once loaded: it may have been laid out while its view was still hidden.
+      loaded: () => secondView?.fit(),
       frame: showSecond,
       // Its playing shows on the Play button through the first run's client (SimClient.pair).
       playing: () => {},
@@ -91,6 +92,9 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
     } catch {
       // The scenario in view was checked when it opened; a large one is the worker's to check.
     }
+    // The first run's view changes size as the second appears or goes: it is framed again once
+    // resized (the resize observer reports in the next frame, after its animation callbacks).
+    if (!!pair !== document.body.classList.contains('comparing')) requestAnimationFrame(() => requestAnimationFrame(() => page.view.fit()));
     document.body.classList.toggle('comparing', !!pair);
     wrap.hidden = !pair;
     firstLabel.hidden = !pair;
