@@ -100,12 +100,15 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
     firstLabel.hidden = !pair;
     stop.hidden = !pair;
     if (!pair) {
+      page.view.companion = null;
       sim.pair(null);
       second?.pause();
       run.compare(null);
       return;
     }
     const client = ensureSecond();
+    // The zoom buttons and keys zoom and frame both views; a drag or a pinch moves the one under it.
+    page.view.companion = secondView;
     firstLabel.textContent = pair.labels[0];
     secondLabel.textContent = pair.labels[1];
     wrap.setAttribute('aria-label', `The second run: ${pair.labels[1]}`);
