@@ -168,6 +168,10 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
     return String(value);
   }
 
+  // The About tab's renderer choice holds for the second view too.
+  const renderer = byId<HTMLSelectElement>('renderer-choice');
+  renderer.addEventListener('change', () => void secondView?.useRenderer(renderer.value as typeof prefs.renderer));
+
   settingSelect.addEventListener('change', () => offerValues());
   start.addEventListener('click', () => {
     const key = settingSelect.value;
