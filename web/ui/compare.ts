@@ -11,6 +11,7 @@ import { SimClient } from '../sim/client';
 import type { Frame } from '../types';
 import * as core from '../wasm';
 import { byId, clear, el } from './dom';
+import { isLarge } from './opening';
 import { choices, resolve } from './params';
 
 /** Keys a comparison never varies: the envelope's texts and sections, and the step limit. */
@@ -87,10 +88,14 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
   /** Opens, changes or closes the comparison as the scenario in view says. */
   function follow() {
     let pair: ReturnType<typeof core.comparePair> = null;
+    // A large scenario is never read on this thread, and is not run twice: the second run would
+    // double the memory the page asked about.
+    const large = isLarge(session.scenario);
+    if (large && session.scenario.includes('"compare"')) error.textContent = 'This scenario is too large to run twice side by side; only its own run is shown.';
     try {
-      pair = core.comparePair(session.scenario);
+      if (!large) pair = core.comparePair(session.scenario);
     } catch {
-      // The scenario in view was checked when it opened; a large one is the worker's to check.
+      // The scenario in view was checked when it opened.
     }
     // The first run's view changes size as the second appears or goes: it is framed again once
     // resized (the resize observer reports in the next frame, after its animation callbacks).
