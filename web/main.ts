@@ -7,6 +7,7 @@ import { SimClient } from './sim/client';
 import { loadPrefs, noteOpening, openedScenario, openingScenario, savePrefs, saveScenario, savedScenario } from './store';
 import { Announcer, type Disturbance } from './ui/announce';
 import { Banner } from './ui/banner';
+import { setupCompare } from './ui/compare';
 import { byId, displayText, download } from './ui/dom';
 import { Embed, embedEditRequested, embedRequested } from './ui/embed';
 import { setupExperiments } from './ui/experiments';
@@ -20,6 +21,8 @@ import { setupWelcome } from './ui/welcome';
 import * as core from './wasm';
 
 const DEFAULT_PRESET = 'amas-L';
+/** The lesson the first screen's "Compare two runs" opens: two runs side by side. */
+const COMPARE_LESSON = 'lesson-amas-compare';
 
 /** In a course page's iframe (?embed): the view, the run controls and the exercise panel only. */
 const embedded = embedRequested();
@@ -248,6 +251,7 @@ const scenario = setupScenarioPanel(
   (link, name) => embed?.handin(link, name),
 );
 const keys = setupKeys(page, run, scenario);
+setupCompare(page, run);
 const share = setupSharePanel(page, { large, open, embedded });
 
 // ---- diagnostics ------------------------------------------------------------------------------
@@ -294,6 +298,7 @@ async function start() {
     watch: () => openGallery('scenarios'),
     lesson: () => openGallery('lessons'),
     build: () => keys.selectTab('scenario', true),
+    compare: () => load(core.lessonJson(COMPARE_LESSON), { opens: true }) && keys.selectTab('run'),
   });
   setupExperiments(
     prefs,

@@ -34,6 +34,7 @@ export interface AmasScenario {
   collision_penalty: number;
   /** How far robots hear each other when they settle moves (appendix A.1). */
   communication: Communication;
+  compare?: Compare;
   /** What the scenario shows. */
   description: string;
   /** D of equation 1; above 0.25 the update is unstable. */
@@ -113,6 +114,7 @@ export interface ChobieScenario {
   board: number;
   /** Side of a robot, metres. */
   cell_size: number;
+  compare?: Compare;
   /**
    * Bridge task: extend the bridge in construction mode. Off, the robots only watch their
    * loads and adapt (the demonstration of figure 14).
@@ -166,6 +168,24 @@ export type Collision = "token" | "relay" | "blackboard";
 
 export type Communication = "chain" | "radius2";
 
+/** A scenario's `compare` section: the one setting the second run changes. */
+export interface Compare {
+  /**
+   * The first run's (the scenario's own) name in words ("adaptation on"); by default PATH and
+   * the scenario's value.
+   */
+  base_label?: string;
+  /** The second run's name in words ("adaptation off"); by default PATH VALUE. */
+  label?: string;
+  /**
+   * The dotted path of the setting the second run changes (`field`, `adaptation`,
+   * `stages.0.robots`, `seed`).
+   */
+  path: string;
+  /** The setting's value in the second run. */
+  value: unknown;
+}
+
 /**
  * A disturbance or click: `{"kind": "remove" | "add" | "hold", "cells": [i]}` removes a unit
  * (if the rest stays connected), adds one next to the structure, or toggles whether a unit is
@@ -198,6 +218,7 @@ export interface Cubes3dScenario {
   a: number;
   /** C of equation 8, above 0. */
   c: number;
+  compare?: Compare;
   /** What the scenario shows. */
   description: string;
   /** Actions applied during the run (recorded clicks included): `at` is the step after which it applies; the other keys are the model's action, given in its documentation. */
@@ -310,6 +331,7 @@ export interface FractaScenario {
    * pivot until it touches a second unit; off, every motion is one 60° roll.
    */
   avoid_e: boolean;
+  compare?: Compare;
   /** What the scenario shows. */
   description: string;
   /** Actions applied during the run (recorded clicks included): `at` is the step after which it applies; the other keys are the model's action, given in its documentation. */

@@ -33,6 +33,11 @@ export const presetJson = (name: string): string => core.preset_json(name);
 export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];
 export const lessonJson = (name: string): string => core.lesson_json(name);
 export const normalize = (json: string): string => core.normalize_scenario(json);
+/** A scenario's comparison: the second run's scenario and the two runs' names, or null (crate/core/src/compare.rs). */
+export function comparePair(json: string): { second: string; labels: [string, string] } | null {
+  const pair = core.compare_pair(json);
+  return pair ? { second: pair[0], labels: [pair[1], pair[2]] } : null;
+}
 /** The whole of what is wrong with scenario JSON ("" when nothing is): `normalize` throws it briefly. */
 export const problemInFull = (json: string): string => core.scenario_problem_in_full(json);
 /** The link of a scenario the core validated before (the page's own); nothing is rebuilt. */

@@ -1,7 +1,7 @@
 // The accessibility audit: axe-core (WCAG 2.1 A and AA, and its best practices) on every tab and
-// every dialog of the page, the first screen and the tour included, must find no serious or
-// critical violation. axe is evaluated in the page by the test driver (the page's CSP allows no
-// injected script, and needs not to).
+// every dialog of the page, the first screen, the tour and the compare view included, must find
+// no serious or critical violation. axe is evaluated in the page by the test driver (the page's
+// CSP allows no injected script, and needs not to).
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -93,6 +93,20 @@ describe('accessibility audit (axe-core)', () => {
       await context.close();
     }
     assert.deepEqual(found, []);
+  });
+
+  test('the compare view passes: two views, both runs named, the chart with its legend and the compare controls', async () => {
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.lesson_json('lesson-amas-compare'))}`);
+    await page.waitForSelector('body.comparing #compare-wrap[data-steps]');
+    await page.click('#step');
+    await page.waitForFunction(() => document.querySelector('#compare-wrap').dataset.steps === '1');
+    const found = await audit(page, 'compare view');
+    // On a tablet the views stack.
+    await page.setViewportSize({ width: 768, height: 1024 });
+    found.push(...(await audit(page, 'compare view on a tablet')));
+    assert.deepEqual(found, []);
+    assert.deepEqual(problems, []);
+    await context.close();
   });
 
   test('a shared link, its introduction and a lesson with its exercise panel pass too', async () => {

@@ -1,4 +1,4 @@
-// The first hour: a page opened cold says what Kumiki is and offers three ways in; a lesson and the
+// The first hour: a page opened cold says what Kumiki is and offers four ways in; a lesson and the
 // gallery are reached from it by mouse and by keyboard alone; the tour can be taken, skipped and
 // reopened; an exercise's verdict stays in view at 1366 × 768.
 import assert from 'node:assert/strict';
@@ -27,6 +27,7 @@ describe('the first screen', () => {
       "Watch a paper's experiment",
       'Take a lesson',
       'Build your own',
+      'Compare two runs',
     ]);
     assert.equal(await page.textContent('h1'), 'Kumiki');
 

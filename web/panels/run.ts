@@ -2,7 +2,7 @@
 // metrics and chart of each frame, and the overlays, tools and legend of the model in view.
 import * as core from '../wasm';
 import type { Frame, MetricInfo, Metrics } from '../types';
-import { MetricChart } from '../ui/chart';
+import { MetricChart, type RunLabels } from '../ui/chart';
 import { byId, clear, el, formatNumber } from '../ui/dom';
 import { SPEED_MAX, speedText, stepsPerSecond } from '../ui/speed';
 import type { Page } from './page';
@@ -26,6 +26,10 @@ export interface RunPanel {
   chartedMetric(): string;
   /** Draws the chart again (its size may have changed with the tab). */
   renderChart(): void;
+  /** Compares two runs, named in words (the first run's first): the chart and the metric cards show both; null: one again. */
+  compare(runs: RunLabels | null): void;
+  /** A frame of the second run of a comparison. */
+  secondFrame(frame: Frame): void;
 }
 
 export function setupRunPanel(page: Page): RunPanel {
@@ -111,7 +115,9 @@ export function setupRunPanel(page: Page): RunPanel {
 
   // ---- frames ----
 
-  const chart = new MetricChart(byId('metric-chart'));
+  const chart = new MetricChart(byId('metric-chart'), byId('chart-legend'));
+  /** The two runs' names while comparing. */
+  let runs: RunLabels | null = null;
   const chartSelect = byId<HTMLSelectElement>('chart-metric');
   /** Charts `metric`: the worker sends its record of every step with each frame. */
   function chartMetric(metric: string) {
@@ -174,11 +180,14 @@ export function setupRunPanel(page: Page): RunPanel {
 
   const metricsBox = byId('metrics');
   const metricNodes = new Map<string, HTMLElement>();
+  /** While comparing, each card's second value: the second run's. */
+  const secondNodes = new Map<string, HTMLElement>();
   function renderMetrics(metrics: Metrics) {
     const names = Object.keys(metrics);
     if (names.join() !== [...metricNodes.keys()].join()) {
       clear(metricsBox);
       metricNodes.clear();
+      secondNodes.clear();
       const about = explanations();
       for (const name of names) {
         const value = el('strong');
@@ -188,16 +197,22 @@ export function setupRunPanel(page: Page): RunPanel {
         // (it is drawn apart from both), so the card still starts with its name and ends with
         // its value.
         const tip = info ? [el('span', { class: 'metric-about', role: 'tooltip', id: `metric-about-${name}`, text: `${info.about} Unit: ${info.unit}.` })] : [];
+        // While comparing, the card holds both runs' values, each named for a screen reader.
+        const secondValue = el('strong', { class: 'second' });
+        const pair = runs
+          ? [el('span', { class: 'sr-only', text: `${runs[0]}: ` }), value, el('span', { class: 'sr-only', text: `, ${runs[1]}: ` }), secondValue]
+          : [value];
         metricsBox.append(
           el(
             'div',
             { class: 'metric', tabindex: info ? 0 : undefined, 'aria-describedby': info ? `metric-about-${name}` : undefined },
             el('span', { text: name.replace(/_/g, ' ') }),
             ...tip,
-            value,
+            ...pair,
           ),
         );
         metricNodes.set(name, value);
+        if (runs) secondNodes.set(name, secondValue);
       }
       const numeric = names.filter((n) => typeof metrics[n] === 'number');
       clear(chartSelect);
@@ -368,5 +383,19 @@ export function setupRunPanel(page: Page): RunPanel {
     reset,
     chartedMetric: () => chartSelect.value,
     renderChart: () => chart.render(),
+    compare(labels) {
+      if (JSON.stringify(labels) === JSON.stringify(runs)) return;
+      runs = labels;
+      chart.compare(labels);
+      // The cards are built again, with or without the second value.
+      metricNodes.clear();
+      clear(metricsBox);
+      if (session.frame) renderMetrics(session.frame.metrics);
+    },
+    secondFrame(frame) {
+      for (const [name, node] of secondNodes) node.textContent = formatNumber(frame.metrics[name]);
+      if (frame.chart) chart.setSecond(frame.chart);
+      chart.render();
+    },
   };
 }

@@ -154,13 +154,18 @@ export class View {
     return this.range;
   }
 
+  /** A view that the zoom buttons and keys move with this one (the second run of a comparison). */
+  companion: View | null = null;
+
   /** Frames what is on the lattice with a margin (in 3-D with the ghost and the lamp). */
   fit() {
     this.sim().camera({ op: 'fit' });
+    this.companion?.fit();
   }
 
   zoom(factor: number) {
     this.sim().camera({ op: 'zoom', factor, x: this.cssWidth / 2, y: this.cssHeight / 2 });
+    this.companion?.zoom(factor);
   }
 
   /** Sends the marks to the worker's view if they changed (at most once per animation frame). */

@@ -48,11 +48,49 @@ export class SimClient {
   /** When the oldest unanswered ping was sent; null when every ping has been answered. */
   private unanswered: number | null = null;
   private stalledFor = 0;
+  /** The latest frame the worker sent. */
+  private last: Frame | null = null;
+  /** The second run of a comparison, kept at this run's step (web/ui/compare.ts). */
+  private follower: SimClient | null = null;
+  /** The run this one follows, when it is the second run of a comparison. */
+  private leader: SimClient | null = null;
+  /** The worker is playing. */
+  private playingNow = false;
+  /** The worker stopped playing since its last frame: a frame that says it ended, ended a play. */
+  private stoppedPlaying = false;
 
   constructor(private readonly on: SimEvents) {
     this.start();
     setInterval(() => this.watch(), 1000);
     document.addEventListener('visibilitychange', () => this.send({ type: 'visible', visible: !document.hidden }));
+  }
+
+  /**
+   * Pairs this run with the second run of a comparison (null: no longer): the second gets this
+   * one's speed, overlay and chart, follows its step count (forward by stepping, back by seeking)
+   * and pauses with it. Once this run has ended, play and step move the second one alone, to its
+   * own end.
+   */
+  pair(follower: SimClient | null) {
+    if (this.follower) this.follower.leader = null;
+    this.follower = follower;
+    this.reportPlaying();
+    if (!follower) return;
+    follower.leader = this;
+    follower.setSpeed(this.speed);
+    follower.setOverlay(this.overlay);
+    follower.setChart(this.chart.metric, this.chart.points);
+    if (this.last) follower.follow(this.last.steps);
+  }
+
+  /** Playing, as the page's Play button shows it: this run, or its follower going on alone. */
+  private reportPlaying() {
+    this.on.playing(this.playingNow || !!this.follower?.playingNow);
+  }
+
+  /** This run has ended and its follower has not: play and step are the follower's. */
+  private get followerAlone(): boolean {
+    return !!this.follower && !!this.last?.finished && !this.follower.last?.finished;
   }
 
   /** The watchdog: one ping at a time; a ping left unanswered too long is reported. */
@@ -200,11 +238,22 @@ export class SimClient {
         this.pendingLoad = null;
         this.on.loaded(msg.layout, msg.scenario);
         return;
-      case 'frame':
+      case 'frame': {
+        this.last = msg.frame;
+        const follower = this.follower;
+        // Once this run has ended, the follower is held back to its step only if it is behind;
+        // if this run ended playing, the follower plays on alone to its own end.
+        if (follower && (!msg.frame.finished || (follower.last?.steps ?? 0) < msg.frame.steps)) follower.follow(msg.frame.steps);
+        if (follower && msg.frame.finished && this.stoppedPlaying && !follower.last?.finished) follower.play();
+        this.stoppedPlaying = false;
         this.on.frame(msg.frame);
         return;
+      }
       case 'playing':
-        this.on.playing(msg.playing);
+        if (this.playingNow && !msg.playing) this.stoppedPlaying = true;
+        this.playingNow = msg.playing;
+        if (this.leader) this.leader.reportPlaying();
+        else this.reportPlaying();
         return;
       case 'scenario':
         this.on.scenario(msg.scenario);
@@ -267,17 +316,25 @@ export class SimClient {
   }
 
   load(scenario: string) {
+    this.last = null;
     this.pendingLoad = scenario;
     this.send({ type: 'load', scenario });
   }
   play() {
+    if (this.followerAlone) this.follower?.play();
     this.send({ type: 'play' });
   }
   pause() {
+    this.follower?.pause();
     this.send({ type: 'pause' });
   }
   step(count = 1) {
+    if (this.followerAlone) this.follower?.step(count);
     this.send({ type: 'step', count });
+  }
+  /** Goes to `step` and stays paused (a run ending first stays at its end). */
+  follow(step: number) {
+    this.send({ type: 'follow', step });
   }
   /** Asks for the exercise's verdict on the run as it stands. */
   check() {
@@ -289,15 +346,18 @@ export class SimClient {
   }
   setSpeed(stepsPerSecond: number) {
     this.speed = stepsPerSecond;
+    this.follower?.setSpeed(stepsPerSecond);
     this.send({ type: 'speed', stepsPerSecond });
   }
   setOverlay(field: string | null) {
     this.overlay = field;
+    this.follower?.setOverlay(field);
     this.send({ type: 'overlay', field });
   }
   /** Which metric the chart shows, and about how many points it draws: frames carry its record. */
   setChart(metric: string | null, points: number) {
     this.chart = { metric, points };
+    this.follower?.setChart(metric, points);
     this.send({ type: 'chart', metric, points });
   }
   apply(action: Record<string, unknown>) {

@@ -42,6 +42,12 @@ export type ToWorker =
   | { type: 'pause' }
   | { type: 'step'; count: number }
   | { type: 'seek'; step: number }
+  /**
+   * Goes to `step` and stays paused there: forward by stepping (as far as the run goes), back by
+   * seeking. The second run of a comparison follows the first's step count with it; follows that
+   * arrive together are done once, for the last.
+   */
+  | { type: 'follow'; step: number }
   | { type: 'check' }
   | { type: 'speed'; stepsPerSecond: number }
   | { type: 'overlay'; field: string | null }

@@ -68,6 +68,9 @@ let goalJudged = false;
 /** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
 let seekTo: number | null = null;
 
+/** A step to follow (the first run of a comparison reached it); null when there is none. */
+let followTo: number | null = null;
+
 /** Calls waiting for a later task: after the messages already queued, and unthrottled (a timer is not). */
 const later: (() => void)[] = [];
 const channel = new MessageChannel();
@@ -261,7 +264,39 @@ function timedAdvance(s: Sim, count: number): number | undefined {
   return n;
 }
 
+/**
+ * Steps toward the step to follow for at most a slice, back by seeking, forward by stepping; a run
+ * that ends first stays at its end. True while there is more to do.
+ */
+function followNow(): boolean {
+  if (!sim || followTo === null) return false;
+  const s = sim;
+  const target = followTo;
+  if (target < s.steps()) {
+    followTo = null;
+    seekTo = target;
+    seekNow();
+    return false;
+  }
+  const start = performance.now();
+  let moved = false;
+  while (s.steps() < target && !s.finished() && performance.now() - start < SLICE_MS) {
+    const n = timedAdvance(s, Math.min(target - s.steps(), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))));
+    if (!n) break;
+    moved = true;
+  }
+  if (!sim) return false;
+  if (moved) touched();
+  const more = s.steps() < target && !s.finished();
+  if (!more) followTo = null;
+  return more;
+}
+
 function tick() {
+  if (followNow()) {
+    schedule();
+    return;
+  }
   if (!seekNow()) return;
   if (playing && sim) {
     const s = sim;
@@ -308,6 +343,7 @@ function handle(msg: ToWorker) {
   switch (msg.type) {
     case 'load': {
       playing = false;
+      followTo = null;
       const created = guard('load', () => new Sim(msg.scenario));
       if (!created) return;
       sim?.free();
@@ -324,6 +360,7 @@ function handle(msg: ToWorker) {
       return;
     }
     case 'play':
+      followTo = null;
       setPlaying(true);
       return;
     case 'pause':
@@ -333,6 +370,7 @@ function handle(msg: ToWorker) {
       if (!sim) return;
       const s = sim;
       setPlaying(false);
+      followTo = null;
       guard('step', () => s.advance(msg.count));
       touched();
       return;
@@ -343,7 +381,15 @@ function handle(msg: ToWorker) {
     case 'seek':
       if (!sim) return;
       setPlaying(false);
+      followTo = null;
       seekTo = msg.step;
+      schedule();
+      return;
+    case 'follow':
+      if (!sim) return;
+      setPlaying(false);
+      seekTo = null;
+      followTo = msg.step;
       schedule();
       return;
     case 'speed':

@@ -5,13 +5,13 @@
 import type { ModelSchema, SchemaNode } from '../wasm';
 import { clear, el } from './dom';
 
-const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise']);
+const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise', 'compare']);
 const ORDER = ['name', 'description', 'max_steps'];
 
 export type Apply = (key: string, valueJson: string) => string | null;
 
 /** The node `$ref` points to, or the node itself. */
-function resolve(node: SchemaNode | undefined, schema: ModelSchema | undefined): SchemaNode | undefined {
+export function resolve(node: SchemaNode | undefined, schema: ModelSchema | undefined): SchemaNode | undefined {
   const ref = node?.$ref?.replace('#/$defs/', '');
   return ref ? { ...schema?.defs[ref], ...node, $ref: undefined } : node;
 }

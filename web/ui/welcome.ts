@@ -1,15 +1,16 @@
 // The first screen and the tour. A first visit (no link, nothing seen before) opens with what
-// Kumiki is and three ways in: watch a paper's experiment, take a lesson, build your own; from
-// there a short tour of five stops points at the parts of the page. "Start here" at the top
-// brings both back. The tour is a non-modal box: the page stays usable, each stop marks its part
-// of the page, and Esc or "End the tour" leaves it.
+// Kumiki is and the ways in: watch a paper's experiment, take a lesson, build your own, compare
+// two runs side by side; from there a short tour of five stops points at the parts of the page.
+// "Start here" at the top brings both back. The tour is a non-modal box: the page stays usable,
+// each stop marks its part of the page, and Esc or "End the tour" leaves it.
 import { byId } from './dom';
 
-/** Where the three ways in lead. */
+/** Where the ways in lead. */
 export interface WelcomeActions {
   watch(): void;
   lesson(): void;
   build(): void;
+  compare(): void;
 }
 
 interface Stop {
@@ -82,6 +83,9 @@ export function setupWelcome(actions: WelcomeActions): Welcome {
         break;
       case 'build':
         actions.build();
+        break;
+      case 'compare':
+        actions.compare();
         break;
       case 'tour':
         go(0);

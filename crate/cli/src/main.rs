@@ -611,7 +611,24 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
         (None, Some(n)) => (1..=n).collect(),
         (None, None) => vec![scenario.seed],
     };
-    let scenario_hash = hash::hex(scenario.hash_without_seed());
+    // A scenario that compares two runs (its `compare` section) runs both, the first run's row
+    // first; the second's is named with its label ("lesson-amas-compare (tokens only)") and its
+    // parameters name the setting it changes.
+    let mut runs = vec![(scenario.clone(), params.clone())];
+    if let (Some(compare), Some(mut second)) = (&scenario.compare, scenario.compared()?) {
+        let (_, label) = compare.labels(&scenario.to_value());
+        second.name = format!("{} ({label})", second.name);
+        let mut params = params.clone();
+        params.insert(compare.path.clone(), compare.value.clone());
+        runs.push((second, params));
+    }
+    let runs: Vec<(Scenario, serde_json::Map<String, Value>, String)> = runs
+        .into_iter()
+        .map(|(s, p)| {
+            let h = hash::hex(s.hash_without_seed());
+            (s, p, h)
+        })
+        .collect();
     let output = Output {
         command: shard::Command::Run,
         source: scenario.name.clone(),
@@ -622,9 +639,10 @@ fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
         provenance: None,
         quiet: false,
     };
-    output.emit(seeds.len(), out, false, |i| {
+    output.emit(seeds.len() * runs.len(), out, false, |i| {
+        let (scenario, params, scenario_hash) = &runs[i % runs.len()];
         let mut s = scenario.clone();
-        s.seed = seeds[i];
+        s.seed = seeds[i / runs.len()];
         let mut run = Run::new(s).expect("the scenario was validated");
         run.run_to_end();
         Ok(Row::from_outcome(

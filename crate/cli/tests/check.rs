@@ -248,3 +248,32 @@ fn link_says_which_base_it_used() {
     );
     assert!(out.starts_with("https://school.example/k/#k1."), "{out}");
 }
+
+/// A scenario that compares two runs (its `compare` section) runs both: the first run's row, then
+/// the second's, named with its label and equal to the run of its own scenario alone.
+#[test]
+fn run_prints_both_runs_of_a_comparison() {
+    let lesson = kumiki_core::lessons::scenario("lesson-amas-compare").unwrap();
+    let rows = json_rows(kumiki(&["run", "lesson-amas-compare"]));
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0]["scenario"], "lesson-amas-compare");
+    assert_eq!(rows[1]["scenario"], "lesson-amas-compare (tokens only)");
+    let alone = |s: &Scenario| {
+        let mut run = kumiki_core::Run::new(s.clone()).unwrap();
+        run.run_to_end();
+        (run.steps(), kumiki_core::hash::hex(run.state_hash()))
+    };
+    let second = lesson.compared().unwrap().unwrap();
+    for (row, scenario) in rows.iter().zip([&lesson, &second]) {
+        let (steps, hash) = alone(scenario);
+        assert_eq!(
+            (
+                row["steps"].as_u64().unwrap(),
+                row["hash"].as_str().unwrap()
+            ),
+            (steps, hash.as_str())
+        );
+    }
+    // The collision rule matters: tokens only collide more than relay.
+    assert!(rows[1]["metrics"]["collisions"].as_u64() > rows[0]["metrics"]["collisions"].as_u64());
+}

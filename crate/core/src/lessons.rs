@@ -82,6 +82,7 @@ mod tests {
         match name {
             "lesson-amas-robots" => vec![("robots", json!(5))],
             "lesson-amas-collisions" => vec![("collision", json!("relay"))],
+            "lesson-amas-compare" => vec![("collision", json!("blackboard"))],
             // The T on its stem: two corners share the traffic of the L's one.
             "lesson-amas-heatmap" => vec![(
                 "target",

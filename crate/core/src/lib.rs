@@ -15,6 +15,7 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
 
+pub mod compare;
 pub mod error;
 pub mod exercise;
 pub mod experiment;

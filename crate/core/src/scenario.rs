@@ -20,6 +20,7 @@
 
 use serde_json::{Map, Value};
 
+use crate::compare::Compare;
 use crate::error::{Error, Result};
 use crate::exercise::Exercise;
 use crate::limits::Limits;
@@ -52,6 +53,8 @@ pub struct Scenario {
     pub disturbances: Vec<Disturbance>,
     /// A classroom exercise: instructions, locked fields and a goal (see [`crate::exercise`]).
     pub exercise: Option<Exercise>,
+    /// A second run to show beside this one, differing in one setting (see [`crate::compare`]).
+    pub compare: Option<Compare>,
     /// The model's own keys, read into its typed description.
     pub spec: ModelSpec,
     /// The size limits it was read under; its overrides and its run are held to them too.
@@ -95,6 +98,7 @@ impl Scenario {
         )?;
         let disturbances = take_disturbances(&mut map)?;
         let exercise = map.remove("exercise");
+        let compare = map.remove("compare");
         if max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
@@ -107,6 +111,7 @@ impl Scenario {
             max_steps,
             disturbances,
             exercise: None,
+            compare: None,
             spec,
             limits,
         };
@@ -114,6 +119,12 @@ impl Scenario {
             let doc = scenario.to_value();
             scenario.exercise =
                 Some(Exercise::from_value(section, &doc).map_err(|e| e.within("exercise"))?);
+        }
+        if let Some(section) = compare {
+            let doc = scenario.to_value();
+            scenario.compare =
+                Some(Compare::from_value(section, &doc).map_err(|e| e.within("compare"))?);
+            scenario.compared().map_err(|e| e.within("compare"))?;
         }
         Ok(scenario)
     }
@@ -165,6 +176,12 @@ impl Scenario {
                 serde_json::to_value(exercise).expect("an exercise serialises"),
             );
         }
+        if let Some(compare) = &self.compare {
+            map.insert(
+                "compare".into(),
+                serde_json::to_value(compare).expect("a comparison serialises"),
+            );
+        }
         canonical(Value::Object(map))
     }
 
@@ -183,6 +200,22 @@ impl Scenario {
         let mut copy = self.clone();
         copy.seed = 0;
         crate::hash::of_bytes(copy.to_json().as_bytes())
+    }
+
+    /// The second run of a comparison: this scenario with the `compare` section's setting
+    /// changed, without that section and without the exercise (the exercise is the first run's).
+    /// `None` when the scenario compares nothing.
+    pub fn compared(&self) -> Result<Option<Scenario>> {
+        let Some(compare) = &self.compare else {
+            return Ok(None);
+        };
+        let mut doc = self.to_value();
+        if let Value::Object(map) = &mut doc {
+            map.remove("compare");
+            map.remove("exercise");
+        }
+        set_path(&mut doc, &compare.path, compare.value.clone())?;
+        Scenario::from_value_within(doc, self.limits).map(Some)
     }
 
     /// A copy with `path` set to `value`, re-validated. Paths are dotted (`stages.0.target`);

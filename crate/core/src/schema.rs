@@ -11,6 +11,7 @@ use schemars::generate::SchemaSettings;
 use schemars::SchemaGenerator;
 use serde_json::{json, Map, Value};
 
+use crate::compare::Compare;
 use crate::exercise::Exercise;
 use crate::experiment::MAX_JOBS;
 use crate::models::MODELS;
@@ -28,6 +29,7 @@ pub const EXPERIMENT_FILE: &str = "experiment.schema.json";
 pub fn scenario() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     let exercise = generator.subschema_for::<Exercise>().to_value();
+    let compare = generator.subschema_for::<Compare>().to_value();
     let specs: Vec<(Value, Value)> = MODELS
         .iter()
         .map(|m| {
@@ -48,6 +50,7 @@ pub fn scenario() -> Value {
             entry.title,
             entry.default_max_steps,
             &exercise,
+            &compare,
             &disturbance,
         );
         if let Some(Value::Object(own)) = body.remove("properties") {
@@ -87,6 +90,7 @@ fn envelope(
     title: &str,
     default_max_steps: u64,
     exercise: &Value,
+    compare: &Value,
     disturbance: &Value,
 ) -> Map<String, Value> {
     let properties = json!({
@@ -117,6 +121,7 @@ fn envelope(
             "items": disturbance,
         },
         "exercise": exercise,
+        "compare": compare,
     });
     match properties {
         Value::Object(map) => map,

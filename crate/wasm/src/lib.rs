@@ -101,6 +101,24 @@ pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+/// A scenario's comparison (its `compare` section), as `[second, first label, second label]`:
+/// the second run's scenario (this one with the one setting changed, canonical and indented) and
+/// the two runs' names in words; `undefined` when the scenario compares nothing.
+#[wasm_bindgen]
+pub fn compare_pair(json: &str) -> Result<Option<Vec<String>>, JsError> {
+    let scenario = Scenario::from_json(json).map_err(js_err)?;
+    let (Some(compare), Some(second)) = (&scenario.compare, scenario.compared().map_err(js_err)?)
+    else {
+        return Ok(None);
+    };
+    let (first_label, second_label) = compare.labels(&scenario.to_value());
+    Ok(Some(vec![
+        second.to_json_pretty(),
+        first_label,
+        second_label,
+    ]))
+}
+
 /// The most cells a shape may span in the page (`Limits::PAGE`): a scenario over it is refused
 /// by the worker, so the page does not ask the user about the memory it would need.
 #[wasm_bindgen]

@@ -1,0 +1,216 @@
+// Two runs side by side. A scenario's `compare` section (crate/core/src/compare.rs) names the one
+// setting a second run changes; the core checks it and gives the second run's scenario. The second
+// run lives in a worker of its own, drawn in a view beside the first, and follows the first's step
+// count (SimClient.pair): play, pause, step, rewind and reset move both, and the chart and the
+// metric cards show both, named in words. The section travels in the scenario, so the link that
+// holds the scenario holds both runs. The Run tab's "Compare two runs" writes or removes it.
+import type { Page } from '../panels/page';
+import type { RunPanel } from '../panels/run';
+import { View } from '../render/view';
+import { SimClient } from '../sim/client';
+import type { Frame } from '../types';
+import * as core from '../wasm';
+import { byId, clear, el } from './dom';
+import { isLarge } from './opening';
+import { choices, resolve } from './params';
+
+/** Keys a comparison never varies: the envelope's texts and sections, and the step limit. */
+const NOT_COMPARED = new Set(['version', 'model', 'name', 'description', 'disturbances', 'exercise', 'compare', 'max_steps']);
+
+/** One setting a second run may change, and the values it may take there. */
+interface Setting {
+  key: string;
+  /** The other values of a choice or a switch; null for a number, typed in. */
+  options: unknown[] | null;
+}
+
+export interface Compare {
+  /** The second run's client, while one was ever started (tests and the recorder read it). */
+  readonly second: SimClient | null;
+}
+
+export function setupCompare(page: Page, run: RunPanel): Compare {
+  const { session, sim, prefs } = page;
+  const wrap = byId('compare-wrap');
+  const firstLabel = byId('run-label-first');
+  const secondLabel = byId('run-label-second');
+  const settingSelect = byId<HTMLSelectElement>('compare-setting');
+  const valueSelect = byId<HTMLSelectElement>('compare-value');
+  const valueNumber = byId<HTMLInputElement>('compare-number');
+  const start = byId<HTMLButtonElement>('compare-start');
+  const stop = byId<HTMLButtonElement>('compare-stop');
+  const error = byId('compare-error');
+
+  let second: SimClient | null = null;
+  let secondView: View | null = null;
+  let settings: Setting[] = [];
+
+  /** The second run's worker and view, made the first time a comparison opens and kept after. */
+  function ensureSecond(): SimClient {
+    if (second) return second;
+    const client = new SimClient({
+      // Framed once loaded: it may have been laid out while its view was still hidden.
+      loaded: () => secondView?.fit(),
+      frame: showSecond,
+      // Its playing shows on the Play button through the first run's client (SimClient.pair).
+      playing: () => {},
+      scenario: () => {},
+      error: (message) => page.banner.report(`The second run: ${message}`),
+      panic: (message) => page.banner.report(`The second run hit an internal error and was restarted.\n${message}`),
+      goal: () => {},
+      stalled: () => {},
+      viewer: (kind) => secondView?.started(kind),
+      drew: () => {},
+    });
+    second = client;
+    secondView = new View(byId<HTMLCanvasElement>('view-second'), byId<HTMLCanvasElement>('annotations-second'), wrap, () => client, {
+      click: () => {},
+      hover: () => {},
+      drawn: () => client.ack(),
+    });
+    secondView.marks.arrows = prefs.arrows;
+    secondView.marks.labels = prefs.labels;
+    secondView.request();
+    void secondView.useRenderer(prefs.renderer);
+    return client;
+  }
+
+  function showSecond(frame: Frame) {
+    secondView?.setFrame(frame);
+    byId('step-count-second').textContent = frame.steps.toLocaleString('en-US');
+    if (frame.hash) byId('state-hash-second').textContent = frame.hash;
+    byId('run-status-second').textContent = frame.completed ? `completed in ${frame.steps.toLocaleString('en-US')} steps` : frame.finished ? 'ended' : '';
+    wrap.dataset.steps = String(frame.steps);
+    if (frame.hash) wrap.dataset.hash = frame.hash;
+    run.secondFrame(frame);
+  }
+
+  /** Opens, changes or closes the comparison as the scenario in view says. */
+  function follow() {
+    let pair: ReturnType<typeof core.comparePair> = null;
+    // A large scenario is never read on this thread, and is not run twice: the second run would
+    // double the memory the page asked about.
+    const large = isLarge(session.scenario);
+    if (large && session.scenario.includes('"compare"')) error.textContent = 'This scenario is too large to run twice side by side; only its own run is shown.';
+    try {
+      if (!large) pair = core.comparePair(session.scenario);
+    } catch {
+      // The scenario in view was checked when it opened.
+    }
+    // The first run's view changes size as the second appears or goes: it is framed again once
+    // resized (the resize observer reports in the next frame, after its animation callbacks).
+    if (!!pair !== document.body.classList.contains('comparing')) requestAnimationFrame(() => requestAnimationFrame(() => page.view.fit()));
+    document.body.classList.toggle('comparing', !!pair);
+    wrap.hidden = !pair;
+    firstLabel.hidden = !pair;
+    stop.hidden = !pair;
+    if (!pair) {
+      page.view.companion = null;
+      sim.pair(null);
+      second?.pause();
+      run.compare(null);
+      return;
+    }
+    const client = ensureSecond();
+    // The zoom buttons and keys zoom and frame both views; a drag or a pinch moves the one under it.
+    page.view.companion = secondView;
+    firstLabel.textContent = pair.labels[0];
+    secondLabel.textContent = pair.labels[1];
+    wrap.setAttribute('aria-label', `The second run: ${pair.labels[1]}`);
+    byId<HTMLCanvasElement>('view-second').setAttribute('aria-label', `The second run's view, ${pair.labels[1]}; drag to pan, wheel or pinch to zoom`);
+    run.compare(pair.labels);
+    // Loaded again on every load of the first run: a reset resets both.
+    delete wrap.dataset.hash;
+    client.load(pair.second);
+    sim.pair(client);
+  }
+
+  // ---- the controls ----
+
+  /** The settings of the scenario in view a second run may change, from the model's schema. */
+  function offer() {
+    const doc = session.doc();
+    const schema = core.modelSchema(String(doc.model ?? ''));
+    settings = [];
+    for (const key of Object.keys(doc).sort()) {
+      if (NOT_COMPARED.has(key)) continue;
+      const value = doc[key];
+      const options = choices(resolve(schema?.properties[key], schema));
+      if (options) settings.push({ key, options: options.filter((o) => JSON.stringify(o) !== JSON.stringify(value)) });
+      else if (typeof value === 'boolean') settings.push({ key, options: [!value] });
+      else if (typeof value === 'number') settings.push({ key, options: null });
+    }
+    settings = settings.filter((s) => s.options === null || s.options.length > 0);
+    const current = (doc.compare as { path?: string; value?: unknown } | undefined) ?? null;
+    const keep = current?.path ?? settingSelect.value;
+    clear(settingSelect);
+    for (const s of settings) settingSelect.append(el('option', { value: s.key, text: s.key.replace(/_/g, ' ') }));
+    if (settings.some((s) => s.key === keep)) settingSelect.value = keep;
+    offerValues(current?.path === settingSelect.value ? current.value : undefined);
+    start.disabled = settings.length === 0;
+    start.textContent = current ? 'Compare this instead' : 'Compare side by side';
+  }
+
+  function offerValues(chosen?: unknown) {
+    const setting = settings.find((s) => s.key === settingSelect.value);
+    const doc = session.doc();
+    valueSelect.hidden = !setting?.options;
+    valueNumber.hidden = !setting || !!setting.options;
+    clear(valueSelect);
+    if (setting?.options) {
+      // The scenario's own value is listed too (it cannot be chosen): the choice reads as "this, or that".
+      for (const option of setting.options) valueSelect.append(el('option', { value: JSON.stringify(option), text: words(setting.key, option) }));
+      if (chosen !== undefined && setting.options.some((o) => JSON.stringify(o) === JSON.stringify(chosen))) valueSelect.value = JSON.stringify(chosen);
+    } else if (setting) {
+      const own = Number(doc[setting.key]);
+      valueNumber.value = String(typeof chosen === 'number' ? chosen : setting.key === 'seed' ? own + 1 : own);
+    }
+  }
+
+  /** A value in words: a switch reads on or off. */
+  function words(key: string, value: unknown): string {
+    if (typeof value === 'boolean') return `${key.replace(/_/g, ' ')} ${value ? 'on' : 'off'}`;
+    return String(value);
+  }
+
+  // The About tab's renderer choice holds for the second view too.
+  const renderer = byId<HTMLSelectElement>('renderer-choice');
+  renderer.addEventListener('change', () => void secondView?.useRenderer(renderer.value as typeof prefs.renderer));
+
+  settingSelect.addEventListener('change', () => offerValues());
+  start.addEventListener('click', () => {
+    const key = settingSelect.value;
+    const setting = settings.find((s) => s.key === key);
+    if (!setting) return;
+    const value: unknown = setting.options ? JSON.parse(valueSelect.value) : Number(valueNumber.value);
+    const section: Record<string, unknown> = { path: key, value };
+    // A switch is named on and off; other settings by the core's default, the setting and its value.
+    if (typeof value === 'boolean') {
+      section.label = words(key, value);
+      section.base_label = words(key, !value);
+    }
+    const problem = page.applyChange('compare', JSON.stringify(section));
+    error.textContent = problem ?? '';
+  });
+  stop.addEventListener('click', () => {
+    const doc = { ...session.doc() };
+    delete doc.compare;
+    error.textContent = '';
+    page.load(JSON.stringify(doc));
+    start.focus();
+  });
+
+  session.on('loaded', () => {
+    error.textContent = '';
+    follow();
+    offer();
+  });
+  // A recorded click changes the first run's scenario, and the second run's with it.
+  session.on('recorded', follow);
+
+  return {
+    get second() {
+      return second;
+    },
+  };
+}
