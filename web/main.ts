@@ -16,6 +16,7 @@ import { setupGrade } from './ui/grade';
 import { registerOffline } from './ui/offline';
 import { change, isLarge, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
+import { setupClaimLinks } from './ui/reproduction';
 import { StructureViews } from './ui/structure';
 import { setupWelcome } from './ui/welcome';
 import * as core from './wasm';
@@ -324,6 +325,7 @@ async function start() {
     record: (settings, signal, progress) => sim.record(settings, signal, progress),
   });
   keys.selectTab(!embedded && TABS.includes(prefs.tab) ? prefs.tab : 'run');
+  if (!embedded) setupClaimLinks(() => keys.selectTab('about'));
   if (embedded) {
     embed = new Embed(
       {

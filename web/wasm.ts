@@ -3,6 +3,7 @@
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
+import type { Finding } from './contract.gen';
 import type { ExperimentInfo, Figure, LessonInfo, MetricInfo, PresetInfo } from './types';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
@@ -78,6 +79,15 @@ export const experimentExport = (experiment: string, rowsJson: string, format: '
 /** An experiment's link payload (`x1.…`), and the experiment inside one. */
 export const packExperiment = (json: string): string => core.pack_experiment(json);
 export const unpackExperiment = (link: string): string => core.unpack_experiment(link);
+/** A claim of the reproduction report recomputed from its experiments' rows (name → row texts), as `kumiki reproduce` computes it. */
+export const reproduceClaim = (model: string, id: string, rows: Record<string, string[]>): Finding =>
+  core.reproduce_claim(
+    model,
+    id,
+    `{${Object.entries(rows)
+      .map(([name, texts]) => `${JSON.stringify(name)}:[${texts.join(',')}]`)
+      .join(',')}}`,
+  ) as Finding;
 export const version = (): string => core.version();
 
 /** A JSON Schema node, as far as the page reads one. */

@@ -45,6 +45,11 @@ describe('accessibility audit (axe-core)', () => {
       if (tab === 'scenario') await page.click('.json-editor summary');
       found.push(...(await audit(page, `${tab} tab`)));
     }
+    // A claim opened by its link and re-run, its result shown under its row.
+    await page.evaluate(() => (location.hash = 'claim=chobie-with-five-robots-a-load-at'));
+    await page.click('#claim-chobie-with-five-robots-a-load-at button.rerun');
+    await page.waitForSelector('#paper-report .rerun-match', { timeout: 60000 });
+    found.push(...(await audit(page, 'a claim re-run on the about tab')));
 
     await page.click('#tab-run');
     for (const [button, dialog] of [

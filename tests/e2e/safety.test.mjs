@@ -186,17 +186,22 @@ describe('the About tab', () => {
     const rows = page.locator('#paper-report table.findings tbody tr');
     assert.equal(await rows.count(), findings.length);
     const first = rows.first().locator('td');
-    assert.equal(await first.nth(1).textContent(), findings[0].claim);
+    assert.equal(await first.nth(1).locator('.claim-text').textContent(), findings[0].claim);
     assert.equal(await first.nth(3).textContent(), String(findings[0].runs));
-    // The table fits its panel, on a desktop and on a tablet: no sideways scrolling.
-    for (const width of [1280, 820]) {
-      await page.setViewportSize({ width, height: 900 });
+    // The table fits its panel, on a laptop (1366 × 768) and on a tablet: no sideways scrolling.
+    for (const [width, height] of [
+      [1366, 768],
+      [768, 1024],
+    ]) {
+      await page.setViewportSize({ width, height });
       const [scroll, client] = await page.$eval('#paper-report .table-scroll', (d) => [d.scrollWidth, d.clientWidth]);
       assert.ok(scroll <= client, `the table fits at ${width} px (${scroll} > ${client})`);
+      const [panel, room] = await page.$eval('#panel-about', (d) => [d.scrollWidth, d.clientWidth]);
+      assert.ok(panel <= room, `the About panel needs no sideways scrolling at ${width} px (${panel} > ${room})`);
     }
     // Each experiment behind the figures opens in the Experiments tab.
     const name = report.models[model].experiments[0];
-    await page.click(`#paper-report button:text-is("${name}")`);
+    await page.click(`#paper-report p.row-buttons button:text-is("${name}")`);
     assert.equal(await page.getAttribute('#tab-experiments', 'aria-selected'), 'true');
     assert.equal(JSON.parse(await page.inputValue('#experiment-json')).name, name);
     await context.close();

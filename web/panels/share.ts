@@ -85,8 +85,8 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
 
   function openHash(): boolean {
     const hash = location.hash.slice(1);
-    // An experiment link (`x1.`) is the Experiments panel's.
-    if (!hash || hash.startsWith('x1.')) return false;
+    // An experiment link (`x1.`) is the Experiments panel's, a claim's (`claim=`) the About panel's.
+    if (!hash || hash.startsWith('x1.') || hash.startsWith('claim=')) return false;
     /** The link's scenario text, once unpacked: what the whole message is read from. */
     let text: string | null = null;
     try {
@@ -128,13 +128,20 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
     }
   }
   window.addEventListener('hashchange', () => {
-    if (location.hash.length > 1 && !location.hash.startsWith('#x1.') && core.encodeLink(session.scenario) !== location.hash.slice(1)) openHash();
+    if (
+      location.hash.length > 1 &&
+      !location.hash.startsWith('#x1.') &&
+      !location.hash.startsWith('#claim=') &&
+      core.encodeLink(session.scenario) !== location.hash.slice(1)
+    )
+      openHash();
   });
 
   return {
     openHash,
     leaveLink() {
-      if (location.hash) replaceHash('');
+      // A claim's link (`claim=`) names no scenario: it stays while scenarios change.
+      if (location.hash && !location.hash.startsWith('#claim=')) replaceHash('');
       linkNotice.hidden = true;
     },
     scenarioLink,

@@ -7,7 +7,7 @@
 //! the report is deterministic), and [`markdown`] and [`json`] write the report that
 //! `docs/reproduction.md` holds and the page's About panel shows.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use serde::Serialize;
 use serde_json::{json, Value};
@@ -37,7 +37,7 @@ pub fn paper(model: &str) -> Option<&'static Paper> {
 }
 
 /// Whether the paper's claim holds in Kumiki, where the paper states a comparison.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     Holds,
@@ -66,7 +66,7 @@ impl Verdict {
 }
 
 /// One claim of the paper beside Kumiki's figure.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Finding {
     /// Where the paper makes the claim: "§5.2, fig. 23".
     pub section: String,
@@ -105,6 +105,9 @@ impl Finding {
 #[derive(Clone, Debug, Default)]
 pub struct Results {
     rows: BTreeMap<String, Vec<Row>>,
+    /// Experiments known to the report but not run this time: they read as no rows (a claim
+    /// recomputed from its own experiments only, see [`recompute`]).
+    withheld: BTreeSet<String>,
 }
 
 impl Results {
@@ -112,16 +115,51 @@ impl Results {
         Results::default()
     }
 
+    /// Results for `paper` where none of its experiments has run yet: each reads as no rows
+    /// until its rows are inserted.
+    pub fn for_paper(paper: &Paper) -> Results {
+        Results {
+            rows: BTreeMap::new(),
+            withheld: paper.experiments.iter().map(|e| e.to_string()).collect(),
+        }
+    }
+
     pub fn insert(&mut self, experiment: &str, rows: Vec<Row>) {
+        self.withheld.remove(experiment);
         self.rows.insert(experiment.to_string(), rows);
     }
 
-    /// The rows of an experiment. Panics when the paper did not list it: that is a programming
-    /// error in the paper's findings, not bad input.
+    /// These results with the rows of `experiment` withheld.
+    fn without(&self, experiment: &str) -> Results {
+        let mut out = self.clone();
+        out.rows.remove(experiment);
+        out.withheld.insert(experiment.to_string());
+        out
+    }
+
+    /// These results with only the rows of `keep`; every other experiment is withheld.
+    fn only(&self, keep: &[String]) -> Results {
+        let mut out = Results::new();
+        for (name, rows) in &self.rows {
+            match keep.contains(name) {
+                true => out.insert(name, rows.clone()),
+                false => {
+                    out.withheld.insert(name.clone());
+                }
+            }
+        }
+        out.withheld.extend(self.withheld.iter().cloned());
+        out
+    }
+
+    /// The rows of an experiment (none when it is withheld). Panics when the paper did not list
+    /// it: that is a programming error in the paper's findings, not bad input.
     pub fn rows(&self, experiment: &str) -> &[Row] {
-        self.rows
-            .get(experiment)
-            .unwrap_or_else(|| panic!("experiment '{experiment}' was not run for this report"))
+        match self.rows.get(experiment) {
+            Some(rows) => rows,
+            None if self.withheld.contains(experiment) => &[],
+            None => panic!("experiment '{experiment}' was not run for this report"),
+        }
     }
 
     /// The rows whose scenario name and grid parameters match every `(key, value)` of the
@@ -277,22 +315,126 @@ pub fn fmt(v: f64, digits: usize) -> String {
     }
 }
 
+/// One row of the report: a finding, named so that a link can open it, with the experiments
+/// whose rows it is computed from.
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct Claim {
+    /// The model and the claim's first words, for example `chobie-with-five-robots-a-load-at`
+    /// (a second claim with the same words gets `-2`). The page opens it from `#claim=ID`.
+    pub id: String,
+    #[serde(flatten)]
+    pub finding: Finding,
+    /// The built-in experiments whose rows the figure reads: recomputed from their rows alone,
+    /// the finding is the same. Empty for a row that reads no experiment (a pointer to another
+    /// section, a statement of the paper with nothing to run).
+    pub experiments: Vec<String>,
+}
+
+/// How many words of a claim its id takes.
+const ID_WORDS: usize = 6;
+
+/// The ids of a model's findings, in order: the model and the claim's first [`ID_WORDS`]
+/// words, lower case, letters and digits only; a repeated id gets `-2`, `-3`, ….
+fn ids(model: &str, findings: &[Finding]) -> Vec<String> {
+    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    findings
+        .iter()
+        .map(|f| {
+            let words: Vec<String> = f
+                .claim
+                .split(|c: char| !c.is_alphanumeric())
+                .filter(|w| !w.is_empty())
+                .take(ID_WORDS)
+                .map(str::to_lowercase)
+                .collect();
+            let base = format!("{model}-{}", words.join("-"));
+            let n = seen.entry(base.clone()).or_insert(0);
+            *n += 1;
+            match *n {
+                1 => base,
+                n => format!("{base}-{n}"),
+            }
+        })
+        .collect()
+}
+
+/// The findings of `paper` from `results`, each with its id: the one computation of a report
+/// row, for `kumiki reproduce` ([`Section::new`]) and the page's re-run ([`recompute`]).
+fn claims(paper: &Paper, results: &Results) -> Vec<(String, Finding)> {
+    let findings = (paper.findings)(results);
+    ids(paper.model, &findings)
+        .into_iter()
+        .zip(findings)
+        .collect()
+}
+
+/// The claim `id` of `paper` computed from `results`, which need hold only the rows of the
+/// claim's own experiments (the others are withheld, see [`Results::for_paper`]). With those
+/// rows it is the report's row, figure, runs and verdict alike: [`Section::new`] checks it.
+pub fn recompute(paper: &Paper, id: &str, results: &Results) -> Option<Finding> {
+    claims(paper, results)
+        .into_iter()
+        .find(|(i, _)| i == id)
+        .map(|(_, f)| f)
+}
+
 /// One model's part of the report.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Section {
     pub model: String,
     pub citation: String,
     pub experiments: Vec<String>,
-    pub findings: Vec<Finding>,
+    pub findings: Vec<Claim>,
 }
 
 impl Section {
+    /// The section from the rows of every experiment of the paper. Each claim's experiments
+    /// are the ones without whose rows its finding changes; the section then checks that the
+    /// finding recomputed from those rows alone is the same, so that a claim re-run in the page
+    /// gives the report's row. Panics when it is not: a finding that reads rows its experiments
+    /// do not name is a programming error in the paper's findings.
     pub fn new(paper: &Paper, results: &Results) -> Section {
+        let all = claims(paper, results);
+        let mut uses: Vec<Vec<String>> = vec![Vec::new(); all.len()];
+        for e in paper.experiments {
+            let without = claims(paper, &results.without(e));
+            assert_eq!(
+                without.len(),
+                all.len(),
+                "{}: the findings must not depend in number on the rows",
+                paper.model
+            );
+            for (i, (full, less)) in all.iter().zip(&without).enumerate() {
+                if full != less {
+                    uses[i].push(e.to_string());
+                }
+            }
+        }
+        let mut checked: BTreeMap<&[String], Vec<(String, Finding)>> = BTreeMap::new();
+        for ((id, finding), experiments) in all.iter().zip(&uses) {
+            let again = checked
+                .entry(experiments)
+                .or_insert_with(|| claims(paper, &results.only(experiments)));
+            let same = again.iter().find(|(i, _)| i == id).map(|(_, f)| f);
+            assert_eq!(
+                same,
+                Some(finding),
+                "{id}: recomputed from {experiments:?} alone, the finding is not the report's"
+            );
+        }
         Section {
             model: paper.model.into(),
             citation: paper.citation.into(),
             experiments: paper.experiments.iter().map(|e| e.to_string()).collect(),
-            findings: (paper.findings)(results),
+            findings: all
+                .into_iter()
+                .zip(uses)
+                .map(|((id, finding), experiments)| Claim {
+                    id,
+                    finding,
+                    experiments,
+                })
+                .collect(),
         }
     }
 }
@@ -313,17 +455,17 @@ pub fn markdown(sections: &[Section]) -> String {
         let holds = s
             .findings
             .iter()
-            .filter(|f| f.verdict == Verdict::Holds)
+            .filter(|c| c.finding.verdict == Verdict::Holds)
             .count();
         let differs = s
             .findings
             .iter()
-            .filter(|f| f.verdict == Verdict::Differs)
+            .filter(|c| c.finding.verdict == Verdict::Differs)
             .count();
         out.push_str(&format!(
             "\n## {} — {}\n\n{} claims: {} hold, {} differ, {} with no comparison stated. \
              Experiments: {}.\n\n\
-             | § | the paper's claim | Kumiki | runs | verdict |\n| --- | --- | --- | --- | --- |\n",
+             | § | the paper's claim | Kumiki | runs (experiments) | verdict |\n| --- | --- | --- | --- | --- |\n",
             s.model,
             cell(&s.citation),
             s.findings.len(),
@@ -336,7 +478,20 @@ pub fn markdown(sections: &[Section]) -> String {
                 .collect::<Vec<_>>()
                 .join(", "),
         ));
-        for f in &s.findings {
+        for c in &s.findings {
+            let f = &c.finding;
+            let runs = match c.experiments.is_empty() {
+                true => f.runs.to_string(),
+                false => format!(
+                    "{} ({})",
+                    f.runs,
+                    c.experiments
+                        .iter()
+                        .map(|e| format!("`{e}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            };
             let kumiki = match f.note.is_empty() {
                 true => cell(&f.kumiki),
                 false => format!("{}<br>*{}*", cell(&f.kumiki), cell(&f.note)),
@@ -346,7 +501,7 @@ pub fn markdown(sections: &[Section]) -> String {
                 cell(&f.section),
                 cell(&f.claim),
                 kumiki,
-                f.runs,
+                runs,
                 match f.verdict {
                     Verdict::NotStated => f.verdict.label().to_string(),
                     v => format!("**{}**", v.label()),
@@ -433,6 +588,16 @@ mod tests {
     }
 
     #[test]
+    fn every_paper_computes_its_findings_without_rows() {
+        // A claim re-run in the page has only its own experiments' rows: the other findings of
+        // its paper must still compute (from none), in the same number.
+        for paper in PAPERS {
+            let none = claims(paper, &Results::for_paper(paper));
+            assert!(!none.is_empty(), "{}", paper.model);
+        }
+    }
+
+    #[test]
     #[should_panic(expected = "was not run")]
     fn an_unlisted_experiment_is_a_programming_error() {
         results().rows("other");
@@ -465,29 +630,116 @@ mod tests {
             citation: "A & B, Title".into(),
             experiments: vec!["e".into()],
             findings: vec![
-                Finding {
-                    section: "§1".into(),
-                    claim: "x | y".into(),
-                    kumiki: "3".into(),
-                    runs: 10,
-                    verdict: Verdict::from(true),
-                    note: String::new(),
+                Claim {
+                    id: "m-x-y".into(),
+                    finding: Finding {
+                        section: "§1".into(),
+                        claim: "x | y".into(),
+                        kumiki: "3".into(),
+                        runs: 10,
+                        verdict: Verdict::from(true),
+                        note: String::new(),
+                    },
+                    experiments: vec!["e".into()],
                 },
-                Finding {
-                    section: "§2".into(),
-                    claim: "z".into(),
-                    kumiki: "4".into(),
-                    runs: 5,
-                    verdict: Verdict::from(false),
-                    note: "why\nnot".into(),
+                Claim {
+                    id: "m-z".into(),
+                    finding: Finding {
+                        section: "§2".into(),
+                        claim: "z".into(),
+                        kumiki: "4".into(),
+                        runs: 5,
+                        verdict: Verdict::from(false),
+                        note: "why\nnot".into(),
+                    },
+                    experiments: Vec::new(),
                 },
             ],
         };
         let md = markdown(std::slice::from_ref(&section));
         assert!(md.contains("2 claims: 1 hold, 1 differ, 0 with no comparison stated"));
-        assert!(md.contains("| §1 | x \\| y | 3 | 10 | **holds** |"));
+        assert!(md.contains("| §1 | x \\| y | 3 | 10 (`e`) | **holds** |"));
         assert!(md.contains("| §2 | z | 4<br>*why not* | 5 | **differs** |"));
         let j = json(&[section]);
         assert_eq!(j["models"]["m"]["findings"][1]["verdict"], "differs");
+        assert_eq!(j["models"]["m"]["findings"][0]["id"], "m-x-y");
+        assert_eq!(j["models"]["m"]["findings"][0]["experiments"][0], "e");
+    }
+
+    /// A paper of two claims over experiments "e" and "f": the first reads "e" only, the second
+    /// both, the third none.
+    fn two_experiment_findings(r: &Results) -> Vec<Finding> {
+        let a = r.stats("e", &[], "steps");
+        let b = r.stats("f", &[], "steps");
+        vec![
+            Finding::new(
+                "§1",
+                "Runs of e end.",
+                a.describe(0),
+                a.n,
+                Verdict::from(a.n > 0),
+                "",
+            ),
+            Finding::new(
+                "§2",
+                "Runs of e and f end.",
+                format!("{} / {}", a.short(0), b.short(0)),
+                a.n + b.n,
+                Verdict::from(a.mean < b.mean),
+                "",
+            ),
+            Finding::new(
+                "§3",
+                "Runs of e end.",
+                "see §1".into(),
+                0,
+                Verdict::NotStated,
+                "",
+            ),
+        ]
+    }
+
+    const TWO: Paper = Paper {
+        model: "m",
+        citation: "",
+        experiments: &["e", "f"],
+        findings: two_experiment_findings,
+    };
+
+    #[test]
+    fn each_claim_names_the_experiments_it_reads_and_is_recomputed_from_them_alone() {
+        let mut r = results();
+        r.insert("f", vec![row("c", 1, 500, 0), row("c", 2, 700, 0)]);
+        let section = Section::new(&TWO, &r);
+        let ids: Vec<&str> = section.findings.iter().map(|c| c.id.as_str()).collect();
+        assert_eq!(
+            ids,
+            [
+                "m-runs-of-e-end",
+                "m-runs-of-e-and-f-end",
+                "m-runs-of-e-end-2"
+            ]
+        );
+        let uses: Vec<&[String]> = section
+            .findings
+            .iter()
+            .map(|c| c.experiments.as_slice())
+            .collect();
+        assert_eq!(
+            uses,
+            [&["e".to_string()][..], &["e".into(), "f".into()], &[]]
+        );
+        // The page's re-run: only the claim's experiments have run.
+        let mut page = Results::for_paper(&TWO);
+        page.insert("e", r.rows("e").to_vec());
+        assert_eq!(
+            recompute(&TWO, "m-runs-of-e-end", &page).as_ref(),
+            Some(&section.findings[0].finding)
+        );
+        // Without f the second claim is not the report's: its runs and figure say so.
+        let partial = recompute(&TWO, "m-runs-of-e-and-f-end", &page).unwrap();
+        assert_ne!(partial, section.findings[1].finding);
+        assert_eq!(partial.runs, 4);
+        assert_eq!(recompute(&TWO, "m-no-such-claim", &page), None);
     }
 }

@@ -263,7 +263,7 @@ pub fn files() -> Vec<(String, String)> {
 
 /// The schema of every record the core hands the page through the wasm glue (serde-wasm-bindgen):
 /// a run's [`Layout`](crate::models::Layout) and [`Scene`](crate::models::Scene), the lists of
-/// lessons and presets. Their TypeScript types are generated from it, so a change of one in Rust is a type
+/// lessons and presets, the reproduction report's sections and a claim recomputed. Their TypeScript types are generated from it, so a change of one in Rust is a type
 /// error in the page, not a silent mismatch.
 pub fn contract() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
@@ -271,6 +271,8 @@ pub fn contract() -> Value {
     generator.subschema_for::<crate::models::Scene>();
     generator.subschema_for::<crate::lessons::LessonInfo>();
     generator.subschema_for::<crate::presets::PresetInfo>();
+    generator.subschema_for::<crate::reproduce::Section>();
+    generator.subschema_for::<crate::reproduce::Finding>();
     let defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
     json!({ "$defs": defs })
 }

@@ -813,3 +813,23 @@ pub fn experiment_export(
         ))),
     }
 }
+
+/// A claim of the reproduction report (`id`, as in `docs/reproduction.json`) recomputed from the
+/// rows of its experiments, by the function `kumiki reproduce` writes the report with:
+/// `rows_json` is an object from experiment name to its rows (each as `ExperimentRunner::run`
+/// gives it, in job order). Gives the finding: section, claim, figure, runs, verdict, note.
+#[wasm_bindgen]
+pub fn reproduce_claim(model: &str, id: &str, rows_json: &str) -> Result<JsValue, JsError> {
+    use kumiki_core::reproduce;
+    let paper = reproduce::paper(model)
+        .ok_or_else(|| JsError::new(&format!("no paper is registered for model '{model}'")))?;
+    let given: std::collections::BTreeMap<String, Vec<kumiki_core::experiment::Row>> =
+        serde_json::from_str(rows_json).map_err(js_err)?;
+    let mut results = reproduce::Results::for_paper(paper);
+    for (name, rows) in given {
+        results.insert(&name, rows);
+    }
+    let finding = reproduce::recompute(paper, id, &results)
+        .ok_or_else(|| JsError::new(&format!("the report has no claim '{id}' for {model}")))?;
+    to_js(&finding)
+}
