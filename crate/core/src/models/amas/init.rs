@@ -129,6 +129,7 @@ impl Amas {
             corner_collisions: 0,
             above_corner_collisions: 0,
             supply_collisions: 0,
+            wandering: 0,
             events: Vec::new(),
         };
         m.recount();

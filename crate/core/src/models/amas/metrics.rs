@@ -34,6 +34,11 @@ pub const METRICS: &[MetricInfo] = &[
         "Collisions on the supply rows, where robots pick up their modules.",
     ),
     MetricInfo::new(
+        "wandering",
+        "robot steps",
+        "Times a robot found no effective gradient (or stood on a broken module) and chose its way at random (sections 5.4, 5.5).",
+    ),
+    MetricInfo::new(
         "relays",
         "count",
         "Modules handed from one robot to another instead of carried all the way (section 5.2).",

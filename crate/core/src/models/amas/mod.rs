@@ -168,6 +168,9 @@ pub struct Amas {
     corner_collisions: u64,
     above_corner_collisions: u64,
     supply_collisions: u64,
+    /// Plans made with no effective gradient (footnote 3) or on a broken module: the robot
+    /// picked its way at random.
+    wandering: u64,
     events: Vec<Event>,
 }
 
@@ -235,6 +238,7 @@ impl Model for Amas {
             Metric::Count(self.above_corner_collisions),
         );
         f("supply_collisions", Metric::Count(self.supply_collisions));
+        f("wandering", Metric::Count(self.wandering));
         f("lower_bound", Metric::Count(self.lower_bound));
         f("path_bound", Metric::Count(self.path_bound));
         f("built", Metric::Real(self.built_fraction()));

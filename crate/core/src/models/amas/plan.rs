@@ -103,6 +103,7 @@ impl Amas {
                 .map_or(Plan::Wait, Plan::Move);
         }
         self.robots[r].lost = true;
+        self.wandering += 1;
         self.pick_random(&walk[..nw]).map_or(Plan::Wait, Plan::Move)
     }
 
@@ -169,6 +170,7 @@ impl Amas {
                 }
             }
             self.robots[r].lost = true;
+            self.wandering += 1;
             return self.pick_random(&walk[..n]).map_or(Plan::Wait, Plan::Move);
         }
         let (nb, k) = self.neighbours(i);

@@ -56,6 +56,10 @@ fn broken_modules_keep_their_last_value_and_robots_on_them_wander() {
         }
     }
     assert!(wandered > 0, "no robot crossed the broken module");
+    assert!(
+        m.wandering >= wandered,
+        "the wandering metric missed a random move"
+    );
     assert!(m
         .apply(&action(json!({"kind": "break", "cells": [c]})))
         .unwrap_err()
