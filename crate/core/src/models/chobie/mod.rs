@@ -12,7 +12,7 @@
 //! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
 //! - [`paper`]: the paper's claims beside the experiments' figures.
 
-use crate::models::{self, Event, ModelEntry, ModelSpec};
+use crate::models::{self, Event, ModelEntry};
 
 pub mod actions;
 pub mod cycle;
@@ -40,7 +40,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 200,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Chobie),
+    parse: models::parse::<spec::Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<spec::Spec>,
     #[cfg(feature = "schema")]

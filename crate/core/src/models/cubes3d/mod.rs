@@ -23,9 +23,7 @@ use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::limits::Limits;
 use crate::math;
-use crate::models::{
-    self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, ModelSpec, Scene,
-};
+use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, Scene};
 use crate::rng::Rng;
 
 mod actions;
@@ -56,7 +54,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Cubes3d),
+    parse: models::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]

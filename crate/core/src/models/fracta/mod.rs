@@ -25,8 +25,7 @@ use crate::hash::StateHasher;
 use crate::lattice::{Hex, Lattice, LatticeKind};
 use crate::math;
 use crate::models::{
-    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry,
-    ModelSpec, ToolInfo,
+    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry, ToolInfo,
 };
 use crate::rng::Rng;
 use crate::shape;
@@ -60,7 +59,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 20_000,
     model_version: 5,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Fracta),
+    parse: models::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]

@@ -16,7 +16,7 @@ use crate::shape;
 impl Cubes {
     /// The model of a test scenario, built the way a run builds it.
     fn new(s: &Scenario) -> crate::Result<Cubes> {
-        let crate::models::ModelSpec::Cubes3d(spec) = &s.spec else {
+        let Some(spec) = s.spec.downcast::<super::Spec>() else {
             panic!("not a cubes3d scenario");
         };
         Ok(Cubes::from_checked(
