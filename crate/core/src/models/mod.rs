@@ -13,7 +13,7 @@ use crate::limits::Limits;
 
 pub mod amas;
 pub mod chobie;
-pub mod cubes3d;
+pub use kumiki_cubes3d as cubes3d;
 pub mod fracta;
 
 #[cfg(test)]

@@ -19,12 +19,12 @@ use std::borrow::Cow;
 
 use serde_json::{Map, Value};
 
-use crate::error::Result;
-use crate::hash::StateHasher;
-use crate::limits::Limits;
-use crate::math;
-use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, Scene};
-use crate::rng::Rng;
+use kumiki_model::error::Result;
+use kumiki_model::hash::StateHasher;
+use kumiki_model::limits::Limits;
+use kumiki_model::math;
+use kumiki_model::model::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, Scene};
+use kumiki_model::rng::Rng;
 
 mod actions;
 mod choose;
@@ -54,11 +54,11 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: models::parse::<Spec>,
+    parse: model::parse::<Spec>,
     #[cfg(feature = "schema")]
-    schema: crate::schema::of::<Spec>,
+    schema: model::schema_of::<Spec>,
     #[cfg(feature = "schema")]
-    disturbance: crate::schema::of::<actions::ActionSpec>,
+    disturbance: model::schema_of::<actions::ActionSpec>,
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.
