@@ -12,17 +12,16 @@ use serde_json::{json, Value};
 
 pub use kumiki_model::report::*;
 
-/// Every model's paper, in report order.
-pub const PAPERS: &[Paper] = &[
-    crate::models::amas::paper::PAPER,
-    crate::models::chobie::paper::PAPER,
-    crate::models::cubes3d::paper::PAPER,
-    crate::models::fracta::paper::PAPER,
-];
+/// Every model's paper, in report order (the registry's, [`crate::models::MODELS`]).
+#[cfg(feature = "report")]
+pub fn papers() -> impl Iterator<Item = &'static Paper> {
+    crate::models::MODELS.iter().map(|m| m.paper)
+}
 
 /// The paper of one model.
+#[cfg(feature = "report")]
 pub fn paper(model: &str) -> Option<&'static Paper> {
-    PAPERS.iter().find(|p| p.model == model)
+    papers().find(|p| p.model == model)
 }
 
 /// One model's part of the report.
@@ -161,6 +160,20 @@ mod tests {
             ],
         );
         r
+    }
+
+    /// The registry is the one list of papers: each entry's paper is its own model's, and the
+    /// report has one section per model.
+    #[test]
+    fn every_registered_model_names_its_own_paper() {
+        let models: Vec<&str> = crate::models::MODELS.iter().map(|m| m.name).collect();
+        let papers: Vec<&str> = papers().map(|p| p.model).collect();
+        assert_eq!(papers, models);
+        assert_eq!(
+            paper("cubes3d").map(|p| p.experiments[0]),
+            Some("cubes-fig8")
+        );
+        assert!(paper("nope").is_none());
     }
 
     #[test]

@@ -428,7 +428,7 @@ fn ts_type(node: &Value, indent: &str) -> String {
 }
 
 /// A generator for a model's entry: its description's schema, by reference.
-pub use kumiki_model::model::schema_of as of;
+pub use kumiki_model::entry::schema_of as of;
 
 #[cfg(test)]
 mod tests {

@@ -3,8 +3,8 @@
 //!
 //! - [`model`]: the [`Model`](model::Model) trait, the typed scenario description
 //!   ([`Spec`](model::Spec)), what a renderer reads ([`Layout`](model::Layout),
-//!   [`Scene`](model::Scene), ...), metrics, actions, helper calls, and the
-//!   [`ModelEntry`](model::ModelEntry) that registers a model;
+//!   [`Scene`](model::Scene), ...), metrics and actions; [`entry`]: the
+//!   [`ModelEntry`](entry::ModelEntry) that registers a model, with its helper calls and paper;
 //! - [`lattice`] and [`shape`]: square, hex and cubic lattices, and the text shapes scenarios
 //!   carry; [`limits`]: every size a scenario may ask for;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
@@ -12,6 +12,7 @@
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
+pub mod entry;
 pub mod error;
 pub mod hash;
 pub mod lattice;

@@ -1,11 +1,13 @@
 //! The registry of models, one module per model, and a scenario's description whatever its
 //! model ([`ModelSpec`]).
 //!
-//! The interface a model implements ([`Model`], [`Spec`], [`Layout`], ...) is the contract crate's,
-//! [`kumiki_model::model`], re-exported here.
+//! The interface a model implements ([`Model`], [`Spec`], [`Layout`], ...) and its registry entry
+//! ([`ModelEntry`]) are the contract crate's, [`kumiki_model::model`] and [`kumiki_model::entry`],
+//! re-exported here.
 
 use serde_json::{Map, Value};
 
+pub use kumiki_model::entry::*;
 pub use kumiki_model::model::*;
 
 use crate::error::{Error, Result};
@@ -13,11 +15,13 @@ use crate::limits::Limits;
 
 pub mod amas;
 pub mod chobie;
-pub use kumiki_cubes3d as cubes3d;
 pub mod fracta;
 
 #[cfg(test)]
 mod metrics_tests;
+mod registry;
+
+pub use registry::MODELS;
 
 /// The table of a model's metrics, in the order the model lists them.
 pub fn metric_table(model: &str) -> Result<&'static [MetricInfo]> {
@@ -55,73 +59,30 @@ pub fn metrics_markdown() -> String {
     out
 }
 
-/// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY, chobie::ENTRY, cubes3d::ENTRY, fracta::ENTRY];
-
-/// Every helper call, by model.
-pub const QUERIES: &[Query] = &[
-    Query {
-        model: "chobie",
-        name: "crawl",
-        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
-        run: chobie::queries::crawl,
-    },
-    Query {
-        model: "cubes3d",
-        name: "derive",
-        description: "The type-lists of a shape: {\"shape\": cubic layers} or {\"units\": [[x, y, z], ...]}",
-        run: cubes3d::query_derive,
-    },
-    Query {
-        model: "cubes3d",
-        name: "check",
-        description: "Checks type-lists ({\"type_lists\": text}) and returns them in normal form",
-        run: cubes3d::query_check,
-    },
-    Query {
-        model: "fracta",
-        name: "derive",
-        description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
-        run: fracta::queries::derive,
-    },
-    Query {
-        model: "fracta",
-        name: "check",
-        description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
-        run: fracta::queries::check,
-    },
-    Query {
-        model: "fracta",
-        name: "types",
-        description: "The connection types: name, ASCII spelling, bonds, movable, colour",
-        run: fracta::queries::types,
-    },
-];
-
-/// Runs a model's helper call, see [`QUERIES`].
+/// Runs a model's helper call, one of its entry's [`ModelEntry::queries`].
 pub fn query(model: &str, name: &str, args: &Value) -> Result<Value> {
-    entry(model)?;
-    let q = QUERIES
-        .iter()
-        .find(|q| q.model == model && q.name == name)
-        .ok_or_else(|| {
-            let known: Vec<&str> = QUERIES
-                .iter()
-                .filter(|q| q.model == model)
-                .map(|q| q.name)
-                .collect();
-            Error::field(
-                "query",
-                match known.is_empty() {
-                    true => format!("model '{model}' answers no queries"),
-                    false => format!(
-                        "model '{model}' has no query '{name}'; known: {}",
-                        known.join(", ")
-                    ),
-                },
-            )
-        })?;
+    let queries = entry(model)?.queries;
+    let q = queries.iter().find(|q| q.name == name).ok_or_else(|| {
+        let known: Vec<&str> = queries.iter().map(|q| q.name).collect();
+        Error::field(
+            "query",
+            match known.is_empty() {
+                true => format!("model '{model}' answers no queries"),
+                false => format!(
+                    "model '{model}' has no query '{name}'; known: {}",
+                    known.join(", ")
+                ),
+            },
+        )
+    })?;
     (q.run)(args)
+}
+
+/// Every helper call of every model, by model, with its model's name.
+pub fn queries() -> impl Iterator<Item = (&'static str, &'static Query)> {
+    MODELS
+        .iter()
+        .flat_map(|m| m.queries.iter().map(move |q| (m.name, q)))
 }
 
 pub fn entry(name: &str) -> Result<&'static ModelEntry> {

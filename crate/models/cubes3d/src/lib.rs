@@ -19,11 +19,12 @@ use std::borrow::Cow;
 
 use serde_json::{Map, Value};
 
+use kumiki_model::entry::{self, ModelEntry, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::limits::Limits;
 use kumiki_model::math;
-use kumiki_model::model::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, Scene};
+use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
 
 mod actions;
@@ -54,11 +55,25 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: model::parse::<Spec>,
+    parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
-    schema: model::schema_of::<Spec>,
+    schema: entry::schema_of::<Spec>,
     #[cfg(feature = "schema")]
-    disturbance: model::schema_of::<actions::ActionSpec>,
+    disturbance: entry::schema_of::<actions::ActionSpec>,
+    queries: &[
+        Query {
+            name: "derive",
+            description: "The type-lists of a shape: {\"shape\": cubic layers} or {\"units\": [[x, y, z], ...]}",
+            run: query_derive,
+        },
+        Query {
+            name: "check",
+            description: "Checks type-lists ({\"type_lists\": text}) and returns them in normal form",
+            run: query_check,
+        },
+    ],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

@@ -41,6 +41,9 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::Raw>,
+    queries: &[],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 const NONE: u32 = u32::MAX;

@@ -45,6 +45,13 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: crate::schema::of::<spec::Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::LoadAction>,
+    queries: &[models::Query {
+        name: "crawl",
+        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
+        run: queries::crawl,
+    }],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// The checked parameters a run uses.

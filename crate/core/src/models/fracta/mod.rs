@@ -64,6 +64,25 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::FaultAction>,
+    queries: &[
+        models::Query {
+            name: "derive",
+            description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
+            run: queries::derive,
+        },
+        models::Query {
+            name: "check",
+            description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
+            run: queries::check,
+        },
+        models::Query {
+            name: "types",
+            description: "The connection types: name, ASCII spelling, bonds, movable, colour",
+            run: queries::types,
+        },
+    ],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see

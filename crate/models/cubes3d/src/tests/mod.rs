@@ -21,7 +21,7 @@ impl Cubes {
         assert_eq!(s.model(), ENTRY.name, "not a cubes3d scenario");
         let spec: Spec = kumiki_model::error::from_value(Value::Object(s.body()))?;
         Ok(Cubes::from_checked(
-            model::Spec::validate(&spec, s.limits)?,
+            kumiki_model::model::Spec::validate(&spec, s.limits)?,
             s.seed,
         ))
     }
