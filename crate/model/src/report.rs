@@ -13,7 +13,8 @@ use crate::row::Row;
 pub struct Paper {
     pub model: &'static str,
     pub citation: &'static str,
-    /// Built-in experiments (`crate/core/experiments/<name>.json`) whose rows the findings read.
+    /// Built-in experiments (`experiments/<name>.json` of the core or of the model's crate) whose
+    /// rows the findings read.
     pub experiments: &'static [&'static str],
     pub findings: fn(&Results) -> Vec<Finding>,
 }
