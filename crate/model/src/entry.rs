@@ -50,8 +50,10 @@ pub struct Query {
 }
 
 /// A model's description whatever the model, as a scenario holds it: the object-safe face of
-/// [`Spec`], which every `Spec` has.
-pub trait AnySpec: std::fmt::Debug + Send + Sync + 'static {
+/// [`Spec`], which every `Spec` has. Its methods are the ones every build uses: a vtable keeps
+/// each of them linked, so comparing and printing go through [`AnySpec::to_body`] instead of the
+/// spec's own `PartialEq` and `Debug`, which the page's wasm would otherwise carry unused.
+pub trait AnySpec: Send + Sync + 'static {
     /// The keys written back with every default written out.
     fn to_body(&self) -> Map<String, Value>;
     /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
@@ -61,8 +63,6 @@ pub trait AnySpec: std::fmt::Debug + Send + Sync + 'static {
     fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>>;
     fn clone_box(&self) -> Box<dyn AnySpec>;
     fn as_any(&self) -> &dyn Any;
-    /// The same model's description with the same values.
-    fn same(&self, other: &dyn AnySpec) -> bool;
 }
 
 impl<S: Spec + Send + Sync + 'static> AnySpec for S {
@@ -92,10 +92,6 @@ impl<S: Spec + Send + Sync + 'static> AnySpec for S {
 
     fn as_any(&self) -> &dyn Any {
         self
-    }
-
-    fn same(&self, other: &dyn AnySpec) -> bool {
-        other.as_any().downcast_ref::<S>() == Some(self)
     }
 }
 

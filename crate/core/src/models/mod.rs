@@ -99,7 +99,6 @@ pub fn entry(name: &str) -> Result<&'static ModelEntry> {
 
 /// The description of one of the models: the part of a scenario beyond its envelope, read by
 /// the model's [`ModelEntry::parse`].
-#[derive(Debug)]
 pub struct ModelSpec {
     model: &'static str,
     spec: Box<dyn AnySpec>,
@@ -114,9 +113,20 @@ impl Clone for ModelSpec {
     }
 }
 
+/// Two descriptions are equal when they are the same model's with the same keys, every default
+/// written out: what a link of each would carry.
 impl PartialEq for ModelSpec {
     fn eq(&self, other: &Self) -> bool {
-        self.model == other.model && self.spec.same(other.spec.as_ref())
+        self.model == other.model && self.to_body() == other.to_body()
+    }
+}
+
+impl std::fmt::Debug for ModelSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ModelSpec")
+            .field("model", &self.model)
+            .field("body", &self.to_body())
+            .finish()
     }
 }
 
