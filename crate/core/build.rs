@@ -1,23 +1,58 @@
-//! Registers every file in `presets/`, `lessons/` and `experiments/` by its name, so adding a preset
-//! or a lesson is adding one file; and records the commit the core is built from
+//! Registers every file in `presets/`, `lessons/` and `experiments/` by its name, the core's and
+//! each model crate's (`../models/<model>/presets/`, ...), so adding a preset or a lesson is adding
+//! one file; and records the commit the core is built from
 //! (`KUMIKI_COMMIT`, "unknown" outside a git checkout) for the provenance of exports.
 
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
 
-fn table(dir: &str, konst: &str, out: &mut String) {
-    println!("cargo::rerun-if-changed={dir}");
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("reading {dir}: {e}"))
-        .filter_map(|entry| {
-            let path = entry.ok()?.path();
-            (path.extension()? == "json").then(|| path.file_stem()?.to_str().map(str::to_string))?
+/// The folders holding built-in files of `kind` (`presets`, `lessons`, `experiments`): the core's
+/// own, and the one of each model crate under `../models/` that has any.
+fn folders(kind: &str) -> Vec<String> {
+    println!("cargo::rerun-if-changed=../models");
+    let mut models: Vec<String> = std::fs::read_dir("../models")
+        .map(|dir| {
+            dir.filter_map(|entry| {
+                Some(format!(
+                    "../models/{}/{kind}",
+                    entry.ok()?.file_name().to_str()?
+                ))
+            })
+            .filter(|d| Path::new(d).is_dir())
+            .collect()
         })
-        .collect();
-    names.sort();
+        .unwrap_or_default();
+    models.sort();
+    let mut out = vec![kind.to_string()];
+    out.extend(models);
+    out
+}
+
+fn table(kind: &str, konst: &str, out: &mut String) {
+    let mut files: Vec<(String, String)> = Vec::new();
+    for dir in folders(kind) {
+        println!("cargo::rerun-if-changed={dir}");
+        files.extend(
+            std::fs::read_dir(&dir)
+                .unwrap_or_else(|e| panic!("reading {dir}: {e}"))
+                .filter_map(|entry| {
+                    let path = entry.ok()?.path();
+                    (path.extension()? == "json")
+                        .then(|| path.file_stem()?.to_str().map(str::to_string))?
+                })
+                .map(|name| (name, dir.clone())),
+        );
+    }
+    files.sort();
+    if let Some(w) = files.windows(2).find(|w| w[0].0 == w[1].0) {
+        panic!(
+            "two built-in {kind} named {}: in {} and {}",
+            w[0].0, w[0].1, w[1].1
+        );
+    }
     writeln!(out, "pub const {konst}: &[(&str, &str)] = &[").unwrap();
-    for name in names {
+    for (name, dir) in files {
         println!("cargo::rerun-if-changed={dir}/{name}.json");
         writeln!(
             out,

@@ -494,8 +494,8 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
         }
         Some(Command::Schema { check, root }) => schema(check, &root)?,
         Some(Command::Queries) => {
-            for q in kumiki_core::models::QUERIES {
-                writeln!(out, "{} {}\t{}", q.model, q.name, q.description)?;
+            for (model, q) in kumiki_core::models::queries() {
+                writeln!(out, "{model} {}\t{}", q.name, q.description)?;
             }
         }
         Some(Command::Query { model, name, args }) => {

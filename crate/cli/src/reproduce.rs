@@ -69,14 +69,13 @@ pub fn run(model: Option<&str>, mode: Mode, root: &Path, threads: usize) -> Resu
         Some(m) => vec![reproduce::paper(m).ok_or_else(|| {
             Failure::Usage(format!(
                 "no paper is registered for model '{m}'; known: {}",
-                reproduce::PAPERS
-                    .iter()
+                reproduce::papers()
                     .map(|p| p.model)
                     .collect::<Vec<_>>()
                     .join(", ")
             ))
         })?],
-        None => reproduce::PAPERS.iter().collect(),
+        None => reproduce::papers().collect(),
     };
     let (markdown, json) = texts(&sections(&papers, threads)?);
     match mode {

@@ -18,20 +18,18 @@
 //! run; `seeds` is a count (seeds 1..=N) or a list. Jobs are numbered scenario-major, then grid,
 //! then seed, and every runner reports rows in that order.
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
 use crate::hash;
 use crate::limits::Limits;
-use crate::models::Metrics;
 use crate::plot::{self, PlotSpec};
 use crate::presets;
 use crate::run::Run;
 use crate::scenario::{canonical, Scenario, MAX_SEED};
+pub use kumiki_model::row::{Row, Trace, PROGRAM_VERSION};
 
-/// The version of this program, carried by every row.
-pub const PROGRAM_VERSION: &str = concat!("kumiki ", env!("CARGO_PKG_VERSION"));
 pub const MAX_JOBS: usize = 1_000_000;
 
 #[derive(Clone, Debug)]
@@ -65,52 +63,6 @@ pub struct Job {
     pub scenario: usize,
     pub params: Vec<(String, Value)>,
     pub seed: u64,
-}
-
-/// A metric sampled during a run: `step[i]` and `values[name][i]`.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Trace {
-    pub step: Vec<u64>,
-    pub values: Map<String, Value>,
-}
-
-/// The result of one run, traceable to its scenario and program.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Row {
-    pub scenario: String,
-    pub seed: u64,
-    pub completed: bool,
-    pub steps: u64,
-    pub hash: String,
-    pub metrics: Metrics,
-    pub params: Map<String, Value>,
-    pub scenario_hash: String,
-    pub version: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub trace: Option<Trace>,
-}
-
-impl Row {
-    /// The row of a finished run, traced to its parameters, scenario and program.
-    pub fn from_outcome(
-        outcome: crate::run::Outcome,
-        params: Map<String, Value>,
-        scenario_hash: String,
-        trace: Option<Trace>,
-    ) -> Row {
-        Row {
-            scenario: outcome.scenario,
-            seed: outcome.seed,
-            completed: outcome.completed,
-            steps: outcome.steps,
-            hash: outcome.hash,
-            metrics: outcome.metrics,
-            params,
-            scenario_hash,
-            version: PROGRAM_VERSION.to_string(),
-            trace,
-        }
-    }
 }
 
 impl Experiment {
@@ -412,26 +364,6 @@ impl Experiment {
             scenario_hash,
             trace,
         ))
-    }
-}
-
-impl Trace {
-    fn sample(&mut self, step: u64, metrics: &Metrics, names: &[String]) {
-        if self.step.last() == Some(&step) {
-            return;
-        }
-        self.step.push(step);
-        for name in names {
-            let v = metrics.get(name).cloned().unwrap_or(Value::Null);
-            match self
-                .values
-                .entry(name.clone())
-                .or_insert_with(|| Value::Array(Vec::new()))
-            {
-                Value::Array(list) => list.push(v),
-                _ => unreachable!("trace values are lists"),
-            }
-        }
     }
 }
 

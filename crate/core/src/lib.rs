@@ -1,5 +1,8 @@
 //! Kumiki's simulation core. Pure Rust: no browser, no clock, no thread-local randomness.
 //!
+//! Built on the models' contract, [`kumiki_model`], whose lattices, shapes, limits, randomness,
+//! maths, hash and errors it re-exports under the same names.
+//!
 //! - [`lattice`]: square, hex and cubic lattices behind one neighbourhood API;
 //! - [`models`]: the models and their registry;
 //! - [`scenario`]: the versioned JSON document that determines a run, and [`shape`] for the text
@@ -15,31 +18,28 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
 
+pub use kumiki_model::{error, hash, lattice, limits, math, rng, shape};
+
 pub mod compare;
-pub mod error;
 pub mod exercise;
 pub mod experiment;
 pub mod export;
 pub mod grading;
-pub mod hash;
 pub mod json;
-pub mod lattice;
 pub mod lessons;
-pub mod limits;
+#[cfg(test)]
+mod limits_tests;
 pub mod link;
-pub mod math;
 pub mod models;
 pub mod playback;
 pub mod plot;
 pub mod presets;
 pub mod reproduce;
-pub mod rng;
 pub mod run;
 pub mod scenario;
 #[cfg(feature = "schema")]
 pub mod schema;
 pub mod series;
-pub mod shape;
 pub mod timeline;
 
 pub use error::{Error, Result};

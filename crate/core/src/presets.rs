@@ -1,5 +1,5 @@
-//! Built-in scenarios and experiments: one JSON file each under `presets/` and `experiments/`,
-//! registered by file name (the lessons under `lessons/` too: see [`crate::lessons`]).
+//! Built-in scenarios and experiments: one JSON file each under `presets/` and `experiments/` (the
+//! core's, or a model crate's: `crate/models/<model>/presets/`), registered by file name (the lessons under `lessons/` too: see [`crate::lessons`]).
 
 use crate::error::{Error, Result};
 use crate::scenario::Scenario;

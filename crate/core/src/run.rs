@@ -1,28 +1,16 @@
 //! A run: a model driven through its scenario's schedule up to its step limit.
 
-use serde::Serialize;
-
 use crate::error::Result;
 use crate::hash::{self, StateHasher};
-use crate::models::{Action, Metrics, Model};
+use crate::models::{Action, Model};
 use crate::scenario::{Disturbance, Scenario};
+pub use kumiki_model::row::Outcome;
 
 pub struct Run {
     scenario: Scenario,
     model: Box<dyn Model>,
     /// Index of the next scheduled disturbance.
     next: usize,
-}
-
-/// The summary of a run, as the CLI prints it.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct Outcome {
-    pub scenario: String,
-    pub seed: u64,
-    pub completed: bool,
-    pub steps: u64,
-    pub hash: String,
-    pub metrics: Metrics,
 }
 
 impl Run {

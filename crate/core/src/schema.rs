@@ -8,7 +8,6 @@
 //! is written here from the same constants; a test reads every key it names.
 
 use schemars::generate::SchemaSettings;
-use schemars::SchemaGenerator;
 use serde_json::{json, Map, Value};
 
 use crate::compare::Compare;
@@ -436,9 +435,7 @@ fn ts_type(node: &Value, indent: &str) -> String {
 }
 
 /// A generator for a model's entry: its description's schema, by reference.
-pub fn of<T: schemars::JsonSchema>(generator: &mut SchemaGenerator) -> schemars::Schema {
-    generator.subschema_for::<T>()
-}
+pub use kumiki_model::entry::schema_of as of;
 
 #[cfg(test)]
 mod tests {

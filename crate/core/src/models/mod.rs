@@ -1,84 +1,27 @@
-//! The model interface and the registry of models, one module per model.
+//! The registry of models, one module per model, and a scenario's description whatever its
+//! model ([`ModelSpec`]).
 //!
-//! A model owns its state and its [`Rng`](crate::rng::Rng); the [`Run`](crate::run::Run) drives
-//! it. Everything a renderer needs is described once by [`Layout`] and then read each frame as
-//! flat buffers ([`Model::cells`], [`Model::field`]) plus small lists ([`Model::agents`],
-//! [`Model::events`]).
+//! The interface a model implements ([`Model`], [`Spec`], [`Layout`], ...) and its registry entry
+//! ([`ModelEntry`]) are the contract crate's, [`kumiki_model::model`] and [`kumiki_model::entry`],
+//! re-exported here.
 
-use std::borrow::Cow;
-
-use schemars::JsonSchema;
-use serde::de::DeserializeOwned;
-use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
+pub use kumiki_model::entry::*;
+pub use kumiki_model::model::*;
+
 use crate::error::{Error, Result};
-use crate::hash::StateHasher;
-use crate::lattice::LatticeKind;
 use crate::limits::Limits;
 
 pub mod amas;
 pub mod chobie;
-pub mod cubes3d;
 pub mod fracta;
 
 #[cfg(test)]
 mod metrics_tests;
+mod registry;
 
-/// Named metric values, sorted by name. Counts are integers, ratios floats.
-pub type Metrics = Map<String, Value>;
-
-/// One metric's value as a model reports it: given by name to [`Model::each_metric`], so a
-/// caller that wants every step's values (the page's chart) needs no map per step.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Metric {
-    Count(u64),
-    /// A ratio or a measure; a non-finite value reads as missing.
-    Real(f64),
-    Flag(bool),
-    /// Not defined yet (a time to completion before completion, a ratio of nothing).
-    Missing,
-}
-
-impl Metric {
-    pub fn to_json(self) -> Value {
-        match self {
-            Metric::Count(n) => n.into(),
-            Metric::Real(x) => serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number),
-            Metric::Flag(b) => b.into(),
-            Metric::Missing => Value::Null,
-        }
-    }
-
-    /// The number a chart plots (a flag as 0 or 1), or none.
-    pub fn plotted(self) -> Option<f64> {
-        match self {
-            Metric::Count(n) => Some(n as f64),
-            Metric::Real(x) => x.is_finite().then_some(x),
-            Metric::Flag(b) => Some(f64::from(u8::from(b))),
-            Metric::Missing => None,
-        }
-    }
-}
-
-/// One metric a model reports: its name, its unit and what it means in a plain sentence. Each
-/// model lists its own next to its code (`<model>/metrics.rs`), registered in [`ModelEntry`];
-/// the page (explanations on hover, units in exports), the CLI (`kumiki metrics`) and the docs
-/// (docs/metrics.md) all read this one table.
-#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
-pub struct MetricInfo {
-    pub name: &'static str,
-    /// What one of it measures: `steps`, `count`, `fraction` (0 to 1), `flag`, `MPa`, ...
-    pub unit: &'static str,
-    /// One sentence, for a reader who has not read the paper.
-    pub about: &'static str,
-}
-
-impl MetricInfo {
-    pub const fn new(name: &'static str, unit: &'static str, about: &'static str) -> Self {
-        MetricInfo { name, unit, about }
-    }
-}
+pub use registry::MODELS;
 
 /// The table of a model's metrics, in the order the model lists them.
 pub fn metric_table(model: &str) -> Result<&'static [MetricInfo]> {
@@ -116,263 +59,30 @@ pub fn metrics_markdown() -> String {
     out
 }
 
-/// A model action (a disturbance), as written in a scenario or sent by a click in the page.
-pub type Action = Map<String, Value>;
-
-/// A code in the cell buffer, an agent kind or an event kind, with its name and colour.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
-pub struct LegendEntry {
-    pub code: u8,
-    pub name: String,
-    /// CSS colour.
-    pub color: String,
-}
-
-impl LegendEntry {
-    pub fn new(code: u8, name: &str, color: &str) -> Self {
-        LegendEntry {
-            code,
-            name: name.into(),
-            color: color.into(),
-        }
-    }
-}
-
-/// A scalar field defined on the cells, drawn as an overlay.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
-pub struct FieldInfo {
-    pub name: String,
-    pub label: String,
-    /// Draw gradient arrows on top of the heatmap.
-    pub arrows: bool,
-}
-
-/// A click tool the page offers for this model. Clicking a cell sends `action` with the cell's
-/// index added as `"cells": [i]`.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
-pub struct ToolInfo {
-    pub name: String,
-    pub label: String,
-    pub action: Action,
-}
-
-/// What a renderer needs to know once per run.
-#[derive(Clone, Debug, Serialize, PartialEq, Deserialize, JsonSchema)]
-pub struct Layout {
-    pub lattice: LatticeKind,
-    /// Width, height, depth in cells.
-    pub dims: [u32; 3],
-    /// Meaning of each code in the cell buffer. Code 0 is "nothing here" and is not drawn.
-    pub cells: Vec<LegendEntry>,
-    pub agents: Vec<LegendEntry>,
-    pub events: Vec<LegendEntry>,
-    pub fields: Vec<FieldInfo>,
-    pub tools: Vec<ToolInfo>,
-    /// The cell legend's names are short labels (connection types) worth writing on each cell
-    /// when it is drawn large enough.
-    pub cell_labels: bool,
-    /// The metric worth charting against step by default.
-    pub chart: String,
-    /// The run has a goal it completes. Without one (a structure that keeps moving toward a
-    /// light, say) a run that reaches its step limit has simply run its course.
-    pub goal: bool,
-}
-
-/// Optional scene information for 3-D views, beyond the cells. Models without any return the
-/// default (nothing to draw). It may change between steps (a target switched, for instance), so a
-/// view reads it again after stepping.
-#[derive(Clone, Debug, Default, Serialize, PartialEq, Deserialize, JsonSchema)]
-#[serde(default)]
-pub struct Scene {
-    /// Cells of a reference shape (a target) to draw as a translucent ghost.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub ghost: Vec<u32>,
-    /// Unit vector from the structure toward a light source, in lattice axes (x, y, z).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub light: Option<[f32; 3]>,
-    /// A ground plane under layer z = `ground` (it touches the bottom faces of that layer's
-    /// cells); nothing lies below it.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub ground: Option<u32>,
-}
-
-/// An agent standing on a cell (a robot on a module).
-#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
-pub struct Agent {
-    pub cell: u32,
-    pub kind: u8,
-}
-
-/// Something that happened at a cell during the last step (a collision, a relay).
-#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
-pub struct Event {
-    pub cell: u32,
-    pub kind: u8,
-}
-
-/// A copy of a model in the middle of its run, for keyframes ([`crate::timeline`]). Every
-/// model gets it by deriving `Clone`.
-pub trait Snapshot {
-    fn snapshot(&self) -> Box<dyn Model>;
-}
-
-impl<T: Model + Clone + 'static> Snapshot for T {
-    fn snapshot(&self) -> Box<dyn Model> {
-        Box::new(self.clone())
-    }
-}
-
-/// A simulation model. Implementations are deterministic functions of their scenario and seed.
-pub trait Model: Snapshot {
-    fn layout(&self) -> Layout;
-    /// Advances one step.
-    fn step(&mut self);
-    /// Steps taken so far.
-    fn steps(&self) -> u64;
-    /// True when the model's goal is reached.
-    fn completed(&self) -> bool;
-    /// Gives every metric to `f`, by name.
-    fn each_metric(&self, f: &mut dyn FnMut(&'static str, Metric));
-    /// The metrics as one JSON object, sorted by name.
-    fn metrics(&self) -> Metrics {
-        let mut m = Map::new();
-        self.each_metric(&mut |name, value| {
-            m.insert(name.into(), value.to_json());
-        });
-        m
-    }
-    /// Feeds every part of the state that later steps depend on.
-    fn hash_state(&self, h: &mut StateHasher);
-    /// One code per lattice cell; see [`Layout::cells`].
-    fn cells(&self) -> Cow<'_, [u8]>;
-    /// One value per lattice cell for a field named in [`Layout::fields`]; NaN where undefined.
-    fn field(&self, name: &str) -> Option<Cow<'_, [f32]>>;
-    fn agents(&self) -> Vec<Agent>;
-    /// Events of the last step.
-    fn events(&self) -> Vec<Event>;
-    /// Checks the form of an action (its kind and fields), whatever the state: a scenario is
-    /// checked before its first step, and a disturbance recorded at step 360 must still read as
-    /// valid then.
-    fn check_action(&self, action: &Action) -> Result<()>;
-    /// Applies an action now (a scheduled disturbance or a click). An action that does not fit
-    /// the present state (a cell with nothing to remove) is an error and changes nothing; a
-    /// scheduled one is then skipped, identically in every replay.
-    fn apply(&mut self, action: &Action) -> Result<()>;
-    /// A few facts about one cell, for the page's inspector.
-    fn inspect(&self, _cell: usize) -> Map<String, Value> {
-        Map::new()
-    }
-    /// Ghost, light and ground for 3-D views; see [`Scene`].
-    fn scene(&self) -> Scene {
-        Scene::default()
-    }
-    /// Bonds between units, for models whose units hold on to each other: one bit mask per
-    /// lattice cell, bit `d` set when the cell's unit is bonded to the unit in direction `d`
-    /// (the lattice's direction numbering). Empty when the model has no bonds to draw.
-    fn bonds(&self) -> Cow<'_, [u8]> {
-        Cow::Borrowed(&[])
-    }
-}
-
-/// A registered model.
-pub struct ModelEntry {
-    pub name: &'static str,
-    pub title: &'static str,
-    pub default_max_steps: u64,
-    /// The version of the model's behaviour, written into every share link. Raise it by one when
-    /// a change makes the same scenario and seed run differently (when the golden hashes of its
-    /// presets change): links made before then still open, and the page says they were made with
-    /// an earlier Kumiki. Links that carry no version were made with version 1.
-    pub model_version: u32,
-    /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
-    pub metrics: &'static [MetricInfo],
-    /// Reads the model's keys of a scenario into its typed description.
-    pub parse: fn(Value) -> Result<ModelSpec>,
-    /// The JSON Schema of those keys (see `crate::schema`).
-    #[cfg(feature = "schema")]
-    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
-    /// The JSON Schema of one of its actions (a disturbance without its `at`).
-    #[cfg(feature = "schema")]
-    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
-}
-
-/// Every model, in gallery order.
-pub const MODELS: &[ModelEntry] = &[amas::ENTRY, chobie::ENTRY, cubes3d::ENTRY, fracta::ENTRY];
-
-/// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
-/// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
-/// argument and the problem like scenario errors do.
-pub struct Query {
-    pub model: &'static str,
-    pub name: &'static str,
-    pub description: &'static str,
-    pub run: fn(&Value) -> Result<Value>,
-}
-
-/// Every helper call, by model.
-pub const QUERIES: &[Query] = &[
-    Query {
-        model: "chobie",
-        name: "crawl",
-        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
-        run: chobie::queries::crawl,
-    },
-    Query {
-        model: "cubes3d",
-        name: "derive",
-        description: "The type-lists of a shape: {\"shape\": cubic layers} or {\"units\": [[x, y, z], ...]}",
-        run: cubes3d::query_derive,
-    },
-    Query {
-        model: "cubes3d",
-        name: "check",
-        description: "Checks type-lists ({\"type_lists\": text}) and returns them in normal form",
-        run: cubes3d::query_check,
-    },
-    Query {
-        model: "fracta",
-        name: "derive",
-        description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
-        run: fracta::queries::derive,
-    },
-    Query {
-        model: "fracta",
-        name: "check",
-        description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
-        run: fracta::queries::check,
-    },
-    Query {
-        model: "fracta",
-        name: "types",
-        description: "The connection types: name, ASCII spelling, bonds, movable, colour",
-        run: fracta::queries::types,
-    },
-];
-
-/// Runs a model's helper call, see [`QUERIES`].
+/// Runs a model's helper call, one of its entry's [`ModelEntry::queries`].
 pub fn query(model: &str, name: &str, args: &Value) -> Result<Value> {
-    entry(model)?;
-    let q = QUERIES
-        .iter()
-        .find(|q| q.model == model && q.name == name)
-        .ok_or_else(|| {
-            let known: Vec<&str> = QUERIES
-                .iter()
-                .filter(|q| q.model == model)
-                .map(|q| q.name)
-                .collect();
-            Error::field(
-                "query",
-                match known.is_empty() {
-                    true => format!("model '{model}' answers no queries"),
-                    false => format!(
-                        "model '{model}' has no query '{name}'; known: {}",
-                        known.join(", ")
-                    ),
-                },
-            )
-        })?;
+    let queries = entry(model)?.queries;
+    let q = queries.iter().find(|q| q.name == name).ok_or_else(|| {
+        let known: Vec<&str> = queries.iter().map(|q| q.name).collect();
+        Error::field(
+            "query",
+            match known.is_empty() {
+                true => format!("model '{model}' answers no queries"),
+                false => format!(
+                    "model '{model}' has no query '{name}'; known: {}",
+                    known.join(", ")
+                ),
+            },
+        )
+    })?;
     (q.run)(args)
+}
+
+/// Every helper call of every model, by model, with its model's name.
+pub fn queries() -> impl Iterator<Item = (&'static str, &'static Query)> {
+    MODELS
+        .iter()
+        .flat_map(|m| m.queries.iter().map(move |q| (m.name, q)))
 }
 
 pub fn entry(name: &str) -> Result<&'static ModelEntry> {
@@ -387,67 +97,63 @@ pub fn entry(name: &str) -> Result<&'static ModelEntry> {
     })
 }
 
-/// A model's typed scenario description: its keys read, every default filled in, and checked
-/// by [`Spec::validate`] before any model state is allocated.
-pub trait Spec: Serialize + DeserializeOwned + Clone + std::fmt::Debug + PartialEq {
-    /// What validation learns that building and action checks need (the lattice size, the
-    /// shapes read from their text), so neither reads or checks the description again.
-    type Checked;
-    /// Checks every field, naming the field and the rule, without building the model; every
-    /// size is computed from the text and held to `limits` before anything of that size is
-    /// allocated.
-    fn validate(&self, limits: &Limits) -> Result<Self::Checked>;
-    /// Checks the form of an action (its kind, its fields, cells inside the lattice), whatever
-    /// the state; the same check [`Model::check_action`] makes.
-    fn check_action(checked: &Self::Checked, action: &Action) -> Result<()>;
-    /// The model at step 0.
-    fn build(checked: Self::Checked, seed: u64) -> Box<dyn Model>;
+/// The description of one of the models: the part of a scenario beyond its envelope, read by
+/// the model's [`ModelEntry::parse`].
+pub struct ModelSpec {
+    model: &'static str,
+    spec: Box<dyn AnySpec>,
 }
 
-/// The description of one of the models: the part of a scenario beyond its envelope.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ModelSpec {
-    Amas(amas::Spec),
-    Chobie(chobie::spec::Spec),
-    Cubes3d(cubes3d::Spec),
-    Fracta(fracta::Spec),
-}
-
-/// Calls `$f` with the variant's spec, whatever the model.
-macro_rules! each_spec {
-    ($spec:expr, $s:ident => $f:expr) => {
-        match $spec {
-            ModelSpec::Amas($s) => $f,
-            ModelSpec::Chobie($s) => $f,
-            ModelSpec::Cubes3d($s) => $f,
-            ModelSpec::Fracta($s) => $f,
+impl Clone for ModelSpec {
+    fn clone(&self) -> Self {
+        ModelSpec {
+            model: self.model,
+            spec: self.spec.clone_box(),
         }
-    };
+    }
+}
+
+/// Two descriptions are equal when they are the same model's with the same keys, every default
+/// written out: what a link of each would carry.
+impl PartialEq for ModelSpec {
+    fn eq(&self, other: &Self) -> bool {
+        self.model == other.model && self.to_body() == other.to_body()
+    }
+}
+
+impl std::fmt::Debug for ModelSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ModelSpec")
+            .field("model", &self.model)
+            .field("body", &self.to_body())
+            .finish()
+    }
 }
 
 impl ModelSpec {
     /// Reads the keys of model `model`, naming unknown and invalid fields.
     pub fn read(model: &str, body: Map<String, Value>) -> Result<ModelSpec> {
-        (entry(model)?.parse)(Value::Object(body))
+        let entry = entry(model)?;
+        Ok(ModelSpec {
+            model: entry.name,
+            spec: (entry.parse)(Value::Object(body))?,
+        })
     }
 
     /// The model's registered name.
     pub fn model(&self) -> &'static str {
-        match self {
-            ModelSpec::Amas(_) => amas::ENTRY.name,
-            ModelSpec::Chobie(_) => chobie::ENTRY.name,
-            ModelSpec::Cubes3d(_) => cubes3d::ENTRY.name,
-            ModelSpec::Fracta(_) => fracta::ENTRY.name,
-        }
+        self.model
+    }
+
+    /// The model's own typed description, when it is a `S`.
+    pub fn downcast<S: Spec + 'static>(&self) -> Option<&S> {
+        self.spec.as_any().downcast_ref()
     }
 
     /// The keys written back with every default written out, so a scenario (and its link) states
     /// all it depends on and replays the same even if a later version changes a default.
     pub fn to_body(&self) -> Map<String, Value> {
-        match each_spec!(self, s => serde_json::to_value(s)) {
-            Ok(Value::Object(map)) => map,
-            _ => unreachable!("a model's description serialises to an object"),
-        }
+        self.spec.to_body()
     }
 
     /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
@@ -457,36 +163,16 @@ impl ModelSpec {
         limits: &Limits,
         actions: impl IntoIterator<Item = &'a Action>,
     ) -> Result<()> {
-        fn check<'a, S: Spec>(
-            s: &S,
-            limits: &Limits,
-            actions: impl IntoIterator<Item = &'a Action>,
-        ) -> Result<()> {
-            let checked = s.validate(limits)?;
-            for (i, action) in actions.into_iter().enumerate() {
-                S::check_action(&checked, action)
-                    .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
-            }
-            Ok(())
-        }
-        each_spec!(self, s => check(s, limits, actions))
+        self.spec.validate(limits, &mut actions.into_iter())
     }
 
     /// The model at step 0, built from this description (checked within `limits`) and `seed`.
     pub fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
-        fn build<S: Spec>(s: &S, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
-            let checked = s.validate(limits)?;
-            #[cfg(test)]
-            builds::count();
-            Ok(S::build(checked, seed))
-        }
-        each_spec!(self, s => build(s, seed, limits))
+        let model = self.spec.build(seed, limits)?;
+        #[cfg(test)]
+        builds::count();
+        Ok(model)
     }
-}
-
-/// Reads a model's typed description from its keys, naming unknown and invalid fields.
-pub fn parse<S: Spec>(body: Value, variant: fn(S) -> ModelSpec) -> Result<ModelSpec> {
-    crate::error::from_value(body).map(variant)
 }
 
 /// Models built on this thread, so a test can show that loading a scenario builds it once.

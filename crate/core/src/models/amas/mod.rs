@@ -9,7 +9,7 @@ use serde_json::{Map, Value};
 
 use crate::error::Result;
 use crate::hash::StateHasher;
-use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, ModelSpec};
+use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry};
 use crate::rng::Rng;
 
 mod act;
@@ -36,11 +36,14 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 100_000,
     model_version: 2,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Amas),
+    parse: models::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::Raw>,
+    queries: &[],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 const NONE: u32 = u32::MAX;

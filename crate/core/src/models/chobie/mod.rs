@@ -12,7 +12,7 @@
 //! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
 //! - [`paper`]: the paper's claims beside the experiments' figures.
 
-use crate::models::{self, Event, ModelEntry, ModelSpec};
+use crate::models::{self, Event, ModelEntry};
 
 pub mod actions;
 pub mod cycle;
@@ -40,11 +40,18 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 200,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Chobie),
+    parse: models::parse::<spec::Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<spec::Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::LoadAction>,
+    queries: &[models::Query {
+        name: "crawl",
+        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
+        run: queries::crawl,
+    }],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// The checked parameters a run uses.

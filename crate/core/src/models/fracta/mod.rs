@@ -25,8 +25,7 @@ use crate::hash::StateHasher;
 use crate::lattice::{Hex, Lattice, LatticeKind};
 use crate::math;
 use crate::models::{
-    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry,
-    ModelSpec, ToolInfo,
+    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry, ToolInfo,
 };
 use crate::rng::Rng;
 use crate::shape;
@@ -60,11 +59,30 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 20_000,
     model_version: 5,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Fracta),
+    parse: models::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: crate::schema::of::<Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::FaultAction>,
+    queries: &[
+        models::Query {
+            name: "derive",
+            description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
+            run: queries::derive,
+        },
+        models::Query {
+            name: "check",
+            description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
+            run: queries::check,
+        },
+        models::Query {
+            name: "types",
+            description: "The connection types: name, ASCII spelling, bonds, movable, colour",
+            run: queries::types,
+        },
+    ],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see

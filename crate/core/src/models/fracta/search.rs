@@ -9,7 +9,7 @@ use crate::scenario::Scenario;
 impl Fracta {
     /// The model of a scenario, built the way a run builds it.
     pub(super) fn of_scenario(s: &Scenario) -> Result<Fracta> {
-        let models::ModelSpec::Fracta(spec) = &s.spec else {
+        let Some(spec) = s.spec.downcast::<super::Spec>() else {
             return Err(Error::field("model", "not a fracta scenario"));
         };
         Ok(Fracta::from_checked(

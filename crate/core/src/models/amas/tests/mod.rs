@@ -12,7 +12,7 @@ use serde_json::json;
 impl Amas {
     /// The model of a test scenario, built the way a run builds it.
     fn new(s: &Scenario) -> crate::Result<Amas> {
-        let crate::models::ModelSpec::Amas(spec) = &s.spec else {
+        let Some(spec) = s.spec.downcast::<super::Spec>() else {
             panic!("not a amas scenario");
         };
         Ok(Amas::from_checked(

@@ -12,7 +12,7 @@ use serde_json::json;
 impl Chobie {
     /// The model of a test scenario, built the way a run builds it.
     fn new(s: &Scenario) -> crate::Result<Chobie> {
-        let crate::models::ModelSpec::Chobie(spec) = &s.spec else {
+        let Some(spec) = s.spec.downcast::<super::spec::Spec>() else {
             panic!("not a chobie scenario");
         };
         Ok(Chobie::from_checked(crate::models::Spec::validate(

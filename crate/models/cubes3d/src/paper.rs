@@ -4,8 +4,8 @@
 
 use serde_json::{json, Value};
 
-use crate::experiment::Row;
-use crate::reproduce::{self, Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::report::{self, Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::row::Row;
 
 pub const PAPER: Paper = Paper {
     model: "cubes3d",
@@ -56,11 +56,11 @@ fn rules(results: &Results, exp: &str, figure: &str, start: &str, end: u64) -> V
         let rows = results.select(exp, &[("selection", json!(rule))]);
         let reached = rows
             .iter()
-            .filter(|r| reproduce::value(r, "reached").is_some())
+            .filter(|r| report::value(r, "reached").is_some())
             .count();
         let at_end = rows
             .iter()
-            .filter(|r| reproduce::value(r, "mean_difference") == Some(0.0))
+            .filter(|r| report::value(r, "mean_difference") == Some(0.0))
             .count();
         (reached, at_end, rows.len())
     };
@@ -94,14 +94,14 @@ fn rules(results: &Results, exp: &str, figure: &str, start: &str, end: u64) -> V
             ),
             runs: mn + rn + sn,
             verdict: Verdict::from(mrf.mean < rnd.mean && mrf.mean < st.mean),
-            note: format!("Mean ± sd over runs, starting from D = {} per unit. Every run goes on for {end} steps, also after it reached the goal (the figure plots every step; the MRF at a finished structure stays, as no move has a lower D than D_0 = 0).", reproduce::fmt(mrf0.mean, 2)),
+            note: format!("Mean ± sd over runs, starting from D = {} per unit. Every run goes on for {end} steps, also after it reached the goal (the figure plots every step; the MRF at a finished structure stays, as no move has a lower D than D_0 = 0).", report::fmt(mrf0.mean, 2)),
         },
         Finding {
             section: format!("§5, {figure}"),
             claim: "Steepest descent (the reachable position of least difference always selected, \"no motion\" being position 0) falls into a local minimum, from which the goal cannot be reached.".into(),
             kumiki: format!(
                 "D per unit {} at step 0, {} at step 10, {} at step 50, {} at step {end}; {} moves per run; reached the goal in {sr}/{sn} runs",
-                reproduce::fmt(mrf0.mean, 2), st10.short(2), st50.short(2), st.short(2), moves("steepest").short(1)
+                report::fmt(mrf0.mean, 2), st10.short(2), st50.short(2), st.short(2), moves("steepest").short(1)
             ),
             runs: sn,
             verdict: Verdict::from(sr == 0 && st.mean == st50.mean && st.mean > mrf.mean),
@@ -110,7 +110,7 @@ fn rules(results: &Results, exp: &str, figure: &str, start: &str, end: u64) -> V
         Finding {
             section: format!("§5, {figure}"),
             claim: "Random selection of a reachable position does not converge: the difference stays high.".into(),
-            kumiki: format!("D per unit at step {end}: {}; lowest mean over the run {}; touched the goal in {rr}/{rn} runs, at it at step {end} in {re}/{rn}", rnd.short(2), reproduce::fmt(rnd_least, 2)),
+            kumiki: format!("D per unit at step {end}: {}; lowest mean over the run {}; touched the goal in {rr}/{rn} runs, at it at step {end} in {re}/{rn}", rnd.short(2), report::fmt(rnd_least, 2)),
             runs: rn,
             verdict: Verdict::from(rnd_least > 0.9 * mrf0.mean && rnd.mean > mrf.mean),
             note: "Holds when the mean D never falls below 90 % of its start and ends above MRF's. A run that touches the goal leaves it again at its next move (random selection always takes a reachable position): a run stopped at the goal would count a passing touch as a convergence and pull the mean down.".into(),
@@ -186,7 +186,7 @@ fn findings(results: &Results) -> Vec<Finding> {
             .select("cubes-scale", &filter)
             .into_iter()
             .filter(|r| !r.completed)
-            .filter_map(|r| reproduce::value(r, "mean_difference"))
+            .filter_map(|r| report::value(r, "mean_difference"))
             .collect::<Vec<_>>();
         out.push(Finding {
             section: "§7".into(),

@@ -5,8 +5,8 @@ use super::motion::{Structure, PAD};
 use super::spec::{Checked, Ground};
 use super::typelist::{self, TypeList};
 use super::{Cubes, Target};
-use crate::rng::Rng;
-use crate::shape::Grid3;
+use kumiki_model::rng::Rng;
+use kumiki_model::shape::Grid3;
 
 impl Cubes {
     /// The model at step 0, from its checked description.

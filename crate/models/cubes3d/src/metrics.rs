@@ -1,7 +1,7 @@
 //! The metrics the 3-D units report (see `each_metric_value` in `view.rs`): unit and meaning of
 //! each.
 
-use crate::models::MetricInfo;
+use kumiki_model::model::MetricInfo;
 
 pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("steps", "steps", "Time steps taken so far; in each, the units that may move choose a motion."),

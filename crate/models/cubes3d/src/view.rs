@@ -11,8 +11,8 @@ use super::spec::Ground;
 use super::typelist::TypeList;
 use super::types::{CODES, NAMES};
 use super::{Cubes, ARRIVED, HELD_LIT, HELD_USER, LEFT};
-use crate::lattice::LatticeKind;
-use crate::models::{FieldInfo, Layout, LegendEntry, Metric, Scene, ToolInfo};
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::{FieldInfo, Layout, LegendEntry, Metric, Scene, ToolInfo};
 
 /// Cell colours by connection type, code 1 (C1) to 9 (C6).
 const COLOURS: [&str; CODES] = [

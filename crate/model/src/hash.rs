@@ -18,6 +18,7 @@ impl StateHasher {
         Self::default()
     }
 
+    #[inline]
     pub fn bytes(&mut self, bytes: &[u8]) {
         let mut h = self.0;
         for &b in bytes {
@@ -27,25 +28,32 @@ impl StateHasher {
         self.0 = h;
     }
 
+    #[inline]
     pub fn u8(&mut self, v: u8) {
         self.bytes(&[v]);
     }
+    #[inline]
     pub fn u16(&mut self, v: u16) {
         self.bytes(&v.to_le_bytes());
     }
+    #[inline]
     pub fn u32(&mut self, v: u32) {
         self.bytes(&v.to_le_bytes());
     }
+    #[inline]
     pub fn u64(&mut self, v: u64) {
         self.bytes(&v.to_le_bytes());
     }
+    #[inline]
     pub fn bool(&mut self, v: bool) {
         self.u8(u8::from(v));
     }
     /// Floats are hashed by their bits: the hash checks bit-identical runs.
+    #[inline]
     pub fn f32(&mut self, v: f32) {
         self.u32(v.to_bits());
     }
+    #[inline]
     pub fn f64(&mut self, v: f64) {
         self.u64(v.to_bits());
     }

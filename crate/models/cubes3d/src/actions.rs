@@ -5,8 +5,8 @@ use serde::Deserialize;
 use serde_json::Value;
 
 use super::{Cubes, HELD_USER};
-use crate::error::{Error, Result};
-use crate::models::Action;
+use kumiki_model::error::{Error, Result};
+use kumiki_model::model::Action;
 
 /// A disturbance or click: `{"kind": "remove" | "add" | "hold", "cells": [i]}` removes a unit
 /// (if the rest stays connected), adds one next to the structure, or toggles whether a unit is
@@ -52,7 +52,7 @@ struct Parsed {
 }
 
 fn parse_action(action: &Action) -> Result<Parsed> {
-    let (op, cells) = match crate::error::from_value(Value::Object(action.clone()))? {
+    let (op, cells) = match kumiki_model::error::from_value(Value::Object(action.clone()))? {
         ActionSpec::Remove { cells } => (Op::Remove, cells),
         ActionSpec::Add { cells } => (Op::Add, cells),
         ActionSpec::Hold { cells } => (Op::Hold, cells),

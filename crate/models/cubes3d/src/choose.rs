@@ -4,7 +4,7 @@
 use super::connect::Scratch;
 use super::spec::Selection;
 use super::Cubes;
-use crate::math;
+use kumiki_model::math;
 
 impl Cubes {
     /// Is `c` at least `mover_distance` (Manhattan) from every unit that moved this step?

@@ -1,11 +1,11 @@
-//! Helper calls for the editors and the CLI (see `models::query`).
+//! Helper calls for the editors and the CLI (see the core's `models::query`).
 
 use serde_json::{json, Value};
 
 use super::typelist::{self, TypeList};
-use crate::error::{Error, Result};
-use crate::limits::Limits;
-use crate::shape;
+use kumiki_model::error::{Error, Result};
+use kumiki_model::limits::Limits;
+use kumiki_model::shape;
 
 fn described(lists: Vec<TypeList>, units: usize) -> Value {
     json!({
@@ -28,11 +28,12 @@ pub fn query_derive(args: &Value) -> Result<Value> {
         let lists = typelist::describe(&units).map_err(|e| e.within("shape"))?;
         Ok(described(lists, units.len()))
     } else if let Some(list) = args.get("units") {
-        let units: Vec<(i32, i32, i32)> = crate::error::from_value::<Vec<[i32; 3]>>(list.clone())
-            .map_err(|e| e.within("units"))?
-            .into_iter()
-            .map(|[x, y, z]| (x, y, z))
-            .collect();
+        let units: Vec<(i32, i32, i32)> =
+            kumiki_model::error::from_value::<Vec<[i32; 3]>>(list.clone())
+                .map_err(|e| e.within("units"))?
+                .into_iter()
+                .map(|[x, y, z]| (x, y, z))
+                .collect();
         let max_units = Limits::PAGE.cubes3d.units;
         if units.len() > max_units {
             return Err(Error::field("units", format!("at most {max_units} units")));

@@ -1,6 +1,7 @@
 //! Runs: invariants, disturbances, the selection rules, light, the view and the checks.
 
 use super::*;
+use kumiki_core::models;
 
 /// Everything the incremental bookkeeping maintains, recomputed from scratch.
 fn check_invariants(m: &Cubes) {

@@ -95,15 +95,19 @@ impl Square {
 
 impl Lattice for Square {
     const DIRECTIONS: usize = 4;
+    #[inline]
     fn kind(&self) -> LatticeKind {
         LatticeKind::Square
     }
+    #[inline]
     fn dims(&self) -> [u32; 3] {
         [self.w, self.h, 1]
     }
+    #[inline]
     fn step(&self, c: Coord, dir: usize) -> Coord {
         Coord::new(c.x + Self::DX[dir], c.y + Self::DY[dir], c.z)
     }
+    #[inline]
     fn opposite(dir: usize) -> usize {
         (dir + 2) % 4
     }
@@ -127,16 +131,19 @@ impl Hex {
     }
 
     /// Offset (x, y) to axial (q, r).
+    #[inline]
     pub fn to_axial(c: Coord) -> (i32, i32) {
         (c.x - (c.y - (c.y & 1)) / 2, c.y)
     }
 
     /// Axial (q, r) to offset (x, y).
+    #[inline]
     pub fn from_axial(q: i32, r: i32) -> Coord {
         Coord::xy(q + (r - (r & 1)) / 2, r)
     }
 
     /// Centre of a cell in drawing units (cell width 1, row spacing sqrt(3)/2).
+    #[inline]
     pub fn centre(c: Coord) -> (f64, f64) {
         let x = c.x as f64 + if c.y & 1 == 1 { 0.5 } else { 0.0 };
         (x, c.y as f64 * 0.866_025_403_784_438_6)
@@ -145,17 +152,21 @@ impl Hex {
 
 impl Lattice for Hex {
     const DIRECTIONS: usize = 6;
+    #[inline]
     fn kind(&self) -> LatticeKind {
         LatticeKind::Hex
     }
+    #[inline]
     fn dims(&self) -> [u32; 3] {
         [self.w, self.h, 1]
     }
+    #[inline]
     fn step(&self, c: Coord, dir: usize) -> Coord {
         let (q, r) = Hex::to_axial(c);
         let (dq, dr) = Self::AXIAL[dir];
         Hex::from_axial(q + dq, r + dr)
     }
+    #[inline]
     fn opposite(dir: usize) -> usize {
         (dir + 3) % 6
     }
@@ -184,16 +195,20 @@ impl Cubic {
 
 impl Lattice for Cubic {
     const DIRECTIONS: usize = 6;
+    #[inline]
     fn kind(&self) -> LatticeKind {
         LatticeKind::Cubic
     }
+    #[inline]
     fn dims(&self) -> [u32; 3] {
         [self.w, self.h, self.d]
     }
+    #[inline]
     fn step(&self, c: Coord, dir: usize) -> Coord {
         let (dx, dy, dz) = Self::DIRS[dir];
         Coord::new(c.x + dx, c.y + dy, c.z + dz)
     }
+    #[inline]
     fn opposite(dir: usize) -> usize {
         dir ^ 1
     }

@@ -6,10 +6,10 @@ use serde::{Deserialize, Serialize};
 use super::motion::PAD;
 use super::typelist::{self, TypeList};
 use super::{actions, types, Cubes};
-use crate::error::{Error, Result};
-use crate::limits::Limits;
-use crate::models::{self, Action, Model};
-use crate::shape::{self, Grid3};
+use kumiki_model::error::{Error, Result};
+use kumiki_model::limits::Limits;
+use kumiki_model::model::{self, Action, Model};
+use kumiki_model::shape::{self, Grid3};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
@@ -173,7 +173,7 @@ impl Spec {
     }
 }
 
-impl models::Spec for Spec {
+impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
@@ -298,7 +298,7 @@ fn face_connected(units: &[(i32, i32, i32)]) -> bool {
     let mut stack: Vec<(i32, i32, i32)> = units.first().copied().into_iter().collect();
     seen.extend(stack.iter().copied());
     while let Some((x, y, z)) = stack.pop() {
-        for (dx, dy, dz) in crate::lattice::Cubic::DIRS {
+        for (dx, dy, dz) in kumiki_model::lattice::Cubic::DIRS {
             let n = (x + dx, y + dy, z + dz);
             if occupied.contains(&n) && seen.insert(n) {
                 stack.push(n);

@@ -22,31 +22,37 @@ impl Rng {
         Rng::new(seed ^ stream.wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(17))
     }
 
+    #[inline]
     pub fn next_u64(&mut self) -> u64 {
         self.0.next_u64()
     }
 
+    #[inline]
     pub fn next_u32(&mut self) -> u32 {
         self.0.next_u32()
     }
 
     /// Uniform in `0..n`. Panics if `n == 0`.
+    #[inline]
     pub fn below(&mut self, n: u32) -> u32 {
         self.0.random_range(0..n)
     }
 
     /// Uniform index into a slice of length `n` (at most `u32::MAX`).
+    #[inline]
     pub fn index(&mut self, n: usize) -> usize {
         let n = u32::try_from(n).expect("Rng::index: length exceeds u32");
         self.below(n) as usize
     }
 
     /// Uniform in `[0, 1)`.
+    #[inline]
     pub fn unit(&mut self) -> f64 {
         self.0.random::<f64>()
     }
 
     /// True with probability `p`.
+    #[inline]
     pub fn chance(&mut self, p: f64) -> bool {
         self.unit() < p
     }
@@ -69,6 +75,7 @@ impl Rng {
 
     /// An index drawn with probability proportional to `weights[i]` (non-negative, finite).
     /// Returns `None` when every weight is zero.
+    #[inline]
     pub fn weighted(&mut self, weights: &[f64]) -> Option<usize> {
         let total: f64 = weights.iter().sum();
         if total.is_nan() || total <= 0.0 {

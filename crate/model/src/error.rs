@@ -130,7 +130,8 @@ impl Error {
         }
     }
 
-    pub(crate) fn json(err: &serde_json::Error) -> Self {
+    /// Text that is not JSON, with the line and column where reading stopped.
+    pub fn json(err: &serde_json::Error) -> Self {
         Error::Json {
             line: err.line(),
             column: err.column(),
@@ -215,7 +216,7 @@ fn nearest<'a>(name: &str, names: &[&'a str]) -> Option<&'a str> {
 
 /// The candidate closest to `word` by edit distance, if at most `limit` edits away; of equally
 /// close ones, the first by name.
-pub(crate) fn nearest_within<'a>(
+pub fn nearest_within<'a>(
     word: &str,
     candidates: impl IntoIterator<Item = &'a str>,
     limit: usize,

@@ -3,7 +3,7 @@
 
 use super::spec::Ground;
 use super::{Cubes, ARRIVED, HELD_LIT, HELD_USER, LEFT};
-use crate::models::Event;
+use kumiki_model::model::Event;
 
 impl Cubes {
     /// Equation 4 for a unit whose type and sorted neighbour types are `prof`, against target

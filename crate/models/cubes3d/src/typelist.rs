@@ -6,9 +6,9 @@ use std::collections::BTreeSet;
 use std::fmt;
 
 use super::types::{self, CODES, NAMES, TYPE_OF_MASK, VALENCE};
-use crate::error::{Error, Result};
-use crate::lattice::Cubic;
-use crate::shape::Grid3;
+use kumiki_model::error::{Error, Result};
+use kumiki_model::lattice::Cubic;
+use kumiki_model::shape::Grid3;
 
 /// The most type-lists one description may hold.
 pub const MAX_LISTS: usize = 4096;

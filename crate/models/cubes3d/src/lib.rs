@@ -19,14 +19,13 @@ use std::borrow::Cow;
 
 use serde_json::{Map, Value};
 
-use crate::error::Result;
-use crate::hash::StateHasher;
-use crate::limits::Limits;
-use crate::math;
-use crate::models::{
-    self, Action, Agent, Event, Layout, Metric, Model, ModelEntry, ModelSpec, Scene,
-};
-use crate::rng::Rng;
+use kumiki_model::entry::{self, ModelEntry, Query};
+use kumiki_model::error::Result;
+use kumiki_model::hash::StateHasher;
+use kumiki_model::limits::Limits;
+use kumiki_model::math;
+use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
+use kumiki_model::rng::Rng;
 
 mod actions;
 mod choose;
@@ -56,11 +55,25 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: |body| models::parse(body, ModelSpec::Cubes3d),
+    parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
-    schema: crate::schema::of::<Spec>,
+    schema: entry::schema_of::<Spec>,
     #[cfg(feature = "schema")]
-    disturbance: crate::schema::of::<actions::ActionSpec>,
+    disturbance: entry::schema_of::<actions::ActionSpec>,
+    queries: &[
+        Query {
+            name: "derive",
+            description: "The type-lists of a shape: {\"shape\": cubic layers} or {\"units\": [[x, y, z], ...]}",
+            run: query_derive,
+        },
+        Query {
+            name: "check",
+            description: "Checks type-lists ({\"type_lists\": text}) and returns them in normal form",
+            run: query_check,
+        },
+    ],
+    #[cfg(feature = "report")]
+    paper: &paper::PAPER,
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

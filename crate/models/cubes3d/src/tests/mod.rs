@@ -7,20 +7,21 @@ use super::motion::{Move, Structure, DIRS, PAD};
 use super::typelist::{self, TypeList};
 use super::types::{self, TYPE_OF_MASK};
 use super::*;
-use crate::presets;
-use crate::rng::Rng;
-use crate::run::Run;
-use crate::scenario::Scenario;
-use crate::shape;
+use kumiki_core::presets;
+use kumiki_core::run::Run;
+use kumiki_core::scenario::Scenario;
+use kumiki_model::rng::Rng;
+use kumiki_model::shape;
 
 impl Cubes {
-    /// The model of a test scenario, built the way a run builds it.
-    fn new(s: &Scenario) -> crate::Result<Cubes> {
-        let crate::models::ModelSpec::Cubes3d(spec) = &s.spec else {
-            panic!("not a cubes3d scenario");
-        };
+    /// The model of a test scenario, built the way a run builds it. Its keys are read again
+    /// into this crate's `Spec`: the core (a dev-dependency, for scenarios, presets and runs)
+    /// links its own build of this crate, whose `Spec` is another type to the tests.
+    fn new(s: &Scenario) -> Result<Cubes> {
+        assert_eq!(s.model(), ENTRY.name, "not a cubes3d scenario");
+        let spec: Spec = kumiki_model::error::from_value(Value::Object(s.body()))?;
         Ok(Cubes::from_checked(
-            crate::models::Spec::validate(spec, s.limits)?,
+            kumiki_model::model::Spec::validate(&spec, s.limits)?,
             s.seed,
         ))
     }

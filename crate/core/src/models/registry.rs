@@ -1,0 +1,12 @@
+//! The models Kumiki knows, in gallery order: the one list of models. A model is registered by
+//! its [`ModelEntry`] here; the scenario reader, the schemas, the metrics table, the helper calls,
+//! the reproduction report and the gallery's titles all find it through this list.
+
+use super::{amas, chobie, fracta, ModelEntry};
+
+pub const MODELS: &[ModelEntry] = &[
+    amas::ENTRY,
+    chobie::ENTRY,
+    kumiki_cubes3d::ENTRY,
+    fracta::ENTRY,
+];

@@ -1,0 +1,111 @@
+//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, the reader of
+//! its keys, their schemas, its helper calls and its paper), and the object-safe face of its
+//! description ([`AnySpec`]) that a scenario holds whatever the model.
+
+use std::any::Any;
+
+use serde_json::{Map, Value};
+
+use crate::error::Result;
+use crate::limits::Limits;
+use crate::model::{Action, MetricInfo, Model, Spec};
+
+/// A registered model.
+pub struct ModelEntry {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub default_max_steps: u64,
+    /// The version of the model's behaviour, written into every share link. Raise it by one when
+    /// a change makes the same scenario and seed run differently (when the golden hashes of its
+    /// presets change): links made before then still open, and the page says they were made with
+    /// an earlier Kumiki. Links that carry no version were made with version 1.
+    pub model_version: u32,
+    /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
+    pub metrics: &'static [MetricInfo],
+    /// Reads the model's keys of a scenario into its typed description: [`parse`] of its
+    /// [`Spec`].
+    pub parse: fn(Value) -> Result<Box<dyn AnySpec>>,
+    /// The JSON Schema of those keys ([`schema_of`] its [`Spec`]).
+    #[cfg(feature = "schema")]
+    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    /// The JSON Schema of one of its actions (a disturbance without its `at`).
+    #[cfg(feature = "schema")]
+    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    /// Its helper calls (none for a model without any).
+    pub queries: &'static [Query],
+    /// Its paper's claims for the reproduction report. Left out of builds without the `report`
+    /// feature (the page's wasm, which shows the report's published JSON), so the findings'
+    /// code is not linked there.
+    #[cfg(feature = "report")]
+    pub paper: &'static crate::report::Paper,
+}
+
+/// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
+/// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
+/// argument and the problem like scenario errors do.
+pub struct Query {
+    pub name: &'static str,
+    pub description: &'static str,
+    pub run: fn(&Value) -> Result<Value>,
+}
+
+/// A model's description whatever the model, as a scenario holds it: the object-safe face of
+/// [`Spec`], which every `Spec` has. Its methods are the ones every build uses: a vtable keeps
+/// each of them linked, so comparing and printing go through [`AnySpec::to_body`] instead of the
+/// spec's own `PartialEq` and `Debug`, which the page's wasm would otherwise carry unused.
+pub trait AnySpec: Send + Sync + 'static {
+    /// The keys written back with every default written out.
+    fn to_body(&self) -> Map<String, Value>;
+    /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
+    /// errors), without building the model.
+    fn validate(&self, limits: &Limits, actions: &mut dyn Iterator<Item = &Action>) -> Result<()>;
+    /// The model at step 0, built from this description (checked within `limits`) and `seed`.
+    fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>>;
+    fn clone_box(&self) -> Box<dyn AnySpec>;
+    fn as_any(&self) -> &dyn Any;
+}
+
+impl<S: Spec + Send + Sync + 'static> AnySpec for S {
+    fn to_body(&self) -> Map<String, Value> {
+        match serde_json::to_value(self) {
+            Ok(Value::Object(map)) => map,
+            _ => unreachable!("a model's description serialises to an object"),
+        }
+    }
+
+    fn validate(&self, limits: &Limits, actions: &mut dyn Iterator<Item = &Action>) -> Result<()> {
+        let checked = Spec::validate(self, limits)?;
+        for (i, action) in actions.enumerate() {
+            S::check_action(&checked, action)
+                .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
+        }
+        Ok(())
+    }
+
+    fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
+        Ok(S::build(Spec::validate(self, limits)?, seed))
+    }
+
+    fn clone_box(&self) -> Box<dyn AnySpec> {
+        Box::new(self.clone())
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+/// Reads a model's typed description from its keys, naming unknown and invalid fields: the
+/// `parse` of its [`ModelEntry`].
+pub fn parse<S: Spec + Send + Sync + 'static>(body: Value) -> Result<Box<dyn AnySpec>> {
+    crate::error::from_value::<S>(body).map(|s| Box::new(s) as Box<dyn AnySpec>)
+}
+
+/// The JSON Schema of `T` as a subschema of `generator`: the `schema` and `disturbance` of a
+/// [`ModelEntry`].
+#[cfg(feature = "schema")]
+pub fn schema_of<T: schemars::JsonSchema>(
+    generator: &mut schemars::SchemaGenerator,
+) -> schemars::Schema {
+    generator.subschema_for::<T>()
+}
