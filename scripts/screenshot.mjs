@@ -1,14 +1,16 @@
-// Regenerates docs/screenshot.png: the page in headless Chromium, a preset part-way through.
-// Usage: node scripts/screenshot.mjs [preset] [steps] [overlay]   (after npm run build)
-// The README's picture: node scripts/screenshot.mjs amas-L 120 potential
+// Regenerates the README's pictures: the page in headless Chromium, a preset or a lesson part-way
+// through. Usage: node scripts/screenshot.mjs [preset|lesson] [steps] [overlay] [file]
+// (after npm run build). The README's two pictures:
+//   node scripts/screenshot.mjs amas-L 120 potential
+//   node scripts/screenshot.mjs lesson-amas-compare 60 '' docs/compare.png
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 import { launch, serve } from '../tests/e2e/harness.mjs';
 
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
-const [preset = 'amas-L', steps = '120', overlay = ''] = process.argv.slice(2);
-const link = wasm.encode_link(wasm.preset_json(preset));
+const [preset = 'amas-L', steps = '120', overlay = '', file = 'docs/screenshot.png'] = process.argv.slice(2);
+const link = wasm.encode_link(preset.startsWith('lesson-') ? wasm.lesson_json(preset) : wasm.preset_json(preset));
 const server = await serve('/');
 const browser = await launch();
 const page = await (await browser.newContext({ viewport: { width: 1360, height: 820 }, deviceScaleFactor: 1 })).newPage();
@@ -30,7 +32,7 @@ await page.click('#play');
 await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) >= n, Number(steps), { timeout: 60000 });
 await page.click('#play');
 await page.waitForTimeout(400);
-await page.screenshot({ path: fileURLToPath(new URL('../docs/screenshot.png', import.meta.url)) });
+await page.screenshot({ path: fileURLToPath(new URL(`../${file}`, import.meta.url)) });
 await browser.close();
 await server.close();
-console.log('docs/screenshot.png written');
+console.log(`${file} written`);
