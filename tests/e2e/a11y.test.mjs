@@ -126,4 +126,21 @@ describe('accessibility audit (axe-core)', () => {
     assert.deepEqual(found, []);
     await context.close();
   });
+
+  test('the question a large scenario asks before it opens passes too', async () => {
+    const { page, context } = await openPage(s.browser, s.server.url);
+    const large = { ...JSON.parse(wasm.preset_json('amas-L')), name: 'amas-large', target: { rect: [2000, 1992] }, initial: { rect: [2000, 1900] } };
+    await page.evaluate(
+      (l) => {
+        location.hash = l;
+      },
+      wasm.encode_link(JSON.stringify(large)),
+    );
+    await page.waitForSelector('#large-ask[open]');
+    const found = await audit(page, 'large scenario dialog');
+    await page.click('#large-ask-keep');
+    await page.waitForSelector('#large-ask', { state: 'hidden' });
+    assert.deepEqual(found, []);
+    await context.close();
+  });
 });
