@@ -117,9 +117,24 @@ impl Exercise {
             .iter()
             .filter_map(|(path, want)| {
                 let got = lookup_path(doc, path).cloned().unwrap_or(Value::Null);
-                (got != *want).then(|| (path.clone(), want.clone(), got))
+                (!same(&got, want)).then(|| (path.clone(), want.clone(), got))
             })
             .collect()
+    }
+}
+
+/// Equal JSON values, numbers by their value: 10 and 10.0 are one number (the page's JavaScript
+/// writes a teacher's 10.0 as 10, and the core writes a float field back as 10.0).
+pub(crate) fn same(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => x == y || x.as_f64() == y.as_f64(),
+        (Value::Array(x), Value::Array(y)) => {
+            x.len() == y.len() && x.iter().zip(y).all(|(a, b)| same(a, b))
+        }
+        (Value::Object(x), Value::Object(y)) => {
+            x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| same(v, w)))
+        }
+        _ => a == b,
     }
 }
 
@@ -366,5 +381,20 @@ mod tests {
             err(json!({"title": "t", "goal": "completed", "hints": vec!["h"; 11]}))
                 .contains("at most 10")
         );
+    }
+
+    #[test]
+    fn a_locked_number_is_compared_by_value_as_the_page_writes_it() {
+        // The page's JavaScript reads a teacher's 200.0 as 200; the core writes the field as 200.0.
+        let doc =
+            exercise_doc(json!({"title": "t", "goal": "completed", "locked": {"robots": 5.0}}));
+        let s = crate::Scenario::from_value(doc).unwrap();
+        let e = s.exercise.clone().unwrap();
+        assert!(e.locked_changes(&s.to_value()).is_empty());
+        assert!(same(&json!({"a": [10, 0.5]}), &json!({"a": [10.0, 0.5]})));
+        assert!(!same(&json!([10]), &json!([10.5])));
+        assert!(!same(&json!({"a": 1}), &json!({"a": 1, "b": 2})));
+        let edited = s.with_override("robots", json!(6)).unwrap();
+        assert_eq!(e.locked_changes(&edited.to_value()).len(), 1);
     }
 }
