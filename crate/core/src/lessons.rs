@@ -98,6 +98,7 @@ mod tests {
             "lesson-cubes-cooling" => vec![("c", json!(10.0))],
             "lesson-chobie-forms" => vec![("method", json!("cautious"))],
             "lesson-chobie-bridge" => vec![("adaptation", json!(true))],
+            "lesson-chobie-survive" => vec![("adaptation", json!(true))],
             "lesson-chobie-leader" => vec![("leader", json!("temporary"))],
             other => {
                 panic!("lesson {other} has no solution in this test: add the edit that solves it")

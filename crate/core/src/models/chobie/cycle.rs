@@ -47,7 +47,7 @@ impl Chobie {
             Leader::Temporary => self.elect(&mut comm),
             Leader::Permanent => self.direct(&mut comm),
         };
-        let orders = self.orders(&leaders);
+        let (orders, step7) = self.orders(&leaders);
         if self.p.leader == Leader::Temporary && !orders.is_empty() {
             self.send_commands(&mut comm, &orders);
         }
@@ -67,6 +67,9 @@ impl Chobie {
                     self.totals.energy += moving.len() as u64;
                     if self.mode == Mode::Adaptation {
                         self.totals.adaptations += 1;
+                    }
+                    if step7 {
+                        self.totals.reinforcements += 1;
                     }
                     last.driven = moving.iter().map(|m| m.0).collect();
                     last.moved = true;
@@ -97,7 +100,8 @@ impl Chobie {
     /// resting on it would be left behind) drives its top neighbour's line with it. If all
     /// orders can be made together they are; otherwise an order that cannot be carried out on
     /// its own is dropped (its lines stay locked) and the rest must be feasible together.
-    fn orders(&self, leaders: &[Elected]) -> Vec<Order> {
+    /// The flag says whether a leader 1's order (step 7 of section 3.4) is among them.
+    fn orders(&self, leaders: &[Elected]) -> (Vec<Order>, bool) {
         let body = &self.body;
         let mut orders: Vec<(Kind, Order)> = Vec::new();
         for e in leaders {
@@ -139,7 +143,8 @@ impl Chobie {
                 orders.retain(|o| o.0 == Kind::Leader1);
             }
         }
-        orders.into_iter().map(|o| o.1).collect()
+        let step7 = orders.iter().any(|o| o.0 == Kind::Leader1);
+        (orders.into_iter().map(|o| o.1).collect(), step7)
     }
 
     /// The temporary-leader election with the selected method and priority sequence.

@@ -18,6 +18,7 @@ pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("overloads", "robots", "Robots whose stress is above the threshold now."),
     MetricInfo::new("overturning", "N·m", "Moment of the robots' weights and loads about the cliff edge; positive turns the structure over it (it tips when the base does not hold it)."),
     MetricInfo::new("peak_stress", "MPa", "The highest stress any robot carries now."),
+    MetricInfo::new("reinforcements", "cycles", "Transformation cycles in which a leader 1 moved (section 3.4, step 7): its column down under the overloaded place, its right neighbour's up where it can."),
     MetricInfo::new("refused", "cycles", "Cycles whose commands could not be carried out."),
     MetricInfo::new("resumed", "count", "Times the group went back from load adaptation to construction because its overload cleared."),
     MetricInfo::new("robots", "robots", "The number of robots in the group."),

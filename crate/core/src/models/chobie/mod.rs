@@ -87,6 +87,8 @@ pub struct Totals {
     pub refused: u64,
     /// Transformations made in load-adaptation mode.
     pub adaptations: u64,
+    /// Transformations in which a leader 1's command (section 3.4, step 7) moved.
+    pub reinforcements: u64,
 }
 
 /// What the last step did, for metrics and the page.

@@ -13,7 +13,7 @@ use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
 use crate::models::{
-    Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
+    Action, Agent, CellMark, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
 
 /// Cell codes.
@@ -50,9 +50,26 @@ impl Model for Chobie {
                 LegendEntry::new(code::TERRAIN, "terrain", "#8a7a63"),
                 LegendEntry::new(code::RESTING, "R: resting robot", "#bfccd6"),
                 LegendEntry::new(code::DRIVING, "D: driving robot", "#2b95d6"),
-                LegendEntry::new(code::OVERLOADED, "overloaded robot", "#db3737"),
+                // Marked in every view, the stress field included, and named with the figures.
+                LegendEntry::new(
+                    code::OVERLOADED,
+                    &format!(
+                        "overloaded (ringed): stress over the {} MPa threshold",
+                        self.p.mech.threshold / 1e6
+                    ),
+                    "#db3737",
+                )
+                .marked(CellMark::Ring),
                 LegendEntry::new(code::LOADED, "robot carrying a load", "#f2b824"),
-                LegendEntry::new(code::FAILED, "failed: broken or tipped", "#1c2127"),
+                LegendEntry::new(
+                    code::FAILED,
+                    &format!(
+                        "failed (crossed): broken, over {} MPa, or tipped over the edge",
+                        self.p.mech.strength / 1e6
+                    ),
+                    "#8e5cd9",
+                )
+                .marked(CellMark::Cross),
             ],
             agents: Kind::ALL
                 .iter()
@@ -148,6 +165,7 @@ impl Model for Chobie {
         f("overturning", Metric::Real(self.overturning()));
         f("peak_stress", Metric::Real(self.peak() / 1e6));
         f("refused", Metric::Count(t.refused));
+        f("reinforcements", Metric::Count(t.reinforcements));
         f("resumed", Metric::Count(self.resumed));
         f("robots", Metric::Count(self.body.len() as u64));
         f("slot_us", Metric::Real(self.slot_us()));

@@ -186,3 +186,45 @@ fn the_permanent_leader_sends_more_as_the_structure_grows() {
     assert_eq!((d3, d21, e21), (2.0, 2.0, 2.0));
     assert!(p21 > 3.0 * p3, "{p3} → {p21}");
 }
+
+#[test]
+fn in_form_b_the_only_transformation_is_the_whole_row_sliding_on_the_base() {
+    // Interpretation 7: the second algorithm drives the lone row along the base because no other
+    // move exists. Lifting or lowering any run of its robots leaves them touching the rest by an
+    // edge only, and part of the row cannot slide without parting face-on from the rest.
+    let preset = crate::presets::scenario("chobie-form-b").unwrap();
+    let m = Chobie::new(&preset).unwrap();
+    let b = &m.body;
+    let n = b.len() as u32;
+    let row: Vec<u32> = {
+        let mut r: Vec<u32> = (0..n).collect();
+        r.sort_by_key(|&i| b.pos[i as usize].0);
+        r
+    };
+    let mut feasible = Vec::new();
+    for from in 0..row.len() {
+        for to in from + 1..=row.len() {
+            let run = &row[from..to];
+            for dir in [RIGHT, UP, super::motion::LEFT, DOWN] {
+                let drives: Vec<Drive> = if dir == RIGHT || dir == super::motion::LEFT {
+                    vec![Drive {
+                        robots: run.to_vec(),
+                        dir,
+                    }]
+                } else {
+                    run.iter()
+                        .map(|&r| Drive {
+                            robots: vec![r],
+                            dir,
+                        })
+                        .collect()
+                };
+                if b.check(&drives).is_ok() {
+                    feasible.push((from, to, dir));
+                }
+            }
+        }
+    }
+    // (Left, the row would leave the world: it starts at its left edge.)
+    assert_eq!(feasible, vec![(0, row.len(), RIGHT)]);
+}

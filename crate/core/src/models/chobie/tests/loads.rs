@@ -202,3 +202,74 @@ fn a_robot_beyond_the_breaking_stress_breaks_the_structure() {
     assert!(m.peak() > m.p.mech.strength);
     assert_eq!(m.failure, Failure::Broken);
 }
+
+#[test]
+fn figure_13_reserve_a_reaches_the_overloaded_root_and_step_7_makes_it_thick() {
+    let preset = crate::presets::scenario("chobie-fig13").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    let a = m.body.robot_at(0, 1);
+    let mut overloaded_before = false;
+    let mut after_step7 = None;
+    while !m.completed() && m.steps < 40 {
+        overloaded_before |= m.totals.reinforcements == 0 && m.peak() > m.p.mech.threshold;
+        step_checked(&mut m);
+        if m.totals.reinforcements == 1 && after_step7.is_none() {
+            after_step7 = Some((m.peak(), m.body.pos[a as usize], m.steps));
+            // Robot A took B's place in the tier, and B is under it, against the cliff face.
+            let under = m.body.robot_at(m.edge + 1, 3);
+            assert_ne!(
+                under,
+                super::motion::NONE,
+                "a robot under the root, beside the cliff"
+            );
+            assert_eq!(
+                m.body.pos[a as usize],
+                (m.edge + 1, 2),
+                "robot A in the tier"
+            );
+        }
+    }
+    assert!(overloaded_before, "the load overloads the root first");
+    let (peak, _, at) = after_step7.expect("step 7 fired");
+    assert!(
+        peak < m.p.mech.threshold,
+        "the overload is gone after step 7"
+    );
+    assert_eq!(m.totals.reinforcements, 1, "step 7 fires once");
+    // A crossed the top from the left end (leader 2, step 8) before step 7.
+    assert!(m.totals.adaptations >= 2 && at > 2);
+    assert_eq!(m.resumed, 1, "construction resumes");
+    assert!(m.completed(), "the bridge reaches its span of 10");
+}
+
+#[test]
+fn the_reinforcement_count_is_the_cycles_in_which_a_leader_1_moved() {
+    // Figure 14: B's column goes down once, under robot A.
+    let preset = crate::presets::scenario("chobie-load5").unwrap();
+    let mut m = Chobie::new(&preset).unwrap();
+    let act = json!({"kind": "load", "cells": [19], "force": 300.0});
+    m.apply(act.as_object().unwrap()).unwrap();
+    let mut counted = 0;
+    for _ in 0..20 {
+        let before = m.totals.reinforcements;
+        step_checked(&mut m);
+        if m.totals.reinforcements > before {
+            counted += 1;
+            assert!(m.last.moved && m.last.leaders.iter().any(|e| e.kind == Kind::Leader1));
+        }
+    }
+    assert_eq!((m.totals.reinforcements, counted), (1, 1));
+    let bridge = crate::presets::scenario("chobie-bridge").unwrap();
+    let mut adaptive = Chobie::new(&bridge).unwrap();
+    let mut plain = Chobie::new(&bridge).unwrap();
+    plain.p.adaptation = false;
+    for _ in 0..40 {
+        step_checked(&mut adaptive);
+        step_checked(&mut plain);
+    }
+    assert!(adaptive.totals.reinforcements >= 1);
+    assert_eq!(
+        plain.totals.reinforcements, 0,
+        "no step 7 without adaptation"
+    );
+}
