@@ -1,6 +1,8 @@
 // chobie in the page: every preset opens; the crawl moves the structure; a load with a typed
 // magnitude is placed by clicking a robot, recorded for the link, and shows in the stress field
-// and the overload count; the exaggerated deflected shape; the last step's signals, slot by slot.
+// and the overload count; the exaggerated deflected shape; the last step's signals, slot by slot;
+// the view follows the growing bridge until the user zooms; overloaded and failed robots are
+// marked over the stress field; the lesson whose bridge stands only with load adaptation.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
@@ -18,6 +20,7 @@ const PRESETS = [
   'chobie-form-c',
   'chobie-form-d',
   'chobie-bridge',
+  'chobie-fig13',
   'chobie-load5',
 ];
 
@@ -52,6 +55,49 @@ const annotations = (page) =>
     }
     return { inked, sum };
   });
+
+/** Pixels of the view's outermost columns, left and right, that are not the background: what is cut off at the sides. */
+const cutOff = (page) =>
+  page.$eval('#view', async (c) => {
+    const bmp = await createImageBitmap(c);
+    const t = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+    t.drawImage(bmp, 0, 0);
+    const { width, height, data } = t.getImageData(0, 0, bmp.width, bmp.height);
+    let count = 0;
+    for (let y = 0; y < height; y++) {
+      for (const x of [0, 1, width - 2, width - 1]) {
+        const i = 4 * (y * width + x);
+        // The background is rgb(27, 35, 44).
+        if (Math.abs(data[i] - 27) + Math.abs(data[i + 1] - 35) + Math.abs(data[i + 2] - 44) > 12) count++;
+      }
+    }
+    return count;
+  });
+
+/** Annotation pixels of one colour (within a small tolerance): a mark drawn in a legend colour. */
+const inked = (page, rgb) =>
+  page.$eval(
+    '#annotations',
+    async (c, [r, g, b]) => {
+      const bmp = await createImageBitmap(c);
+      const t = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+      t.drawImage(bmp, 0, 0);
+      const { data } = t.getImageData(0, 0, bmp.width, bmp.height);
+      let count = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (data[i + 3] > 200 && Math.abs(data[i] - r) + Math.abs(data[i + 1] - g) + Math.abs(data[i + 2] - b) < 24) count++;
+      }
+      return count;
+    },
+    rgb,
+  );
+
+async function fullSpeed(page) {
+  await page.$eval('#speed', (el) => {
+    el.value = el.max;
+    el.dispatchEvent(new Event('input'));
+  });
+}
 
 /** Moves the pointer over the view until the inspector names cell `cell`; returns that point. */
 async function findCell(page, cell) {
@@ -128,7 +174,7 @@ test('a load with a typed magnitude is put on the clicked robot, recorded for th
   // Overloaded robots are drawn in their own colour, from the model's cell codes.
   const codes = await page.evaluate(() => {
     const legend = [...document.querySelectorAll('#legend span')].map((x) => x.textContent);
-    return legend.includes('overloaded robot');
+    return legend.includes('overloaded (ringed): stress over the 4 MPa threshold');
   });
   assert.ok(codes);
 
@@ -217,6 +263,79 @@ test('stepping slowly shows each slot of the last step: its meaning and its send
   await page.click('#step');
   await waitForSteps(page, 2);
   await page.waitForFunction(() => document.querySelector('#slot-label').textContent.startsWith('Slot 1 of'));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('the view follows the growing bridge until the user zooms, and Fit brings it back', async () => {
+  // Without adaptation the lower tier slides on to a span of 19, far past the terrain the view first framed.
+  const { page, context, problems } = await open('chobie-bridge', (doc) => ({ ...doc, adaptation: false, max_steps: 24 }));
+  await settle(page);
+  assert.equal(await cutOff(page), 0, 'the first frame shows the whole structure');
+  await fullSpeed(page);
+  await page.click('#play');
+  await waitForSteps(page, 24);
+  await settle(page);
+  assert.ok((await metric(page, 'span')) >= 15);
+  assert.equal(await cutOff(page), 0, 'the bridge is in view at its full span');
+  // A zoom is the user's: the view stays zoomed, even as the run is reset and grows again.
+  await page.click('#zoom-in');
+  await page.click('#zoom-in');
+  await settle(page);
+  assert.ok((await cutOff(page)) > 0, 'zoomed in, the structure reaches past the sides');
+  await page.click('#reset');
+  await page.waitForFunction(() => document.querySelector('#step-count').textContent === '0');
+  await page.click('#play');
+  await waitForSteps(page, 24);
+  await settle(page);
+  assert.ok((await cutOff(page)) > 0, 'the view was left where the user put it');
+  await page.click('#zoom-fit');
+  await settle(page);
+  await settle(page);
+  assert.equal(await cutOff(page), 0, 'Fit frames the bridge again');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a bridge that stands only with load adaptation: the plain one breaks, its overloaded robots ringed and its broken ones crossed over the stress field', async () => {
+  const lesson = JSON.parse(wasm.lesson_json('lesson-chobie-survive'));
+  const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(lesson))}`);
+  await page.waitForSelector('#exercise:not([hidden])');
+  assert.equal(await page.textContent('#exercise-title'), 'A bridge that stands only with load adaptation');
+  const legend = await page.$$eval('#legend span', (spans) => spans.map((x) => [x.textContent, x.querySelector('i')?.dataset.mark ?? '']));
+  assert.ok(
+    legend.some(([name, mark]) => name === 'overloaded (ringed): stress over the 4 MPa threshold' && mark === 'ring'),
+    JSON.stringify(legend),
+  );
+  assert.ok(
+    legend.some(([name, mark]) => name === 'failed (crossed): broken, over 40 MPa, or tipped over the edge' && mark === 'cross'),
+    JSON.stringify(legend),
+  );
+  await page.selectOption('#overlay', 'stress');
+  await fullSpeed(page);
+  await page.click('#play');
+  await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Not met yet'), null, { timeout: 30000 });
+  assert.equal(await metric(page, 'failed'), 1, 'broken');
+  assert.ok((await metric(page, 'max_peak_stress')) >= 40, 'past the strength of ABS (shown to three figures)');
+  await settle(page);
+  // Over the heat map, the rings of the overloaded robots (#db3737) and the crosses of the broken ones (#8e5cd9).
+  assert.ok((await inked(page, [0xdb, 0x37, 0x37])) > 0, 'overloaded robots ringed');
+  assert.ok((await inked(page, [0x8e, 0x5c, 0xd9])) > 0, 'broken robots crossed');
+  await page.selectOption('#overlay', '');
+  await settle(page);
+  await settle(page);
+  assert.ok((await inked(page, [0x8e, 0x5c, 0xd9])) > 0, 'and in the default view');
+
+  await page.click('#tab-scenario');
+  await page.check('#param-adaptation');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).adaptation === true);
+  await page.click('#tab-run');
+  await page.click('#play');
+  await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Goal met'), null, { timeout: 30000 });
+  assert.equal(await metric(page, 'failed'), 0, 'standing');
+  assert.ok((await metric(page, 'resumed')) >= 1);
+  await settle(page);
+  assert.equal(await inked(page, [0x8e, 0x5c, 0xd9]), 0, 'nothing crossed');
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -317,7 +317,12 @@ export function setupRunPanel(page: Page): RunPanel {
       i.style.background = color;
       return i;
     };
-    for (const c of layout.cells) legend.append(el('span', {}, swatch(c.color), c.name));
+    for (const c of layout.cells) {
+      // A code the view marks in every view (a ring or a cross over its cells) shows the mark on its swatch.
+      const i = swatch(c.color);
+      if (c.mark) i.dataset.mark = c.mark;
+      legend.append(el('span', {}, i, c.name));
+    }
     for (const a of layout.agents) legend.append(el('span', {}, swatch(a.color, true), a.name));
     for (const e of layout.events) {
       const i = swatch('transparent', true);

@@ -394,7 +394,7 @@ fn ts_type(node: &Value, indent: &str) -> String {
     if let Some(values) = node["enum"].as_array() {
         return union(values.iter().map(Value::to_string));
     }
-    if let Some(options) = node["oneOf"].as_array() {
+    if let Some(options) = node["oneOf"].as_array().or(node["anyOf"].as_array()) {
         return union(options.iter().map(|o| ts_type(o, indent)));
     }
     let of_type = |t: &str| match t {

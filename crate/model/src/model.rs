@@ -84,6 +84,18 @@ pub struct LegendEntry {
     pub name: String,
     /// CSS colour.
     pub color: String,
+    /// A cell code's shape drawn over its cells in every view, a field's heat map included, so
+    /// that a state (an overload, a failure) stays visible whatever the view shows.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mark: Option<CellMark>,
+}
+
+/// The shape that marks the cells of a code: a ring or a cross, in the code's colour.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum CellMark {
+    Ring,
+    Cross,
 }
 
 impl LegendEntry {
@@ -92,6 +104,15 @@ impl LegendEntry {
             code,
             name: name.into(),
             color: color.into(),
+            mark: None,
+        }
+    }
+
+    /// The same entry, its cells marked with `mark` in every view.
+    pub fn marked(self, mark: CellMark) -> Self {
+        LegendEntry {
+            mark: Some(mark),
+            ..self
         }
     }
 }

@@ -1,5 +1,5 @@
 //! The annotation layer, drawn with Canvas 2D over either renderer: bonds, gradient arrows, cell
-//! labels, the last step's events, displaced units, signals, highlighted cells, the hovered cell
+//! labels, the cells whose code the legend marks, the last step's events, displaced units, signals, highlighted cells, the hovered cell
 //! and the keyboard cursor; in 3-D, the values of reachable cells. Only what is visible and large
 //! enough to read is drawn.
 
@@ -7,6 +7,7 @@ use crate::camera::{Camera2D, Camera3D};
 use crate::geometry::{hex_corners, HEX_RADIUS};
 use crate::scene::{CursorKind, SceneRef};
 use kumiki_core::lattice::LatticeKind;
+use kumiki_core::models::CellMark;
 use std::f64::consts::TAU;
 use web_sys::OffscreenCanvasRenderingContext2d as Ctx;
 
@@ -126,6 +127,55 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
             let _ = ctx.stroke_text(name, sx, sy);
             let _ = ctx.fill_text(name, sx, sy);
         });
+    }
+
+    // Cell codes the legend marks (an overload, a failure): a ring or a cross in the code's
+    // colour over a light halo, so it shows on the cell's own colour and on any heat map.
+    let marked: Vec<_> = scene
+        .layout
+        .cells
+        .iter()
+        .filter_map(|c| c.mark.map(|m| (c.code, m, c.color.as_str())))
+        .collect();
+    if !marked.is_empty() && count <= MAX_VISIBLE {
+        let mut at: Vec<Vec<[f64; 2]>> = vec![Vec::new(); marked.len()];
+        in_view(&mut |i| {
+            let code = frame.cells[i];
+            if let Some(k) = marked.iter().position(|m| m.0 == code && code != 0) {
+                at[k].push(centre(i));
+            }
+        });
+        let r = (cam.scale * 0.3).max(2.5);
+        let width = (cam.scale * 0.08).max(1.5);
+        for ((_, mark, colour), points) in marked.iter().zip(&at) {
+            if points.is_empty() {
+                continue;
+            }
+            drew = true;
+            ctx.begin_path();
+            for &[x, y] in points {
+                match mark {
+                    CellMark::Ring => {
+                        ctx.move_to(x + r, y);
+                        let _ = ctx.arc(x, y, r, 0.0, TAU);
+                    }
+                    CellMark::Cross => {
+                        ctx.move_to(x - r, y - r);
+                        ctx.line_to(x + r, y + r);
+                        ctx.move_to(x + r, y - r);
+                        ctx.line_to(x - r, y + r);
+                    }
+                }
+            }
+            ctx.set_line_cap("round");
+            ctx.set_stroke_style_str("rgba(255,255,255,0.92)");
+            ctx.set_line_width(width + 2.5);
+            ctx.stroke();
+            ctx.set_stroke_style_str(colour);
+            ctx.set_line_width(width);
+            ctx.stroke();
+            ctx.set_line_cap("butt");
+        }
     }
 
     if !frame.events.is_empty() {

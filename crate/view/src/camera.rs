@@ -74,6 +74,13 @@ impl Camera2D {
         Bounds { x0, y0, x1, y1 }
     }
 
+    /// Whether the world rectangle `b` is wholly in view.
+    pub fn shows(&self, b: Bounds) -> bool {
+        let v = self.visible();
+        let eps = 1e-9;
+        b.x0 >= v.x0 - eps && b.y0 >= v.y0 - eps && b.x1 <= v.x1 + eps && b.y1 <= v.y1 + eps
+    }
+
     /// The cell under a screen point.
     pub fn pick(&self, grid: &Grid, sx: f64, sy: f64) -> Option<usize> {
         let [wx, wy] = self.to_world(sx, sy);
@@ -515,6 +522,28 @@ mod tests {
         assert!((before[0] - after[0]).abs() < 1e-9 && (before[1] - after[1]).abs() < 1e-9);
         let [sx, sy] = c.to_screen(after[0], after[1]);
         assert!((sx - 120.0).abs() < 1e-9 && (sy - 80.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_fitted_camera_shows_its_box_and_not_a_box_grown_past_it() {
+        let mut c = Camera2D {
+            width: 400.0,
+            height: 300.0,
+            ..Camera2D::default()
+        };
+        let b = Bounds {
+            x0: -2.5,
+            y0: -2.5,
+            x1: 22.5,
+            y1: 6.5,
+        };
+        c.fit(b);
+        assert!(c.shows(b));
+        // One more cell on the right, as a bridge grows: out of view until framed again.
+        let grown = Bounds { x1: 23.5, ..b };
+        assert!(!c.shows(grown));
+        c.fit(grown);
+        assert!(c.shows(grown) && c.shows(b));
     }
 
     #[test]

@@ -68,6 +68,9 @@ pub struct View {
     dpr: f64,
     /// A new lattice is framed on its first frame.
     fit_pending: bool,
+    /// The planar camera was last placed by a fit (not by the user's pan or zoom): it frames
+    /// the content again whenever the content leaves the view (a bridge growing, a resize).
+    follow: bool,
     /// Bumped whenever what is drawn changes (the frame, the marks): renderers upload again only
     /// then, so a camera move redraws without copying anything.
     revision: u64,
@@ -134,6 +137,7 @@ impl View {
             css: [1.0, 1.0],
             dpr: 1.0,
             fit_pending: false,
+            follow: true,
             revision: 0,
             clock: None,
             timing: Timing::default(),
@@ -280,15 +284,37 @@ impl View {
         self.fit_pending = true;
     }
 
-    /// The camera was placed by its owner: no framing is pending any more.
+    /// The camera was placed by its owner: no framing is pending any more, and the view no
+    /// longer follows the content.
     pub fn cancel_fit(&mut self) {
         self.fit_pending = false;
+        self.follow = false;
+    }
+
+    /// The user panned or zoomed: the view stays where they put it until the next fit.
+    pub fn hold(&mut self) {
+        self.follow = false;
+    }
+
+    /// While the view follows the content, frames it again at the next draw if any of `cells`
+    /// (planar) is out of view, so a structure that grows stays in sight. A 3-D camera stays.
+    pub fn keep_in_view(&mut self, cells: &[u8]) {
+        let Camera::Planar(c) = &self.camera else {
+            return;
+        };
+        if !self.follow || self.fit_pending || cells.len() != self.grid.len() {
+            return;
+        }
+        if self.grid.content_bounds(cells).is_some_and(|b| !c.shows(b)) {
+            self.fit_pending = true;
+        }
     }
 
     /// Frames what is on the lattice with a margin (in 3-D with the ghost and the lamp), or the
     /// whole lattice when it is empty.
     pub fn fit(&mut self, frame: &Frame) {
         self.fit_pending = false;
+        self.follow = true;
         let grid = self.grid;
         match &mut self.camera {
             Camera::Orbit(c) => {

@@ -99,14 +99,17 @@ impl Viewer {
     /// A drag by (dx, dy) CSS pixels: an orbit drag turns a 3-D view; otherwise it pans.
     pub fn drag(&mut self, dx: f64, dy: f64, orbit: bool) {
         self.view.camera_mut().drag(dx, dy, orbit);
+        self.view.hold();
     }
 
     /// Zooms by `factor` about a screen point.
     pub fn zoom(&mut self, factor: f64, sx: f64, sy: f64) {
         self.view.camera_mut().zoom(factor, sx, sy);
+        self.view.hold();
     }
 
-    /// Frames what is on the lattice at the next draw.
+    /// Frames what is on the lattice at the next draw, and follows it from then on (until a
+    /// drag or a zoom).
     pub fn fit(&mut self) {
         self.view.request_fit();
     }
@@ -159,8 +162,9 @@ impl Viewer {
         }
     }
 
-    /// Draws the simulation as it stands, with `overlay` as a heat map when given. Returns what a
-    /// 3-D frame drew (null for a planar one).
+    /// Draws the simulation as it stands, with `overlay` as a heat map when given; a view that
+    /// follows the content frames it again when it grew out of sight. Returns what a 3-D frame
+    /// drew (null for a planar one).
     pub fn draw_sim(&mut self, sim: &Sim, overlay: Option<String>) -> Result<JsValue, JsValue> {
         let model = sim.run().model();
         let cells = model.cells();
@@ -181,6 +185,7 @@ impl Viewer {
             }
         });
         self.overlay_range = overlay.map(|o| (o.min, o.max));
+        self.view.keep_in_view(&cells);
         let frame = Frame {
             cells: &cells,
             agents: &agents,
