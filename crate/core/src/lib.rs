@@ -21,6 +21,8 @@
 pub use kumiki_model::{error, hash, lattice, limits, math, rng, shape};
 
 pub mod compare;
+#[cfg(test)]
+pub mod counts;
 pub mod exercise;
 pub mod experiment;
 pub mod export;

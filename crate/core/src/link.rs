@@ -91,6 +91,8 @@ pub fn open_within(link: &str, limits: &'static Limits) -> Result<Opened> {
 /// model that made it. Nothing is built: the page reads a large scenario's size this way and
 /// leaves its validation to the simulation worker, which opens it with [`Scenario::from_value`].
 pub fn unpack(link: &str) -> Result<(Value, u32)> {
+    #[cfg(test)]
+    crate::counts::parse();
     let mut doc: Value = serde_json::from_str(&decode_json(link)?).map_err(|e| Error::json(&e))?;
     let made_with = match doc
         .as_object_mut()

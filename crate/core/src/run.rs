@@ -14,9 +14,10 @@ pub struct Run {
 }
 
 impl Run {
-    /// Builds the scenario's model, once.
-    pub fn new(scenario: Scenario) -> Result<Run> {
-        let model = scenario.build()?;
+    /// Builds the scenario's model, once, from what reading the scenario learnt: nothing is
+    /// checked again.
+    pub fn new(mut scenario: Scenario) -> Result<Run> {
+        let model = scenario.build_once()?;
         Ok(Run {
             scenario,
             model,
@@ -133,21 +134,22 @@ impl Run {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::models::builds;
-    use crate::{link, presets};
+    use crate::{counts, link, presets};
 
-    /// Reading a scenario validates its model's description and actions without building the
-    /// model; the run builds it, once.
+    /// Reading a scenario checks its model's description and actions without building the
+    /// model; the run builds it, once, and checks nothing again.
     #[test]
     fn one_load_from_a_link_builds_its_model_once() {
         for name in presets::names() {
             let link = link::encode(&presets::scenario(name).unwrap());
-            let before = builds::so_far();
+            let before = counts::builds();
             let scenario = link::open(&link).unwrap().scenario;
             let edited = scenario.with_override("seed", 7.into()).unwrap();
-            assert_eq!(builds::so_far(), before, "{name}: reading built the model");
+            assert_eq!(counts::builds(), before, "{name}: reading built the model");
+            let checks = counts::checks();
             let run = Run::new(edited).unwrap();
-            assert_eq!(builds::so_far(), before + 1, "{name}");
+            assert_eq!(counts::builds(), before + 1, "{name}");
+            assert_eq!(counts::checks(), checks, "{name}: the run checked it again");
             assert_eq!(run.steps(), 0);
         }
     }

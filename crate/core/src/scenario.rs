@@ -14,9 +14,11 @@
 //! ```
 //!
 //! The envelope keys are read here; the rest is read once into the model's typed description
-//! ([`ModelSpec`]), which rejects unknown keys and invalid values by name and is validated, with
-//! every scheduled action, without building the model. A disturbance is applied after `at` steps
-//! have run; its other keys are the model's action.
+//! ([`ModelSpec`]), which rejects unknown keys and invalid values by name and is checked, with
+//! every scheduled action, without building the model. What the check learns (the shapes laid on
+//! the lattice) stays with the description, so the run builds its model without checking it
+//! again. A disturbance is applied after `at` steps have run; its other keys are the model's
+//! action.
 
 use serde_json::{Map, Value};
 
@@ -74,6 +76,8 @@ impl Scenario {
 
     /// [`Scenario::from_json`] within `limits`.
     pub fn from_json_within(text: &str, limits: &'static Limits) -> Result<Scenario> {
+        #[cfg(test)]
+        crate::counts::parse();
         let value: Value = serde_json::from_str(text).map_err(|e| Error::json(&e))?;
         Scenario::from_value_within(value, limits)
     }
@@ -102,8 +106,7 @@ impl Scenario {
         if max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
-        let spec = ModelSpec::read(&model, map)?;
-        spec.validate(limits, disturbances.iter().map(|d| &d.action))?;
+        let spec = ModelSpec::read(&model, map, limits, disturbances.iter().map(|d| &d.action))?;
         let mut scenario = Scenario {
             name,
             description,
@@ -144,9 +147,16 @@ impl Scenario {
         self.spec.to_body()
     }
 
-    /// Builds the model at step 0: the one place a scenario becomes a model.
+    /// Builds the model at step 0 from what reading the scenario learnt, checking nothing again:
+    /// the one place a scenario becomes a model.
     pub fn build(&self) -> Result<Box<dyn Model>> {
         self.spec.build(self.seed, self.limits)
+    }
+
+    /// [`Scenario::build`] for a run that keeps this scenario: what reading it learnt goes into
+    /// the model (see [`ModelSpec::build_once`]).
+    pub(crate) fn build_once(&mut self) -> Result<Box<dyn Model>> {
+        self.spec.build_once(self.seed, self.limits)
     }
 
     /// The whole scenario as one JSON object, keys sorted.

@@ -1,14 +1,21 @@
 //! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, the reader of
 //! its keys, their schemas, its helper calls and its paper), and the object-safe face of its
-//! description ([`AnySpec`]) that a scenario holds whatever the model.
+//! description ([`AnySpec`]) that a scenario holds whatever the model, with what checking it
+//! learnt ([`Learnt`]).
 
 use std::any::Any;
+use std::sync::Arc;
 
 use serde_json::{Map, Value};
 
 use crate::error::Result;
 use crate::limits::Limits;
 use crate::model::{Action, MetricInfo, Model, Spec};
+
+/// Reads and checks a model's keys within the limits, with the scenario's scheduled actions; see
+/// [`parse`].
+pub type Parse =
+    fn(Value, &Limits, &mut dyn Iterator<Item = &Action>) -> Result<(Arc<dyn AnySpec>, Learnt)>;
 
 /// A registered model.
 pub struct ModelEntry {
@@ -22,9 +29,9 @@ pub struct ModelEntry {
     pub model_version: u32,
     /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
     pub metrics: &'static [MetricInfo],
-    /// Reads the model's keys of a scenario into its typed description: [`parse`] of its
-    /// [`Spec`].
-    pub parse: fn(Value) -> Result<Box<dyn AnySpec>>,
+    /// Reads the model's keys of a scenario into its typed description and checks it: [`parse`]
+    /// of its [`Spec`].
+    pub parse: Parse,
     /// The JSON Schema of those keys ([`schema_of`] its [`Spec`]).
     #[cfg(feature = "schema")]
     pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
@@ -56,14 +63,20 @@ pub struct Query {
 pub trait AnySpec: Send + Sync + 'static {
     /// The keys written back with every default written out.
     fn to_body(&self) -> Map<String, Value>;
-    /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
-    /// errors), without building the model.
-    fn validate(&self, limits: &Limits, actions: &mut dyn Iterator<Item = &Action>) -> Result<()>;
-    /// The model at step 0, built from this description (checked within `limits`) and `seed`.
-    fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>>;
-    fn clone_box(&self) -> Box<dyn AnySpec>;
+    /// The model at step 0, built from what [`parse`] learnt checking this description: taken
+    /// when `learnt` is its only copy, else copied. It checks nothing again.
+    fn build(&self, learnt: Learnt, seed: u64) -> Box<dyn Model>;
+    /// Checks the description again within `limits` and builds the model at step 0: for a
+    /// description whose check's results went into a run already.
+    fn check_and_build(&self, limits: &Limits, seed: u64) -> Result<Box<dyn Model>>;
     fn as_any(&self) -> &dyn Any;
 }
+
+/// What checking a description learnt ([`Spec::Checked`]: the lattice size, the shapes read from
+/// their text), kept beside the description so that building the model does not check it again.
+/// Only [`parse`] makes one, by checking; copies share it.
+#[derive(Clone)]
+pub struct Learnt(Arc<dyn Any + Send + Sync>);
 
 impl<S: Spec + Send + Sync + 'static> AnySpec for S {
     fn to_body(&self) -> Map<String, Value> {
@@ -73,21 +86,16 @@ impl<S: Spec + Send + Sync + 'static> AnySpec for S {
         }
     }
 
-    fn validate(&self, limits: &Limits, actions: &mut dyn Iterator<Item = &Action>) -> Result<()> {
-        let checked = Spec::validate(self, limits)?;
-        for (i, action) in actions.enumerate() {
-            S::check_action(&checked, action)
-                .map_err(|e| e.within(&format!("disturbances[{i}]")))?;
-        }
-        Ok(())
+    fn build(&self, learnt: Learnt, seed: u64) -> Box<dyn Model> {
+        let Ok(checked) = learnt.0.downcast::<S::Checked>() else {
+            unreachable!("a description's check results are its own model's")
+        };
+        let checked = Arc::try_unwrap(checked).unwrap_or_else(|shared| (*shared).clone());
+        S::build(checked, seed)
     }
 
-    fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
+    fn check_and_build(&self, limits: &Limits, seed: u64) -> Result<Box<dyn Model>> {
         Ok(S::build(Spec::validate(self, limits)?, seed))
-    }
-
-    fn clone_box(&self) -> Box<dyn AnySpec> {
-        Box::new(self.clone())
     }
 
     fn as_any(&self) -> &dyn Any {
@@ -95,10 +103,20 @@ impl<S: Spec + Send + Sync + 'static> AnySpec for S {
     }
 }
 
-/// Reads a model's typed description from its keys, naming unknown and invalid fields: the
-/// `parse` of its [`ModelEntry`].
-pub fn parse<S: Spec + Send + Sync + 'static>(body: Value) -> Result<Box<dyn AnySpec>> {
-    crate::error::from_value::<S>(body).map(|s| Box::new(s) as Box<dyn AnySpec>)
+/// Reads a model's typed description from its keys, naming unknown and invalid fields, and checks
+/// it within `limits` with each scheduled action (`disturbances[i]` in errors), without building
+/// the model: the `parse` of its [`ModelEntry`]. Gives the description and what the check learnt.
+pub fn parse<S: Spec + Send + Sync + 'static>(
+    body: Value,
+    limits: &Limits,
+    actions: &mut dyn Iterator<Item = &Action>,
+) -> Result<(Arc<dyn AnySpec>, Learnt)> {
+    let spec: S = crate::error::from_value(body)?;
+    let checked = spec.validate(limits)?;
+    for (i, action) in actions.enumerate() {
+        S::check_action(&checked, action).map_err(|e| e.within(&format!("disturbances[{i}]")))?;
+    }
+    Ok((Arc::new(spec), Learnt(Arc::new(checked))))
 }
 
 /// The JSON Schema of `T` as a subschema of `generator`: the `schema` and `disturbance` of a

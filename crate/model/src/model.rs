@@ -257,8 +257,9 @@ pub trait Model: Snapshot {
 /// by [`Spec::validate`] before any model state is allocated.
 pub trait Spec: Serialize + DeserializeOwned + Clone + std::fmt::Debug + PartialEq {
     /// What validation learns that building and action checks need (the lattice size, the
-    /// shapes read from their text), so neither reads or checks the description again.
-    type Checked;
+    /// shapes read from their text), so neither reads or checks the description again. A
+    /// scenario keeps it beside the description, and its copies share it.
+    type Checked: Clone + Send + Sync + 'static;
     /// Checks every field, naming the field and the rule, without building the model; every
     /// size is computed from the text and held to `limits` before anything of that size is
     /// allocated.

@@ -5,6 +5,8 @@
 //! ([`ModelEntry`]) are the contract crate's, [`kumiki_model::model`] and [`kumiki_model::entry`],
 //! re-exported here.
 
+use std::sync::Arc;
+
 use serde_json::{Map, Value};
 
 pub use kumiki_model::entry::*;
@@ -97,20 +99,16 @@ pub fn entry(name: &str) -> Result<&'static ModelEntry> {
     })
 }
 
-/// The description of one of the models: the part of a scenario beyond its envelope, read by
-/// the model's [`ModelEntry::parse`].
+/// The description of one of the models: the part of a scenario beyond its envelope, read and
+/// checked by the model's [`ModelEntry::parse`]. Only reading makes one, so a `ModelSpec` is
+/// checked; it keeps what the check learnt until a run takes it, so building its model checks
+/// nothing again. Copies share both.
+#[derive(Clone)]
 pub struct ModelSpec {
     model: &'static str,
-    spec: Box<dyn AnySpec>,
-}
-
-impl Clone for ModelSpec {
-    fn clone(&self) -> Self {
-        ModelSpec {
-            model: self.model,
-            spec: self.spec.clone_box(),
-        }
-    }
+    spec: Arc<dyn AnySpec>,
+    /// What the check learnt; `None` once a run has taken it.
+    learnt: Option<Learnt>,
 }
 
 /// Two descriptions are equal when they are the same model's with the same keys, every default
@@ -131,12 +129,23 @@ impl std::fmt::Debug for ModelSpec {
 }
 
 impl ModelSpec {
-    /// Reads the keys of model `model`, naming unknown and invalid fields.
-    pub fn read(model: &str, body: Map<String, Value>) -> Result<ModelSpec> {
+    /// Reads the keys of model `model` and checks them within `limits`, with each scheduled
+    /// action (`disturbances[i]` in errors), without building the model; errors name unknown and
+    /// invalid fields.
+    pub fn read<'a>(
+        model: &str,
+        body: Map<String, Value>,
+        limits: &Limits,
+        actions: impl IntoIterator<Item = &'a Action>,
+    ) -> Result<ModelSpec> {
         let entry = entry(model)?;
+        #[cfg(test)]
+        crate::counts::check();
+        let (spec, learnt) = (entry.parse)(Value::Object(body), limits, &mut actions.into_iter())?;
         Ok(ModelSpec {
             model: entry.name,
-            spec: (entry.parse)(Value::Object(body))?,
+            spec,
+            learnt: Some(learnt),
         })
     }
 
@@ -156,40 +165,29 @@ impl ModelSpec {
         self.spec.to_body()
     }
 
-    /// Checks the description within `limits` and each scheduled action (`disturbances[i]` in
-    /// errors), without building the model.
-    pub fn validate<'a>(
-        &self,
-        limits: &Limits,
-        actions: impl IntoIterator<Item = &'a Action>,
-    ) -> Result<()> {
-        self.spec.validate(limits, &mut actions.into_iter())
-    }
-
-    /// The model at step 0, built from this description (checked within `limits`) and `seed`.
+    /// The model at step 0, built from this description and `seed` with what its check learnt,
+    /// checking nothing again. A copy of a description whose check's results a run has taken
+    /// ([`ModelSpec::build_once`]) is checked again within `limits`.
     pub fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
-        let model = self.spec.build(seed, limits)?;
+        let model = match &self.learnt {
+            Some(learnt) => self.spec.build(learnt.clone(), seed),
+            None => {
+                #[cfg(test)]
+                crate::counts::check();
+                self.spec.check_and_build(limits, seed)?
+            }
+        };
         #[cfg(test)]
-        builds::count();
+        crate::counts::build();
         Ok(model)
     }
-}
 
-/// Models built on this thread, so a test can show that loading a scenario builds it once.
-#[cfg(test)]
-pub mod builds {
-    use std::cell::Cell;
-
-    thread_local! {
-        static BUILDS: Cell<u64> = const { Cell::new(0) };
-    }
-
-    pub(super) fn count() {
-        BUILDS.with(|b| b.set(b.get() + 1));
-    }
-
-    /// Models built on this thread so far.
-    pub fn so_far() -> u64 {
-        BUILDS.with(Cell::get)
+    /// [`ModelSpec::build`] for a run, which keeps the description and has no more use for what
+    /// the check learnt: taken rather than copied when nothing else shares it, so a run holds no
+    /// second copy of a large scenario's shapes.
+    pub fn build_once(&mut self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
+        let model = self.build(seed, limits);
+        self.learnt = None;
+        model
     }
 }

@@ -122,6 +122,7 @@ pub struct TargetSpec {
 
 /// A description whose every key is checked: the shapes and type-lists read from their text,
 /// and the space they need.
+#[derive(Clone)]
 pub struct Checked {
     pub(super) spec: Spec,
     pub(super) movable_types: u16,

@@ -161,6 +161,7 @@ pub struct Params {
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
 /// structure as rows of booleans over the lattice (supply rows excluded).
+#[derive(Clone)]
 pub struct Plan {
     pub w: u32,
     /// Rows above the supply.

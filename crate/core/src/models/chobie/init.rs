@@ -21,6 +21,7 @@ pub const PRIORITY: [Kind; 4] = [
 ];
 
 /// A description whose every key is checked, with its world read from the text.
+#[derive(Clone)]
 pub struct Checked {
     spec: Spec,
     world: World,

@@ -6,6 +6,7 @@ use crate::limits::Limits;
 
 /// A description whose every key is checked: its parameters, its goal, and the start shape's
 /// units placed on a lattice of `w × h` cells, in reading order.
+#[derive(Clone)]
 pub struct Checked {
     p: Params,
     goal: Goal,
