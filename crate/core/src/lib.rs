@@ -21,6 +21,7 @@
 pub use kumiki_model::{error, hash, lattice, limits, math, rng, shape};
 
 pub mod compare;
+pub mod draft;
 #[cfg(test)]
 pub mod counts;
 pub mod exercise;

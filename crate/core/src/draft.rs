@@ -1,0 +1,453 @@
+//! The scenario the page shows and edits, held read between edits ([`Draft`]).
+//!
+//! The page keeps one draft. Opening a text (a preset, a link, the JSON editor, undo) reads and
+//! checks it once; an edit applies its changes to the scenario held and checks the result once,
+//! without reading any text; either answers with a [`Proposal`]: the text to run, or why it was
+//! refused (its own problem, or an exercise's lock). A scenario too large to
+//! check on the page's thread (its shapes span more than [`Draft::new`]'s cells, counted from the
+//! text) is held as its document and checked by the worker that runs it, which gives back its
+//! text ([`Draft::ran`]).
+
+use schemars::JsonSchema;
+use serde::Serialize;
+use serde_json::Value;
+
+use crate::error::{Error, Result};
+use crate::exercise::Goal;
+use crate::scenario::set_path;
+use crate::{grading, json, link, shape, Scenario};
+
+/// What an edit or an opening would make of the scenario in view.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, JsonSchema)]
+pub struct Proposal {
+    /// The scenario to run, as indented JSON: canonical, every default written out, when it was
+    /// checked here; as written when it is too large to check here. Empty when refused.
+    pub text: String,
+    /// Why it was refused, briefly (under 200 characters): the scenario's own problem, naming the
+    /// field and the rule, or an exercise's lock. `None` when it may run.
+    pub problem: Option<String>,
+    /// The whole of the scenario's own problem, when it says more than `problem`.
+    pub in_full: Option<String>,
+    /// The cells of its largest shape when it is too large to check here (the worker checks it as
+    /// it opens it; it becomes the scenario in view once the worker ran it); 0 when checked here.
+    pub large_cells: f64,
+}
+
+/// A scenario's comparison (its `compare` section), as the page opens it: the second run's
+/// scenario and the two runs' names in words.
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
+pub struct Comparison {
+    /// The second run's scenario, indented JSON: this one with the one setting changed.
+    pub second: String,
+    /// The first run's name and the second's.
+    pub labels: [String; 2],
+}
+
+/// The scenario in view.
+#[derive(Clone, Debug)]
+enum Held {
+    /// Read and checked here.
+    Checked(Box<Scenario>),
+    /// A scenario a run reported (the worker's canonical text of one too large to check here, a
+    /// click recorded into it), read when next needed: its worker checked it.
+    Ran(String),
+}
+
+/// The scenario in view, held between edits.
+#[derive(Clone, Debug)]
+pub struct Draft {
+    /// Scenarios whose shapes span more cells than this are not checked here.
+    check_up_to: u64,
+    /// `None` before the first scenario opens.
+    current: Option<Held>,
+}
+
+impl Draft {
+    /// A draft with nothing in view, which checks scenarios whose shapes span up to `check_up_to`
+    /// cells and leaves larger ones to the worker.
+    pub fn new(check_up_to: u64) -> Draft {
+        Draft {
+            check_up_to,
+            current: None,
+        }
+    }
+
+    /// Opens scenario JSON text in place of the one in view: read once and, unless too large,
+    /// checked once. `keep_locks`: an edit of the scenario in view (the JSON editor's), which an
+    /// exercise's locks hold back; an opening (a link, the gallery, undo) is not held back.
+    pub fn open(&mut self, text: &str, keep_locks: bool) -> Proposal {
+        let doc = match json::parse(text) {
+            Ok(doc) => doc,
+            Err(e) => return refused(Error::json(&e)),
+        };
+        let current = match self.current.is_some() && keep_locks {
+            true => match self.document() {
+                Ok(current) => Some(current),
+                Err(e) => return refused(e),
+            },
+            false => None,
+        };
+        self.propose(doc, current, keep_locks)
+    }
+
+    /// Changes dotted paths of the scenario in view (`stages.0.target`), all at once: the result
+    /// is checked once, as a whole, and held to the exercise's locks.
+    pub fn edit(&mut self, changes: &[(String, Value)]) -> Proposal {
+        let current = match self.document() {
+            Ok(doc) => doc,
+            Err(e) => return refused(e),
+        };
+        let mut doc = current.clone();
+        for (path, value) in changes {
+            if let Err(e) = set_path(&mut doc, path, value.clone()) {
+                return refused(e);
+            }
+        }
+        self.propose(doc, Some(current), true)
+    }
+
+    /// The run in view runs `text`, the scenario its worker checked and wrote back: after opening
+    /// one too large to check here, or with a click recorded. Nothing is read until it is next
+    /// needed.
+    pub fn ran(&mut self, text: String) {
+        self.current = Some(Held::Ran(text));
+    }
+
+    /// The share-link payload of the scenario in view, or of it named `name` (a student's
+    /// hand-in).
+    pub fn link(&self, name: Option<&str>) -> Result<String> {
+        let doc = match (self.checked(), name) {
+            (Some(scenario), None) => return Ok(link::encode(scenario)),
+            (Some(scenario), Some(name)) => {
+                return Ok(link::encode(&scenario.with_override("name", name.into())?))
+            }
+            (None, None) => self.document()?,
+            (None, Some(name)) => {
+                let mut doc = self.document()?;
+                set_path(&mut doc, "name", name.into())?;
+                doc
+            }
+        };
+        Ok(link::pack(doc))
+    }
+
+    /// The scenario in view's comparison, or `None` when it compares nothing. Its `compare`
+    /// section was checked with the scenario, so nothing is checked again here: the second run's
+    /// worker checks the second scenario as it opens it. A scenario too large to check here is not
+    /// run twice (the second run would double the memory the page asked about): an error says so.
+    pub fn comparison(&self) -> Result<Option<Comparison>> {
+        let doc = self.document()?;
+        let Some(section) = doc.get("compare").cloned() else {
+            return Ok(None);
+        };
+        if self.checked().is_none() && shape::estimate_cells(&doc) > self.check_up_to {
+            return Err(Error::field(
+                "compare",
+                "this scenario is too large to run twice side by side; only its own run is shown",
+            ));
+        }
+        let compare = crate::compare::Compare::from_value(section, &doc)?;
+        let (first, second_label) = compare.labels(&doc);
+        let mut second = doc;
+        if let Value::Object(map) = &mut second {
+            map.remove("compare");
+            map.remove("exercise");
+        }
+        set_path(&mut second, &compare.path, compare.value)?;
+        Ok(Some(Comparison {
+            second: json::pretty(&second).map_err(|e| Error::json(&e))?,
+            labels: [first, second_label],
+        }))
+    }
+
+    /// What is wrong with an exercise goal written for the scenario in view, whose model reports
+    /// `metrics`; `None` when it reads well.
+    pub fn goal_problem(&self, goal: &str, metrics: &[String]) -> Option<String> {
+        match Goal::parse(goal) {
+            Err(e) => Some(e.to_string()),
+            Ok(goal) => {
+                let doc = self.document().unwrap_or(Value::Null);
+                grading::unknown_name(&goal, metrics, &doc)
+            }
+        }
+    }
+
+    /// The scenario in view as checked here, if it was.
+    fn checked(&self) -> Option<&Scenario> {
+        match &self.current {
+            Some(Held::Checked(scenario)) => Some(scenario),
+            _ => None,
+        }
+    }
+
+    /// The scenario in view as a JSON document.
+    fn document(&self) -> Result<Value> {
+        match &self.current {
+            None => Err(Error::field("", "no scenario is open")),
+            Some(Held::Checked(scenario)) => Ok(scenario.to_value()),
+            Some(Held::Ran(text)) => json::parse(text).map_err(|e| Error::json(&e)),
+        }
+    }
+
+    /// Reads and checks `doc` (unless too large) and holds it to the locks of the exercise in
+    /// `current` when `keep_locks`. Checked here, it becomes the scenario in view; too large, it
+    /// does once its worker ran it ([`Draft::ran`]).
+    fn propose(&mut self, doc: Value, current: Option<Value>, keep_locks: bool) -> Proposal {
+        let cells = shape::estimate_cells(&doc);
+        let checked = match cells > self.check_up_to {
+            true => None,
+            false => match Scenario::from_value(doc.clone()) {
+                Ok(scenario) => Some(scenario),
+                Err(e) => return refused(e),
+            },
+        };
+        let next = checked.as_ref().map_or(doc, Scenario::to_value);
+        if let Some(problem) = current
+            .as_ref()
+            .filter(|_| keep_locks)
+            .and_then(|current| grading::locked_problem(current, &next))
+        {
+            return Proposal {
+                problem: Some(problem),
+                ..Proposal::default()
+            };
+        }
+        let (text, large_cells) = match checked {
+            Some(scenario) => {
+                let text = scenario.to_json_pretty();
+                self.current = Some(Held::Checked(Box::new(scenario)));
+                (text, 0)
+            }
+            None => match json::pretty(&next) {
+                Ok(text) => (text, cells),
+                Err(e) => return refused(Error::json(&e)),
+            },
+        };
+        Proposal {
+            text,
+            problem: None,
+            in_full: None,
+            large_cells: large_cells as f64,
+        }
+    }
+}
+
+/// A proposal refused for the scenario's own problem: brief, and whole when that says more.
+fn refused(e: Error) -> Proposal {
+    let problem = e.to_string();
+    let whole = format!("{e:#}");
+    Proposal {
+        in_full: (whole != problem).then_some(whole),
+        problem: Some(problem),
+        ..Proposal::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use serde_json::json;
+
+    use super::*;
+    use crate::{counts, lessons, presets, Run};
+
+    const PAGE: u64 = 1 << 18;
+
+    fn opened(name: &str) -> Draft {
+        let mut draft = Draft::new(PAGE);
+        let text = presets::scenario(name)
+            .or_else(|_| lessons::scenario(name))
+            .unwrap()
+            .to_json_pretty();
+        assert_eq!(draft.open(&text, false).problem, None);
+        draft
+    }
+
+    fn edit(draft: &mut Draft, path: &str, value: Value) -> Proposal {
+        draft.edit(&[(path.to_string(), value)])
+    }
+
+    /// One edit of the page's form reads no scenario text and checks the result once; the worker
+    /// that runs it reads its text once and checks it once, and its run checks nothing again.
+    /// (The string relay this replaced read the scenario's text 9 times and checked it 4 times
+    /// on the page's thread, and 1 and 2 times in the worker.)
+    #[test]
+    fn an_edit_reads_no_text_and_checks_once() {
+        for name in presets::names() {
+            let mut draft = opened(name);
+            let scenario = presets::scenario(name).unwrap();
+            let (parses, checks, builds) = (counts::parses(), counts::checks(), counts::builds());
+            let proposal = edit(&mut draft, "seed", json!(7));
+            assert_eq!(proposal.problem, None, "{name}");
+            assert_eq!(counts::parses() - parses, 0, "{name}: the edit read text");
+            assert_eq!(counts::checks() - checks, 1, "{name}: checks per edit");
+            assert_eq!(counts::builds(), builds, "{name}: the edit built the model");
+            let expected = scenario.with_override("seed", json!(7)).unwrap();
+            assert_eq!(proposal.text, expected.to_json_pretty(), "{name}");
+            // The worker: one read, one check, one build.
+            let (parses, checks) = (counts::parses(), counts::checks());
+            let run = Run::new(Scenario::from_json(&proposal.text).unwrap()).unwrap();
+            assert_eq!(counts::parses() - parses, 1, "{name}");
+            assert_eq!(counts::checks() - checks, 1, "{name}");
+            assert_eq!(counts::builds() - builds, 1, "{name}");
+            assert_eq!(run.scenario().seed, 7);
+        }
+    }
+
+    /// A refused edit says why, by field, and leaves the scenario in view as it was.
+    #[test]
+    fn a_refused_edit_keeps_the_scenario_in_view() {
+        let mut draft = opened("amas-L");
+        let refused = edit(&mut draft, "robots", json!(0));
+        assert_eq!(
+            refused.problem.as_deref(),
+            Some("robots: at least one robot is needed")
+        );
+        assert!(refused.text.is_empty());
+        let unknown = edit(&mut draft, "robot", json!(3));
+        assert!(unknown.problem.unwrap().starts_with("robot: "));
+        let next = edit(&mut draft, "robots", json!(3));
+        assert_eq!(next.problem, None);
+        let doc: Value = serde_json::from_str(&next.text).unwrap();
+        assert_eq!((doc["robots"].clone(), doc.get("robot")), (json!(3), None));
+        // Several changes at once are checked together: each alone would be refused.
+        let both = draft.edit(&[
+            ("robots".into(), json!(30)),
+            ("supply_rows".into(), json!(3)),
+        ]);
+        assert_eq!(both.problem, None);
+    }
+
+    /// An exercise's locked fields keep the teacher's values through edits (the JSON editor's
+    /// included); opening another scenario is not an edit.
+    #[test]
+    fn locked_fields_refuse_edits_but_not_openings() {
+        let mut draft = opened("lesson-amas-robots");
+        let free = edit(&mut draft, "robots", json!(4));
+        assert_eq!(free.problem, None);
+        let locked = edit(&mut draft, "collision", json!("relay"));
+        assert!(
+            locked
+                .problem
+                .unwrap()
+                .starts_with("locked by the exercise"),
+            "a locked field changed"
+        );
+        assert_eq!(locked.in_full, None);
+        let mut doc: Value = serde_json::from_str(&free.text).unwrap();
+        doc["collision"] = json!("relay");
+        let text = doc.to_string();
+        assert!(draft.open(&text, true).problem.is_some());
+        assert_eq!(draft.open(&text, false).problem, None);
+    }
+
+    /// A scenario too large to check here is held as written for the worker, and becomes the one
+    /// in view once its worker ran it; its edits are not checked here either.
+    #[test]
+    fn a_large_scenario_is_left_to_the_worker() {
+        let mut draft = opened("amas-L");
+        let mut large = presets::scenario("amas-L").unwrap().to_value();
+        large["target"] = json!({"rect": [1024, 1024]});
+        let checks = counts::checks();
+        let proposal = draft.open(&large.to_string(), false);
+        assert_eq!((proposal.problem, proposal.large_cells), (None, 1048576.0));
+        assert_eq!(counts::checks(), checks, "checked on the page's thread");
+        // Until the worker ran it, the scenario in view is the one before.
+        let before = edit(&mut draft, "seed", json!(3));
+        assert_eq!(
+            serde_json::from_str::<Value>(&before.text).unwrap()["target"],
+            presets::scenario("amas-L").unwrap().to_value()["target"]
+        );
+        let ran = Scenario::from_json(&proposal.text)
+            .unwrap()
+            .to_json_pretty();
+        draft.ran(ran);
+        let checks = counts::checks();
+        let edited = edit(&mut draft, "seed", json!(5));
+        assert_eq!((edited.problem, edited.large_cells), (None, 1048576.0));
+        assert_eq!(counts::checks(), checks);
+        assert_eq!(
+            serde_json::from_str::<Value>(&edited.text).unwrap()["seed"],
+            json!(5)
+        );
+    }
+
+    /// A comparison's second scenario is the one the core derives, made without checking again;
+    /// a scenario too large to check here is not run twice.
+    #[test]
+    fn a_comparison_is_derived_without_checking_again() {
+        let draft = opened("lesson-amas-compare");
+        let scenario = lessons::scenario("lesson-amas-compare").unwrap();
+        let checks = counts::checks();
+        let pair = draft.comparison().unwrap().unwrap();
+        assert_eq!(counts::checks(), checks);
+        let second = Scenario::from_json(&pair.second).unwrap();
+        assert_eq!(second, scenario.compared().unwrap().unwrap());
+        assert_eq!(
+            pair.labels,
+            ["collision relay".to_string(), "tokens only".to_string()]
+        );
+        assert_eq!(opened("amas-L").comparison().unwrap(), None);
+        let mut large = Draft::new(100);
+        let text = scenario.to_json_pretty();
+        assert!(large.open(&text, false).large_cells > 0.0);
+        large.ran(text);
+        assert!(large
+            .comparison()
+            .unwrap_err()
+            .to_string()
+            .contains("too large"));
+    }
+
+    /// The link of the scenario in view is the core's link of it, named as a hand-in when asked.
+    #[test]
+    fn links_are_made_from_the_scenario_held() {
+        let draft = opened("amas-L");
+        let scenario = presets::scenario("amas-L").unwrap();
+        assert_eq!(draft.link(None).unwrap(), link::encode(&scenario));
+        let handin = link::open(&draft.link(Some("Ada")).unwrap())
+            .unwrap()
+            .scenario;
+        assert_eq!(handin.name, "Ada");
+        assert_eq!(
+            handin.with_override("name", json!("amas-L")).unwrap(),
+            scenario
+        );
+        assert!(draft.link(Some(&"n".repeat(101))).is_err());
+        assert!(Draft::new(PAGE).link(None).is_err());
+    }
+
+    /// Text that is no scenario is refused briefly, with the whole message when it says more.
+    #[test]
+    fn problems_are_brief_with_the_whole_message_beside() {
+        let mut draft = Draft::new(PAGE);
+        let broken = draft.open("{\"model\": ", false);
+        assert!(broken.problem.is_some() && broken.text.is_empty());
+        let mut doc = presets::scenario("amas-L").unwrap().to_value();
+        doc["robots"] = json!("many");
+        let refused = draft.open(&doc.to_string(), false);
+        let (problem, whole) = (refused.problem.unwrap(), refused.in_full);
+        assert!(problem.starts_with("robots: "), "{problem}");
+        assert!(problem.len() < 200);
+        if let Some(whole) = whole {
+            assert!(whole.len() > problem.len());
+        }
+    }
+
+    /// A teacher's goal is checked against the scenario in view and its model's metrics.
+    #[test]
+    fn goals_are_checked_against_the_scenario_held() {
+        let draft = opened("amas-L");
+        let metrics = ["steps".to_string(), "collisions".to_string()];
+        assert_eq!(
+            draft.goal_problem("completed and scenario.robots <= 6", &metrics),
+            None
+        );
+        let unknown = draft
+            .goal_problem("metrics.colisions < 3", &metrics)
+            .unwrap();
+        assert!(unknown.contains("collisions"), "{unknown}");
+        let field = draft.goal_problem("scenario.robot <= 6", &metrics).unwrap();
+        assert!(field.contains("robot"), "{field}");
+        assert!(draft.goal_problem("completed and", &metrics).is_some());
+    }
+}
