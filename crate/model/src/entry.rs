@@ -95,6 +95,7 @@ impl<S: Spec + Send + Sync + 'static> AnySpec for S {
     }
 
     fn check_and_build(&self, limits: &Limits, seed: u64) -> Result<Box<dyn Model>> {
+        crate::bounds::check(self, limits)?;
         Ok(S::build(Spec::validate(self, limits)?, seed))
     }
 
@@ -112,6 +113,7 @@ pub fn parse<S: Spec + Send + Sync + 'static>(
     actions: &mut dyn Iterator<Item = &Action>,
 ) -> Result<(Arc<dyn AnySpec>, Learnt)> {
     let spec: S = crate::error::from_value(body)?;
+    crate::bounds::check(&spec, limits)?;
     let checked = spec.validate(limits)?;
     for (i, action) in actions.enumerate() {
         S::check_action(&checked, action).map_err(|e| e.within(&format!("disturbances[{i}]")))?;

@@ -5,6 +5,8 @@
 //!   ([`Spec`](model::Spec)), what a renderer reads ([`Layout`](model::Layout),
 //!   [`Scene`](model::Scene), ...), metrics and actions; [`entry`]: the
 //!   [`ModelEntry`](entry::ModelEntry) that registers a model, with its helper calls and paper;
+//! - [`bounds`]: the range of each number a description may take, stated once for its check and
+//!   its schema;
 //! - [`lattice`] and [`shape`]: square, hex and cubic lattices, and the text shapes scenarios
 //!   carry; [`limits`]: every size a scenario may ask for;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
@@ -12,6 +14,7 @@
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
+pub mod bounds;
 pub mod entry;
 pub mod error;
 pub mod hash;

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 use super::motion::PAD;
 use super::typelist::{self, TypeList};
 use super::{actions, types, Cubes};
+use kumiki_model::bounds::{self, Bound, Bounded};
 use kumiki_model::error::{Error, Result};
 use kumiki_model::limits::Limits;
 use kumiki_model::model::{self, Action, Model};
@@ -43,13 +44,12 @@ pub enum Ground {
 
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
-#[schemars(rename = "Cubes3dSpec")]
+#[schemars(rename = "Cubes3dSpec", transform = bounds::in_schema::<Spec>)]
 pub struct Spec {
     /// The initial configuration: cubic-lattice text layers from the ground up, at least two
     /// units, connected face to face.
     pub(super) shape: String,
     /// The targets, the first one worked toward first (section 6 switches between them).
-    #[schemars(length(min = 1, max = Limits::PAGE.cubes3d.targets))]
     pub(super) targets: Vec<TargetSpec>,
     /// The choice rule of step 4.
     #[serde(default = "default_selection")]
@@ -68,15 +68,12 @@ pub struct Spec {
     pub(super) movable: Vec<String>,
     /// Units moving per step (footnote 2).
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = 1024))]
     pub(super) movers: u32,
     /// Least Manhattan distance between the movers of one step.
     #[serde(default = "default_mover_distance")]
-    #[schemars(range(min = 1, max = 1000))]
     pub(super) mover_distance: u32,
     /// Free cells around the shapes.
     #[serde(default = "default_margin")]
-    #[schemars(range(max = 200))]
     pub(super) margin: u32,
     /// A ground plane under the lowest layer.
     #[serde(default)]
@@ -86,7 +83,6 @@ pub struct Spec {
     pub(super) light: Option<String>,
     /// t_stable of section 6: steps a unit stays under its target's threshold before it switches.
     #[serde(default = "default_stable_steps")]
-    #[schemars(range(min = 1))]
     pub(super) stable_steps: u32,
     /// With a single target, end the run when it is complete (every unit's D_0 is 0). False
     /// lets the units go on choosing after that, as the figures' fixed-length runs of the
@@ -102,6 +98,7 @@ pub struct Spec {
 
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(transform = bounds::in_schema::<TargetSpec>)]
 pub struct TargetSpec {
     #[serde(default)]
     pub(super) name: String,
@@ -113,11 +110,36 @@ pub struct TargetSpec {
     pub(super) shape: Option<String>,
     /// D_th: a unit under it for `stable_steps` switches to the next target (0 never does).
     #[serde(default)]
-    #[schemars(range(min = 0.0))]
     pub(super) threshold: f64,
     /// Hold a unit that sees the light when it switches to this target (needs `light`).
     #[serde(default)]
     pub(super) hold_lit: bool,
+}
+
+impl Bounded for Spec {
+    const BOUNDS: &'static [Bound<Spec>] = &[
+        Bound::length("targets", |s: &Spec| Some(s.targets.len() as f64))
+            .at_least(1.0)
+            .up_to(|l| l.cubes3d.targets as f64),
+        Bound::new("w", |s: &Spec| Some(s.w)).above(0.0),
+        Bound::new("a", |s: &Spec| Some(s.a)).above(0.0),
+        Bound::new("c", |s: &Spec| Some(s.c)).above(0.0),
+        Bound::new("movers", |s: &Spec| Some(s.movers.into()))
+            .at_least(1.0)
+            .at_most(1024.0),
+        Bound::new("mover_distance", |s: &Spec| Some(s.mover_distance.into()))
+            .at_least(1.0)
+            .at_most(1000.0),
+        Bound::new("margin", |s: &Spec| Some(s.margin.into()))
+            .at_most(200.0)
+            .unit("cells"),
+        Bound::new("stable_steps", |s: &Spec| Some(s.stable_steps.into())).at_least(1.0),
+    ];
+}
+
+impl Bounded for TargetSpec {
+    const BOUNDS: &'static [Bound<TargetSpec>] =
+        &[Bound::new("threshold", |t: &TargetSpec| Some(t.threshold)).at_least(0.0)];
 }
 
 /// A description whose every key is checked: the shapes and type-lists read from their text,
@@ -141,21 +163,6 @@ impl Spec {
     /// Checks the parameters that need no shape: answers the movable types as a bit set and the
     /// light direction.
     fn check(&self) -> Result<(u16, Option<usize>)> {
-        check_positive("w", self.w)?;
-        check_positive("a", self.a)?;
-        check_positive("c", self.c)?;
-        if self.stable_steps == 0 {
-            return Err(Error::field("stable_steps", "must be at least 1"));
-        }
-        if self.movers == 0 || self.movers > 1024 {
-            return Err(Error::field("movers", "must be from 1 to 1024"));
-        }
-        if self.mover_distance == 0 || self.mover_distance > 1000 {
-            return Err(Error::field("mover_distance", "must be from 1 to 1000"));
-        }
-        if self.margin > 200 {
-            return Err(Error::field("margin", "must be at most 200 cells"));
-        }
         let mut movable_types = 0u16;
         for (i, name) in self.movable.iter().enumerate() {
             let code = types::code(name).ok_or_else(|| {
@@ -188,19 +195,7 @@ impl model::Spec for Spec {
                 format!("{} units exceed the limit of {}", shape.count(), max.units),
             ));
         }
-        if self.targets.is_empty() {
-            return Err(Error::field("targets", "give at least one target"));
-        }
-        if self.targets.len() > max.targets {
-            return Err(Error::field(
-                "targets",
-                format!(
-                    "{} targets are too many; at most {}",
-                    self.targets.len(),
-                    max.targets
-                ),
-            ));
-        }
+        bounds::check_each("targets", &self.targets, limits)?;
         let mut target_shapes: Vec<Option<Grid3>> = Vec::new();
         let mut target_lists: Vec<Vec<TypeList>> = Vec::new();
         for (i, t) in self.targets.iter().enumerate() {
@@ -223,12 +218,6 @@ impl model::Spec for Spec {
                         ))
                     }
                 };
-            if !(t.threshold.is_finite() && t.threshold >= 0.0) {
-                return Err(Error::field(
-                    format!("{path}.threshold"),
-                    "must be a finite number of at least 0",
-                ));
-            }
             if t.hold_lit && light.is_none() {
                 return Err(Error::field(
                     format!("{path}.hold_lit"),
@@ -354,17 +343,6 @@ pub(super) fn light_dir(text: &str) -> Result<usize> {
             ),
         )
     })
-}
-
-pub(super) fn check_positive(name: &str, v: f64) -> Result<()> {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        Err(Error::field(
-            name,
-            format!("must be a positive finite number, not {v}"),
-        ))
-    }
 }
 
 fn parse_shape(text: &str, path: &str, limits: &Limits) -> Result<Grid3> {

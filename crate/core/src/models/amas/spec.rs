@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::{actions, Amas};
+use crate::bounds::{self, Bound, Bounded};
 use crate::error::{Error, Result};
 use crate::lattice::{Lattice, Square};
 use crate::limits::{AmasLimits, Limits};
@@ -52,20 +53,18 @@ pub enum Communication {
 
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-#[schemars(rename = "AmasSpec")]
+#[schemars(rename = "AmasSpec", transform = bounds::in_schema::<Spec>)]
 pub struct Spec {
     /// The final target shape: shape text (rows, top first) or `{"rect": [w, h]}`.
     pub target: Value,
     /// Intermediate targets built, in order, before `target` (section 6.4).
     #[serde(default)]
-    #[schemars(length(max = Limits::PAGE.amas.stages))]
     pub stages: Vec<Value>,
     /// Modules already built when the run starts.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub initial: Option<Value>,
     /// Assembler robots, placed at random on distinct supply modules; at most one per supply
     /// module.
-    #[schemars(range(min = 1))]
     pub robots: u32,
     /// The gradient field the modules compute (equation 1 or 2).
     #[serde(default)]
@@ -75,46 +74,94 @@ pub struct Spec {
     pub collision: Collision,
     /// Field updates (sweeps) per step, U.
     #[serde(default = "default_updates")]
-    #[schemars(range(min = 1, max = MAX_UPDATES))]
     pub field_updates_per_step: u32,
     /// D of equation 1; above 0.25 the update is unstable.
     #[serde(default = "default_diffusion")]
-    #[schemars(range(max = 0.25))]
     pub diffusion: f64,
     /// Footnote 3: below this spread of the neighbours' values there is no effective gradient.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gradient_threshold: Option<f64>,
     /// Rows of the module supply under the shape.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = Limits::PAGE.amas.supply_rows))]
     pub supply_rows: u32,
     /// Steps a move to a neighbouring module takes.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub move_duration: u32,
     /// Steps picking a module from the supply takes.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub pick_duration: u32,
     /// Steps placing a module takes.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub place_duration: u32,
     /// Steps handing a module over to another robot takes (collision `relay`).
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub relay_duration: u32,
     /// Steps a robot that lost a collision waits.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = MAX_DURATION))]
     pub collision_penalty: u32,
     /// Appendix B: steps a turn (left, right or 180°) takes before a move in a new direction.
     #[serde(default)]
-    #[schemars(range(max = MAX_DURATION))]
     pub turn_duration: u32,
     /// How far robots hear each other when they settle moves (appendix A.1).
     #[serde(default)]
     pub communication: Communication,
+}
+
+impl Bounded for Spec {
+    const BOUNDS: &'static [Bound<Spec>] = &[
+        Bound::length("stages", |s: &Spec| Some(s.stages.len() as f64))
+            .up_to(|l| l.amas.stages as f64),
+        Bound::new("robots", |s: &Spec| Some(s.robots.into()))
+            .at_least(1.0)
+            .says("at least one robot is needed"),
+        Bound::new("field_updates_per_step", |s: &Spec| {
+            Some(s.field_updates_per_step.into())
+        })
+        .at_least(1.0)
+        .at_most(MAX_UPDATES as f64),
+        Bound::new("diffusion", |s: &Spec| Some(s.diffusion))
+            .above(0.0)
+            .at_most(0.25)
+            .why("larger values make equation 1 unstable"),
+        Bound::new("gradient_threshold", |s: &Spec| s.gradient_threshold).at_least(0.0),
+        Bound::new("supply_rows", |s: &Spec| Some(s.supply_rows.into()))
+            .at_least(1.0)
+            .up_to(|l| l.amas.supply_rows.into()),
+        steps(
+            Bound::new("move_duration", |s: &Spec| Some(s.move_duration.into())),
+            1.0,
+        ),
+        steps(
+            Bound::new("pick_duration", |s: &Spec| Some(s.pick_duration.into())),
+            1.0,
+        ),
+        steps(
+            Bound::new("place_duration", |s: &Spec| Some(s.place_duration.into())),
+            1.0,
+        ),
+        steps(
+            Bound::new("relay_duration", |s: &Spec| Some(s.relay_duration.into())),
+            1.0,
+        ),
+        steps(
+            Bound::new("collision_penalty", |s: &Spec| {
+                Some(s.collision_penalty.into())
+            }),
+            1.0,
+        ),
+        steps(
+            Bound::new("turn_duration", |s: &Spec| Some(s.turn_duration.into())),
+            0.0,
+        ),
+    ];
+}
+
+/// A duration from `least` to [`MAX_DURATION`] steps.
+const fn steps(bound: Bound<Spec>, least: f64) -> Bound<Spec> {
+    bound
+        .at_least(least)
+        .at_most(MAX_DURATION as f64)
+        .unit("steps")
 }
 
 fn one() -> u32 {
@@ -254,17 +301,6 @@ fn unreached(cells: &[bool], w: u32, h: u32) -> usize {
     cells.iter().zip(&seen).filter(|(&c, &s)| c && !s).count()
 }
 
-fn duration(v: u32, name: &str) -> Result<u32> {
-    if (1..=MAX_DURATION).contains(&v) {
-        Ok(v)
-    } else {
-        Err(Error::field(
-            name,
-            format!("must be from 1 to {MAX_DURATION} steps"),
-        ))
-    }
-}
-
 impl Plan {
     /// Cells of the lattice: the rows above the supply and the supply rows.
     pub fn cells(&self) -> usize {
@@ -292,19 +328,9 @@ impl models::Spec for Spec {
 fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
     let AmasLimits {
         side: max_side,
-        supply_rows: max_supply_rows,
-        stages: max_stages,
         stage_cells: max_stage_cells,
+        ..
     } = limits.amas;
-    if spec.stages.len() > max_stages {
-        return Err(Error::field(
-            "stages",
-            format!(
-                "{} stages are too many; at most {max_stages}",
-                spec.stages.len()
-            ),
-        ));
-    }
     // Rectangles are cheap to write and costly to hold: bound them before building any.
     let declared: u64 = spec
         .stages
@@ -340,12 +366,6 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         Some(v) => Some(shape_value(v, "initial", limits)?),
         None => None,
     };
-    if !(1..=max_supply_rows).contains(&spec.supply_rows) {
-        return Err(Error::field(
-            "supply_rows",
-            format!("must be from 1 to {max_supply_rows}"),
-        ));
-    }
     let w = shapes
         .iter()
         .map(|(_, g)| g.w)
@@ -403,9 +423,6 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         }
         None => vec![false; (w * shape_h) as usize],
     };
-    if spec.robots == 0 {
-        return Err(Error::field("robots", "at least one robot is needed"));
-    }
     let supply_cells = u64::from(w) * u64::from(spec.supply_rows);
     if u64::from(spec.robots) > supply_cells {
         return Err(Error::field(
@@ -417,46 +434,21 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
             ),
         ));
     }
-    if !(1..=MAX_UPDATES).contains(&spec.field_updates_per_step) {
-        return Err(Error::field(
-            "field_updates_per_step",
-            format!("must be from 1 to {MAX_UPDATES}"),
-        ));
-    }
-    if !(spec.diffusion > 0.0 && spec.diffusion <= 0.25) {
-        return Err(Error::field(
-            "diffusion",
-            "must be above 0 and at most 0.25 (larger values make equation 1 unstable)",
-        ));
-    }
     let threshold = spec
         .gradient_threshold
         .unwrap_or_else(|| default_threshold(spec.field));
-    if !(threshold.is_finite() && threshold >= 0.0) {
-        return Err(Error::field(
-            "gradient_threshold",
-            "must be a number of at least 0",
-        ));
-    }
     let params = Params {
         field: spec.field,
         collision: spec.collision,
         updates: spec.field_updates_per_step,
         diffusion: spec.diffusion as f32,
         threshold: threshold as f32,
-        move_d: duration(spec.move_duration, "move_duration")?,
-        pick_d: duration(spec.pick_duration, "pick_duration")?,
-        place_d: duration(spec.place_duration, "place_duration")?,
-        relay_d: duration(spec.relay_duration, "relay_duration")?,
-        penalty: duration(spec.collision_penalty, "collision_penalty")?,
-        turn_d: if spec.turn_duration <= MAX_DURATION {
-            spec.turn_duration
-        } else {
-            return Err(Error::field(
-                "turn_duration",
-                format!("must be from 0 to {MAX_DURATION} steps"),
-            ));
-        },
+        move_d: spec.move_duration,
+        pick_d: spec.pick_duration,
+        place_d: spec.place_duration,
+        relay_d: spec.relay_duration,
+        penalty: spec.collision_penalty,
+        turn_d: spec.turn_duration,
         communication: spec.communication,
     };
     Ok(Plan {

@@ -36,17 +36,7 @@ impl models::Spec for Spec {
     fn validate(&self, limits: &Limits) -> Result<Checked> {
         let world = spec::parse_world(&self.world, self.extend, limits)?;
         let mech = Mechanics::from_spec(self)?;
-        let tip_load = spec::non_negative("tip_load", self.tip_load, 1e7)?;
-        let hop_us = spec::positive("hop_us", self.hop_us, 1e9)?;
-        if let Some(g) = self.goal {
-            let max_goal = limits.chobie.goal;
-            if g == 0 || g > max_goal {
-                return Err(crate::Error::field(
-                    "goal",
-                    format!("must be from 1 to {max_goal} cells"),
-                ));
-            }
-        }
+        let (tip_load, hop_us) = (self.tip_load, self.hop_us);
         Ok(Checked {
             spec: self.clone(),
             world,

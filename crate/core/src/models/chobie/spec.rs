@@ -4,6 +4,7 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
+use crate::bounds::{self, Bound, Bounded};
 use crate::error::{Error, Result};
 use crate::limits::Limits;
 
@@ -44,13 +45,12 @@ pub enum Method {
 
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-#[schemars(rename = "ChobieSpec")]
+#[schemars(rename = "ChobieSpec", transform = bounds::in_schema::<Spec>)]
 pub struct Spec {
     /// The side view, top row first: `=` terrain (ground and cliff), `#` a robot, `.` empty.
     pub world: String,
     /// Empty columns added on the right, each a copy of the rightmost column's terrain.
     #[serde(default)]
-    #[schemars(range(max = Limits::PAGE.chobie.side))]
     pub extend: u32,
     /// What the robots do: crawl (section 3.3) or build a bridge (3.4).
     #[serde(default)]
@@ -73,7 +73,6 @@ pub struct Spec {
     pub construction: bool,
     /// Completed when the crawl has moved this many cells, or the bridge spans this many cells.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(range(min = 1, max = Limits::PAGE.chobie.goal))]
     pub goal: Option<u32>,
     /// The flat part of the base carries the robots' sliding guide and holds the robots resting
     /// on it. Off, the base only pushes, and the structure tips over the cliff edge when the
@@ -106,6 +105,45 @@ pub struct Spec {
     /// Time for a signal to cross one robot, microseconds (section 3.2: about 10).
     #[serde(default = "defaults::hop_us")]
     pub hop_us: f64,
+}
+
+impl Bounded for Spec {
+    const BOUNDS: &'static [Bound<Spec>] = &[
+        Bound::new("extend", |s: &Spec| Some(s.extend.into()))
+            .up_to(|l| l.chobie.side.into())
+            .unit("columns"),
+        Bound::new("goal", |s: &Spec| s.goal.map(f64::from))
+            .at_least(1.0)
+            .up_to(|l| l.chobie.goal.into())
+            .unit("cells"),
+        Bound::new("tip_load", |s: &Spec| Some(s.tip_load))
+            .at_least(0.0)
+            .at_most(1e7),
+        Bound::new("cell_size", |s: &Spec| Some(s.cell_size))
+            .above(0.0)
+            .at_most(1e3),
+        Bound::new("board", |s: &Spec| Some(s.board))
+            .above(0.0)
+            .at_most(1e3),
+        Bound::new("youngs_modulus", |s: &Spec| Some(s.youngs_modulus))
+            .above(0.0)
+            .at_most(1e15),
+        Bound::new("robot_mass", |s: &Spec| Some(s.robot_mass))
+            .at_least(0.0)
+            .at_most(1e6),
+        Bound::new("gravity", |s: &Spec| Some(s.gravity))
+            .at_least(0.0)
+            .at_most(1e3),
+        Bound::new("tensile_strength", |s: &Spec| Some(s.tensile_strength))
+            .above(0.0)
+            .at_most(1e15),
+        Bound::new("safety_factor", |s: &Spec| Some(s.safety_factor))
+            .above(0.0)
+            .at_most(1e6),
+        Bound::new("hop_us", |s: &Spec| Some(s.hop_us))
+            .above(0.0)
+            .at_most(1e9),
+    ];
 }
 
 fn yes() -> bool {
@@ -168,21 +206,18 @@ pub const POISSON: f64 = 0.35;
 pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
 
 impl Mechanics {
-    /// Two lateral boards of thickness `board` and height `cell_size` carry each contact.
+    /// Two lateral boards of thickness `board` and height `cell_size` carry each contact (the
+    /// description's ranges checked before).
     pub fn from_spec(s: &Spec) -> Result<Mechanics> {
-        let a = positive("cell_size", s.cell_size, 1e3)?;
-        let t = positive("board", s.board, 1e3)?;
+        let (a, t) = (s.cell_size, s.board);
         if t * 2.0 > a {
             return Err(Error::field(
                 "board",
                 "two boards must fit in the robot: board ≤ cell_size / 2",
             ));
         }
-        let e = positive("youngs_modulus", s.youngs_modulus, 1e15)?;
-        let mass = non_negative("robot_mass", s.robot_mass, 1e6)?;
-        let g = non_negative("gravity", s.gravity, 1e3)?;
-        let strength = positive("tensile_strength", s.tensile_strength, 1e15)?;
-        let safety = positive("safety_factor", s.safety_factor, 1e6)?;
+        let (e, mass, g) = (s.youngs_modulus, s.robot_mass, s.gravity);
+        let (strength, safety) = (s.tensile_strength, s.safety_factor);
         let (area, inertia) = (2.0 * t * a, 2.0 * t * a * a * a / 12.0);
         let shear = e / (2.0 * (1.0 + POISSON));
         Ok(Mechanics {
@@ -196,28 +231,6 @@ impl Mechanics {
             threshold: strength / safety,
             strength,
         })
-    }
-}
-
-pub fn positive(name: &str, v: f64, max: f64) -> Result<f64> {
-    if v.is_finite() && v > 0.0 && v <= max {
-        Ok(v)
-    } else {
-        Err(Error::field(
-            name,
-            format!("must be a number above 0 and at most {max}"),
-        ))
-    }
-}
-
-pub fn non_negative(name: &str, v: f64, max: f64) -> Result<f64> {
-    if v.is_finite() && (0.0..=max).contains(&v) {
-        Ok(v)
-    } else {
-        Err(Error::field(
-            name,
-            format!("must be a number from 0 to {max}"),
-        ))
     }
 }
 

@@ -20,15 +20,9 @@ impl models::Spec for Spec {
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
         let max = limits.fracta;
-        let p = check_params(self)?;
+        let p = params(self);
         let goal = Goal::parse(&self.goal).map_err(|e| Error::field("goal", e))?;
         let start = shape::parse_hex_within(&self.start, limits).map_err(|e| e.within("start"))?;
-        if self.margin > max.margin {
-            return Err(Error::field(
-                "margin",
-                format!("{} is wider than the limit of {}", self.margin, max.margin),
-            ));
-        }
         let count = start.count();
         if count == 0 {
             return Err(Error::field("start", "has no '#' cells"));

@@ -49,8 +49,8 @@ mod view;
 
 use actions::Fault;
 use goal::{Goal, Priorities};
-use spec::{check_params, Params};
 pub use spec::{defaults, Spec};
+use spec::{params, Params};
 use types::{far_steps, swept_slots, target_slot, types, Turn, Types};
 
 pub const ENTRY: ModelEntry = ModelEntry {
