@@ -1,8 +1,8 @@
 // CHOBIE II: the side view painted in two aligned layers, robots and terrain (ground and cliff),
-// merged into the world text the core reads ('#' robot, '=' terrain, '.' empty); and the crawl
-// forms of figure 7 drawn for any odd number of robots by the core's `crawl` query. Loads are
-// placed during a run with the page's load tools; the generic panels show the mode, the
-// leaders, the signals of each slot and the stress field.
+// which the core's `layers` query splits the world text into and its `merge` query merges back
+// ('#' robot, '=' terrain, '.' empty); and the crawl forms of figure 7 drawn for any odd number of
+// robots by the core's `crawl` query. Loads are placed during a run with the page's load tools;
+// the generic panels show the mode, the leaders, the signals of each slot and the stress field.
 import { clear, el } from '../ui/dom';
 import { message, query } from '../wasm';
 import type { ModelEditor } from './editor';
@@ -10,50 +10,28 @@ import { GridEditor } from './grid-editor';
 
 const MAX_PAINTED = 200;
 
-/** One layer of the world text as a square shape: `mark` becomes '#', everything else '.'. */
-function layer(world: string, mark: string): string {
-  return world
-    .split('\n')
-    .filter((line, i, all) => line.length > 0 || i < all.length - 1)
-    .map((line) => [...line].map((c) => (c === mark ? '#' : '.')).join(''))
-    .join('\n');
-}
-
-/** Merges the two layers (aligned at the top-left) into world text, or says where they clash. */
-function merge(robots: string, terrain: string): { world: string } | { problem: string } {
-  const r = robots.split('\n');
-  const t = terrain.split('\n');
-  const rows: string[] = [];
-  for (let y = 0; y < Math.max(r.length, t.length); y++) {
-    const a = r[y] ?? '';
-    const b = t[y] ?? '';
-    let row = '';
-    for (let x = 0; x < Math.max(a.length, b.length); x++) {
-      const robot = a[x] === '#';
-      const ground = b[x] === '#';
-      if (robot && ground) return { problem: `row ${y + 1}, column ${x + 1} is both a robot and terrain` };
-      row += robot ? '#' : ground ? '=' : '.';
-    }
-    rows.push(row);
-  }
-  return { world: `${rows.join('\n').replace(/\n+$/, '')}\n` };
-}
+/** The world text's robots and its terrain, each as a square shape. */
+const layers = (world: string) => query<{ robots: string; terrain: string }>('chobie', 'layers', { world });
 
 export const chobieEditor: ModelEditor = {
   title: 'World: robots and terrain',
   owns: ['world'],
   mount(root, ctx) {
     let world = String(ctx.scenario().world ?? '');
-    let robots = layer(world, '#');
-    let terrain = layer(world, '=');
+    let { robots, terrain } = layers(world);
     const note = el('p', {
       class: 'hint',
       text: 'Both layers are aligned at the top-left corner; gravity points down. A robot must rest on terrain, and the robots must form one piece.',
     });
     const error = el('p', { id: 'chobie-world-error', class: 'error', role: 'status', 'aria-live': 'polite' });
     const apply = (): string | null => {
-      const merged = merge(robots, terrain);
-      const problem = 'problem' in merged ? merged.problem : ctx.change({ world: merged.world });
+      let problem: string | null;
+      try {
+        problem = ctx.change({ world: query<{ world: string }>('chobie', 'merge', { robots, terrain }).world });
+      } catch (e) {
+        // Both layers paint one cell.
+        problem = message(e);
+      }
       error.textContent = problem ?? '';
       return problem;
     };
@@ -117,8 +95,7 @@ export const chobieEditor: ModelEditor = {
         const next = String(scenario.world ?? '');
         if (next === world) return;
         world = next;
-        robots = layer(world, '#');
-        terrain = layer(world, '=');
+        ({ robots, terrain } = layers(world));
         robotEditor.setText(robots);
         terrainEditor.setText(terrain);
         error.textContent = '';

@@ -204,14 +204,10 @@ impl Chobie {
     /// order, until a kind is present, and only that kind commands.
     fn announce(&self, comm: &mut Comm, mut leaders: Vec<Elected>) -> Vec<Elected> {
         if self.p.priority && self.mode == Mode::Crawl {
-            let rank = |k: Kind| {
-                self.p
-                    .order
-                    .iter()
-                    .position(|&o| o == k)
-                    .unwrap_or(usize::MAX)
-            };
-            let best = leaders.iter().map(|e| e.kind).min_by_key(|&k| rank(k));
+            let best = leaders
+                .iter()
+                .map(|e| e.kind)
+                .min_by_key(|&k| self.p.rank(k));
             let order = self.p.order;
             let silent = best.map_or(order.len(), |k| {
                 order.iter().position(|&o| o == k).unwrap_or(0)
@@ -302,14 +298,7 @@ impl Chobie {
                 if all.is_empty() {
                     all = election::corner(body);
                 }
-                let rank = |k: Kind| {
-                    self.p
-                        .order
-                        .iter()
-                        .position(|&o| o == k)
-                        .unwrap_or(usize::MAX)
-                };
-                let best = all.iter().map(|e| e.kind).min_by_key(|&k| rank(k));
+                let best = all.iter().map(|e| e.kind).min_by_key(|&k| self.p.rank(k));
                 all.retain(|e| Some(e.kind) == best);
                 all
             }

@@ -45,11 +45,23 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: crate::schema::of::<spec::Spec>,
     #[cfg(feature = "schema")]
     disturbance: crate::schema::of::<actions::LoadAction>,
-    queries: &[models::Query {
-        name: "crawl",
-        description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
-        run: queries::crawl,
-    }],
+    queries: &[
+        models::Query {
+            name: "crawl",
+            description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
+            run: queries::crawl,
+        },
+        models::Query {
+            name: "layers",
+            description: "The world text's robots and terrain, each as a square shape: {\"world\": text} → {\"robots\", \"terrain\"}",
+            run: queries::layers,
+        },
+        models::Query {
+            name: "merge",
+            description: "Two square shapes, robots and terrain, merged into world text: {\"robots\", \"terrain\"} → {\"world\"}",
+            run: queries::merge,
+        },
+    ],
     #[cfg(feature = "report")]
     paper: &paper::PAPER,
 };
@@ -71,6 +83,16 @@ pub struct Params {
     pub mech: Mechanics,
     /// The priority sequence of figure 18.
     pub order: [election::Kind; 4],
+}
+
+impl Params {
+    /// A leader kind's place in the priority sequence; a kind outside it comes last.
+    pub fn rank(&self, kind: election::Kind) -> usize {
+        self.order
+            .iter()
+            .position(|&o| o == kind)
+            .unwrap_or(usize::MAX)
+    }
 }
 
 /// Counters over the whole run.

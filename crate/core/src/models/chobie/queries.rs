@@ -1,4 +1,5 @@
-//! Helper calls for editors and the CLI: the crawl forms of figure 7, reconstructed.
+//! Helper calls for editors and the CLI: the crawl forms of figure 7, reconstructed, and the world
+//! text split into the two layers the page paints (robots, terrain) and merged back.
 
 use serde_json::{json, Value};
 
@@ -64,4 +65,114 @@ pub fn crawl(args: &Value) -> Result<Value> {
         return Err(Error::field("margin", "from 0 to 1000 empty columns"));
     }
     Ok(json!({ "world": crawl_world(n, form, margin) }))
+}
+
+/// The text of a string argument.
+fn text<'a>(args: &'a Value, key: &str) -> Result<&'a str> {
+    args.get(key)
+        .and_then(Value::as_str)
+        .ok_or_else(|| Error::field(key, "give it as text"))
+}
+
+/// The lines of a text as the page's painters read it: a final newline ends the last line rather
+/// than starting an empty one.
+fn lines(text: &str) -> Vec<&str> {
+    text.strip_suffix('\n')
+        .unwrap_or(text)
+        .split('\n')
+        .collect()
+}
+
+/// `{"world": text}` → `{"robots": shape, "terrain": shape}`: the world's robots (`#`) and its
+/// terrain (`=`) each as a square shape, `#` where the layer has something and `.` elsewhere,
+/// aligned at the top-left as the world is. Any text is split, a world that would not run too.
+pub fn layers(args: &Value) -> Result<Value> {
+    let world = lines(text(args, "world")?);
+    let layer = |mark: char| -> String {
+        let rows: Vec<String> = world
+            .iter()
+            .map(|line| {
+                line.chars()
+                    .map(|c| if c == mark { '#' } else { '.' })
+                    .collect()
+            })
+            .collect();
+        rows.join("\n")
+    };
+    Ok(json!({ "robots": layer('#'), "terrain": layer('=') }))
+}
+
+/// `{"robots": shape, "terrain": shape}` → `{"world": text}`: the two layers, aligned at the
+/// top-left, merged into world text (`#` a robot, `=` terrain, `.` empty). A cell that is both a
+/// robot and terrain is refused by its row and column.
+pub fn merge(args: &Value) -> Result<Value> {
+    let robots = lines(text(args, "robots")?);
+    let terrain = lines(text(args, "terrain")?);
+    let mut rows = Vec::with_capacity(robots.len().max(terrain.len()));
+    for y in 0..robots.len().max(terrain.len()) {
+        let a: Vec<char> = robots.get(y).map_or(Vec::new(), |l| l.chars().collect());
+        let b: Vec<char> = terrain.get(y).map_or(Vec::new(), |l| l.chars().collect());
+        let mut row = String::with_capacity(a.len().max(b.len()));
+        for x in 0..a.len().max(b.len()) {
+            let robot = a.get(x) == Some(&'#');
+            let ground = b.get(x) == Some(&'#');
+            if robot && ground {
+                return Err(Error::field(
+                    "",
+                    format!(
+                        "row {}, column {} is both a robot and terrain",
+                        y + 1,
+                        x + 1
+                    ),
+                ));
+            }
+            row.push(match (robot, ground) {
+                (true, _) => '#',
+                (_, true) => '=',
+                _ => '.',
+            });
+        }
+        rows.push(row);
+    }
+    Ok(json!({ "world": format!("{}\n", rows.join("\n").trim_end_matches('\n')) }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::presets;
+
+    /// Every preset's world splits into its two layers and merges back into the same text.
+    #[test]
+    fn worlds_split_into_layers_and_merge_back() {
+        let mut seen = 0;
+        for name in presets::names() {
+            let doc = presets::scenario(name).unwrap().to_value();
+            let Some(world) = doc.get("world").and_then(Value::as_str) else {
+                continue;
+            };
+            let parts = layers(&json!({ "world": world })).unwrap();
+            assert!(!parts["robots"].as_str().unwrap().contains('='), "{name}");
+            let merged = merge(&parts).unwrap();
+            assert_eq!(merged["world"], world, "{name}");
+            seen += 1;
+        }
+        assert!(seen > 0, "no preset has a world");
+        let parts = layers(&json!({"world": ".#.\n===\n"})).unwrap();
+        assert_eq!(parts, json!({"robots": ".#.\n...", "terrain": "...\n###"}));
+    }
+
+    /// A cell painted in both layers is refused by its row and column; ragged layers align at
+    /// the top-left.
+    #[test]
+    fn a_cell_in_both_layers_is_refused_where_it_is() {
+        let clash = merge(&json!({"robots": "..\n.#", "terrain": "..\n##"})).unwrap_err();
+        assert_eq!(
+            clash.to_string(),
+            "row 2, column 2 is both a robot and terrain"
+        );
+        let merged = merge(&json!({"robots": "#", "terrain": ".\n###\n"})).unwrap();
+        assert_eq!(merged["world"], "#\n===\n");
+        assert!(merge(&json!({"robots": "#"})).is_err());
+    }
 }
