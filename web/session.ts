@@ -3,7 +3,8 @@
 // reports, and the panels read the session and listen to its events instead of to each other.
 import { sameLattice } from './render/geometry';
 import { History } from './store';
-import type { Frame, Layout } from './types';
+import type { Layout } from './contract.gen';
+import type { Frame } from './types';
 
 export interface SessionEvents {
   /** A run was loaded; `shapeChanged` when its lattice or size differs from the last one. */

@@ -1,13 +1,10 @@
-// Shapes of the records that cross from the core (through serde-wasm-bindgen) into the page. Those
-// the core's own types describe are generated from them (contract.gen.ts, by `kumiki schema`) and
-// re-exported here; the rest are the page's and the glue's own.
+// The page's own records: what the simulation worker makes of the wasm's answers and posts to the
+// page. Every record the core itself hands the page is generated from its Rust type
+// (contract.gen.ts and scenario.gen.ts by `kumiki schema`, view.gen.ts by the view's test) and
+// imported from there.
 
-import type { Scene as SceneInfo } from './contract.gen';
-
-export type { FieldInfo, LatticeKind, Layout, LegendEntry, LessonInfo, PresetInfo, ToolInfo } from './contract.gen';
-export type { SceneInfo };
-
-export type Metrics = Record<string, number | boolean | string | null>;
+import type { Metrics, Scene } from './contract.gen';
+import type { RenderStats } from './view.gen';
 
 /** A metric's every-step record, merged for drawing (kumiki_core::series::Band). */
 export interface ChartBand {
@@ -19,16 +16,6 @@ export interface ChartBand {
   max: Float64Array;
   /** Steps per recorded bucket: 1 until the record is full, then doubling. */
   span: number;
-}
-
-/** What a 3-D frame drew (kumiki_view::scene::RenderStats). */
-export interface RenderStats {
-  units: number;
-  bonds: number;
-  ghost: number;
-  highlight: number;
-  light: boolean;
-  ground: boolean;
 }
 
 /**
@@ -46,7 +33,7 @@ export interface Frame {
   metrics: Metrics;
   stepsPerSecond: number;
   /** The model's scene when it changed since the last frame (always in the first after a load), else null. */
-  scene: SceneInfo | null;
+  scene: Scene | null;
   /** The charted metric's record, when the page asked for one. */
   chart: ChartBand | null;
   /** The overlay's finite [min, max], for its legend; null without an overlay. */
@@ -63,58 +50,4 @@ export interface WorkerTiming {
   frames: number;
   uploadMs: number;
   drawMs: number;
-}
-
-/** One row of a model's metric table (Rust `models::MetricInfo`). */
-export interface MetricInfo {
-  name: string;
-  unit: string;
-  about: string;
-}
-
-/** Per-condition statistics (Rust `plot::stats::Stats`). */
-export interface Stats {
-  n: number;
-  mean: number;
-  sd: number;
-  min: number;
-  q1: number;
-  median: number;
-  q3: number;
-  max: number;
-  ci95: [number, number];
-}
-
-/** What a plot draws (Rust `plot::figure::Figure`), the fields the page reads. */
-export interface Figure {
-  kind: 'lines' | 'trace' | 'histogram' | 'bars' | 'summary';
-  title: string;
-  described: string;
-  table: { condition: string[]; runs: number; completed: number; value: string; unit: string; stats: Stats | null }[];
-  comparisons: {
-    value: string;
-    conditions: [string, string];
-    comparison: { difference: number; cohens_d: number; u: number; rank_biserial: number; p: number; method: string };
-  }[];
-}
-
-export interface ExperimentInfo {
-  name: string;
-  title: string;
-  description: string;
-  jobs: number;
-  traced: boolean;
-}
-
-export interface Row {
-  scenario: string;
-  seed: number;
-  completed: boolean;
-  steps: number;
-  hash: string;
-  metrics: Metrics;
-  params: Record<string, unknown>;
-  scenario_hash: string;
-  version: string;
-  trace?: { step: number[]; values: Record<string, (number | null)[]> };
 }

@@ -1,4 +1,4 @@
-import type { Layout } from '../../web/types';
+import type { Layout } from '../../web/contract.gen';
 
 /** A layout with only what geometry and cameras read. */
 export function layout(lattice: Layout['lattice'], w: number, h: number, d = 1): Layout {

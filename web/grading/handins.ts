@@ -1,6 +1,7 @@
 // Reading a class's hand-ins from what a teacher has: links pasted one a line (as `kumiki check
 // --file` reads them), or the CSV or text export of a form or a learning platform, one hand-in a
 // row with the student's name in another column. Nothing here leaves the page.
+import type { Graded } from '../contract.gen';
 
 /** One hand-in: its row in the input, the student's name from the export (if any), its link. */
 export interface Handin {
@@ -84,23 +85,12 @@ function csvCell(v: unknown): string {
   return /[",\n\r]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
 }
 
-/** One graded row of the Grade view, as the wasm module gives it (or its error). */
-export interface GradedRow {
-  handin: number;
-  student: string;
-  link: string | null;
-  name?: string;
-  met?: boolean;
-  because?: string;
-  completed?: boolean;
-  steps?: number;
-  hash?: string;
-  locked_edited?: string[];
-  changed?: string[];
-  exercise_edited?: boolean;
-  goal_metrics?: Record<string, unknown>;
-  error?: string;
-}
+/**
+ * One row of the Grade view: the hand-in's number, its student and link, and the core's `Graded`
+ * answer for it, a grade or an error, read field by field (each field absent in the other case).
+ */
+export type GradedRow = { handin: number; student: string; link: string | null } & Partial<Extract<Graded, { met: boolean }>> &
+  Partial<Extract<Graded, { error: string }>>;
 
 /** The Grade view's table as CSV: kumiki check's columns, with the student and the link first. */
 export function gradesCsv(rows: GradedRow[]): string {

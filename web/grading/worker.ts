@@ -1,10 +1,11 @@
 // A grading worker: replays the hand-ins it is handed and judges each as `kumiki check` does
 // (the core's exercise::grade, through grade_handin). It runs the page's compiled wasm module,
 // handed over at setup: nothing is downloaded, and no hand-in leaves the machine.
+import type { Graded } from '../contract.gen';
 import init, { grade_handin, panic_message } from '../pkg/kumiki_wasm.js';
 
 export type ToGradeWorker = { type: 'setup'; module: WebAssembly.Module; exercise: string | null } | { type: 'grade'; index: number; link: string };
-export type FromGradeWorker = { type: 'ready' } | { type: 'graded'; index: number; row: Record<string, unknown> } | { type: 'failed'; message: string };
+export type FromGradeWorker = { type: 'ready' } | { type: 'graded'; index: number; row: Graded } | { type: 'failed'; message: string };
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (m: FromGradeWorker) => scope.postMessage(m);
@@ -23,7 +24,7 @@ scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
     return;
   }
   try {
-    post({ type: 'graded', index: msg.index, row: grade_handin(msg.link, exercise ?? undefined) as Record<string, unknown> });
+    post({ type: 'graded', index: msg.index, row: grade_handin(msg.link, exercise ?? undefined) as Graded });
   } catch (err) {
     // A panic stops this instance: the hand-in is reported, and the worker is not reused.
     const panic = panic_message();

@@ -1,6 +1,6 @@
 // What a model-specific editor (target shapes, type-lists, statements) gets from the page, and
 // what it gives back. Editors mount above the generic parameter form in the Scenario panel.
-import type { Layout } from '../types';
+import type { Layout } from '../contract.gen';
 
 export interface EditorContext {
   /** The scenario as it now stands, parsed. */

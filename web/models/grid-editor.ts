@@ -5,7 +5,8 @@
 import { bindGestures, type Point } from '../render/gestures';
 import { History } from '../store';
 import { clear, el } from '../ui/dom';
-import { Geometry, formatShape, message, parseShape, type Shape } from '../wasm';
+import type { Cells as Shape } from '../contract.gen';
+import { Geometry, formatShape, message, parseShape } from '../wasm';
 
 export interface GridEditorOptions {
   lattice: 'square' | 'hex';

@@ -7,7 +7,7 @@
 // core validate them: a refused shape stays on screen with the core's reason.
 import { bindGestures } from '../render/gestures';
 import type { Picked } from '../sim/protocol';
-import type { Layout, SceneInfo } from '../types';
+import type { Layout, Scene } from '../contract.gen';
 import { History } from '../store';
 import { clear, el } from '../ui/dom';
 import { formatShape, message, newViewer, parseShape, type Viewer } from '../wasm';
@@ -50,7 +50,7 @@ export class VoxelEditor {
   private layout: Layout;
   private cells: Uint8Array;
   private cssWidth = 1;
-  private world: SceneInfo = { ghost: [], ground: 0 };
+  private world: Scene = { ghost: [], ground: 0 };
   private pointerCursor: { cell: number; kind: 'add' | 'remove' } | null = null;
   private keyCursor: Cell = [0, 0, 0];
   private focused = false;

@@ -6,7 +6,8 @@ import { cellCoords } from '../render/geometry';
 import type { Announcer } from '../ui/announce';
 import { KeyCursor } from '../ui/cursor';
 import { byId, el, formatNumber } from '../ui/dom';
-import { type Facts, Probe, reachOf } from '../ui/probe';
+import type { Facts } from '../contract.gen';
+import { Probe, reachOf } from '../ui/probe';
 import { STRUCTURE_FACTS } from '../ui/structure';
 import type { Page } from './page';
 import type { RunPanel } from './run';
@@ -127,7 +128,7 @@ export function setupInspector(page: Page, run: RunPanel, announcer: Announcer):
     hoverReach = null;
     selectReach = null;
   }
-  async function showInspector(cell: number, facts: Record<string, unknown>) {
+  async function showInspector(cell: number, facts: Facts) {
     shown = cell;
     const dl = cellFacts(cell, await cellName(cell));
     if (shown !== cell) return;

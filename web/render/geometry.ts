@@ -1,7 +1,7 @@
 // How the page names lattice cells: which lattices have depth, and a cell index's (x, y, z) in the
 // core's row-major order. Where cells are drawn, and which one a point falls in, is the view's
 // (crate/view; the page asks through wasm.ts's Geometry and the worker's view).
-import type { Layout } from '../types';
+import type { Layout } from '../contract.gen';
 
 /** The lattice has depth: a 3-D view, where a selected unit stays selected and shows its reach. */
 export const is3d = (layout: Layout): boolean => layout.lattice === 'cubic';

@@ -4,7 +4,8 @@
 // marks, asks what is under the pointer, and learns from each frame what was drawn.
 import type { Picked, RendererChoice, ViewMarks } from '../sim/protocol';
 import type { SimClient } from '../sim/client';
-import type { Frame, Layout } from '../types';
+import type { Layout } from '../contract.gen';
+import type { Frame } from '../types';
 import { is3d } from './geometry';
 import { bindGestures } from './gestures';
 

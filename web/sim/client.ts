@@ -1,6 +1,7 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable.
-import type { Frame, Layout, WorkerTiming } from '../types';
+import type { Facts, Layout } from '../contract.gen';
+import type { Frame, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
 import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
 import { Cancelled, type Progress, type Recorded, type RecordSettings } from './record';
@@ -33,7 +34,7 @@ export class SimClient {
   private lastGood: string | null = null;
   private pendingLoad: string | null = null;
   private inspectId = 0;
-  private inspectWaiters = new Map<number, (facts: Record<string, unknown>) => void>();
+  private inspectWaiters = new Map<number, (facts: Facts) => void>();
   private answers = new Map<number, (value: unknown) => void>();
   private askId = 0;
   private recordId = 0;
@@ -369,7 +370,7 @@ export class SimClient {
   crash() {
     this.send({ type: 'crash' });
   }
-  inspect(cell: number): Promise<Record<string, unknown>> {
+  inspect(cell: number): Promise<Facts> {
     const id = ++this.inspectId;
     return new Promise((resolve) => {
       this.inspectWaiters.set(id, resolve);

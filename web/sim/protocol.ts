@@ -4,35 +4,16 @@
 // the worker too: only its progress and the finished file come back. While it runs, the worker
 // takes only 'ack' and 'record-cancel' (and answers pings); every other message waits, in order,
 // until the recording ends, so nothing moves the run or the view under the recording.
-import type { Frame, Layout, WorkerTiming } from '../types';
+import type { Facts, Layout } from '../contract.gen';
+import type { Marks as ViewMarks } from '../view.gen';
+import type { Frame, WorkerTiming } from '../types';
 import type { RecordSettings } from './record';
+
+export type { Picked, Marks as ViewMarks } from '../view.gen';
 
 export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
 
-/** The page's marks over the lattice, as the view reads them (kumiki_view::scene::Marks). */
-export interface ViewMarks {
-  arrows: boolean;
-  labels: boolean;
-  hover: number | null;
-  highlight: number[];
-  highlightValues: number[];
-  selected: number | null;
-  cursor: { cell: number; kind: 'add' | 'remove' | 'cursor' } | null;
-  signals: number[];
-  displaced: number[];
-  ghost: boolean;
-  bonds: boolean;
-}
-
 export type CameraMove = { op: 'drag'; dx: number; dy: number; orbit: boolean } | { op: 'zoom'; factor: number; x: number; y: number } | { op: 'fit' };
-
-export interface Picked {
-  cell: number;
-  /** The cell's code in the frame drawn (0: empty). */
-  code: number;
-  /** In 3-D, the face hit: the empty cell in front of it (-1 off the lattice). */
-  hit: { cell: number; front: number } | null;
-}
 
 export type ToWorker =
   /** The wasm module the page compiled: the worker starts with it, without compiling its own. */
@@ -76,7 +57,7 @@ export type FromWorker =
   | { type: 'frame'; frame: Frame }
   | { type: 'playing'; playing: boolean }
   | { type: 'scenario'; scenario: string }
-  | { type: 'inspected'; id: number; cell: number; facts: Record<string, unknown> }
+  | { type: 'inspected'; id: number; cell: number; facts: Facts }
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
   | { type: 'panic'; message: string }
   | { type: 'pong'; id: number }

@@ -4,7 +4,7 @@
 // (or C again) hides it. While the cursor is hidden the arrows keep their meaning (step, step
 // back), and Shift/Alt+arrows still turn and pan the view.
 import { coordOf, is3d } from '../render/geometry';
-import type { Layout } from '../types';
+import type { Layout } from '../contract.gen';
 
 export interface CursorHooks {
   layout(): Layout | null;

@@ -4,7 +4,7 @@
 // bytes `kumiki sweep` writes.
 import { ExperimentPool } from '../experiments/pool';
 import type { Prefs } from '../store';
-import type { ExperimentInfo } from '../types';
+import type { ExperimentInfo } from '../contract.gen';
 import * as core from '../wasm';
 import { byId, download, el, formatNumber } from './dom';
 import { renderPlots } from './plots';

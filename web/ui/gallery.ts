@@ -1,7 +1,7 @@
 // The gallery: the built-in lessons first (classroom exercises, each with its paper's section),
 // then every built-in scenario grouped by model; one filter for both. The Lessons button and the
 // first screen's ways in open it on one part.
-import type { LessonInfo, PresetInfo } from '../types';
+import type { LessonInfo, PresetInfo } from '../contract.gen';
 import { byId, clear, el } from './dom';
 
 /** What the gallery shows: the lessons, the scenarios, or both. */

@@ -2,6 +2,7 @@
 // CSV or text export, names the exercise (its link or a lesson; or each hand-in's own), and gets a
 // table graded as `kumiki check` grades: every hand-in replayed in wasm workers on this machine,
 // with progress, cancel and a CSV export. Nothing is sent anywhere.
+import type { Graded } from '../contract.gen';
 import type { FromGradeWorker, ToGradeWorker } from '../grading/worker';
 import { type GradedRow, gradesCsv, type Handin, parseHandins } from '../grading/handins';
 import * as core from '../wasm';
@@ -27,7 +28,7 @@ class GradePool {
   constructor(
     private readonly handins: Handin[],
     private readonly exercise: string | null,
-    private readonly on: { row(index: number, row: Record<string, unknown>): void; failed(message: string): void },
+    private readonly on: { row(index: number, row: Graded): void; failed(message: string): void },
   ) {}
 
   async start(size: number) {
@@ -198,9 +199,9 @@ export function setupGrade() {
       status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tally.met} met, ${tally.unmet} not met, ${tally.errors} could not be graded.`;
       if (pageDirty) showPage();
     };
-    const record = (index: number, graded: Record<string, unknown>) => {
+    const record = (index: number, graded: Graded) => {
       const h = handins[index];
-      const row = { ...graded, handin: index + 1, student: h.student || String(graded.name ?? ''), link: h.link } as GradedRow;
+      const row: GradedRow = { ...graded, handin: index + 1, student: h.student || ('name' in graded ? graded.name : ''), link: h.link };
       rows[index] = row;
       if (index >= pageStart && index < pageStart + PAGE_ROWS) pageDirty = true;
       if (row.error !== undefined) tally.errors++;

@@ -1,7 +1,7 @@
 // Draws an experiment's plots: the core computes each figure from the rows and draws it as SVG
 // (crate/core/src/plot), the same figure `kumiki sweep --plot svg` writes; the page shows it,
 // writes a summary as a table, and saves each figure as SVG or PNG (twice the size).
-import type { Figure } from '../types';
+import type { Figure } from '../contract.gen';
 import * as core from '../wasm';
 import { clear, download, el, figureFileName, formatNumber } from './dom';
 

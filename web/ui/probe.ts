@@ -2,7 +2,7 @@
 // a time, at most one every `gapMs`, and only the newest cell is asked about once the last answer is
 // in. Pacing only; nothing here reaches the simulation.
 
-export type Facts = Record<string, unknown>;
+import type { Facts } from '../contract.gen';
 
 export class Probe {
   private busy = false;

@@ -684,7 +684,10 @@ fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
     let models: Vec<&str> = experiment.scenarios.iter().map(Scenario::model).collect();
     let figures = kumiki_core::plot::figure::figures(&experiment.plots, &rows, &models);
     if args.summary {
-        for f in figures.iter().filter(|f| f.kind == "summary") {
+        for f in figures
+            .iter()
+            .filter(|f| f.kind == kumiki_core::plot::figure::FigureKind::Summary)
+        {
             for r in &f.table {
                 writeln!(
                     out,

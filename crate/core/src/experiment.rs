@@ -50,6 +50,18 @@ pub struct Experiment {
     pub definition: Value,
 }
 
+/// What the page shows of an experiment, and the number of jobs its workers share out.
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct ExperimentInfo {
+    pub name: String,
+    pub title: String,
+    pub description: String,
+    /// Runs: scenarios × grid combinations × seeds.
+    pub jobs: usize,
+    /// The runs trace metrics (the traces can be exported in long form).
+    pub traced: bool,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct TraceSpec {
     pub every: u64,
@@ -314,6 +326,17 @@ impl Experiment {
         combos
     }
 
+    /// What the page shows of it, given its jobs.
+    pub fn info(&self, jobs: &[Job]) -> ExperimentInfo {
+        ExperimentInfo {
+            name: self.name.clone(),
+            title: self.title.clone(),
+            description: self.description.clone(),
+            jobs: jobs.len(),
+            traced: self.trace.is_some(),
+        }
+    }
+
     pub fn jobs(&self) -> Vec<Job> {
         let combos = self.combinations();
         let mut jobs = Vec::with_capacity(self.scenarios.len() * combos.len() * self.seeds.len());
@@ -450,15 +473,18 @@ fn csv_field(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::run::Outcome;
 
     fn row(scenario: &str, param: Value, metric: Value) -> Row {
         Row {
-            scenario: scenario.into(),
-            seed: 1,
-            completed: true,
-            steps: 5,
-            hash: "00".into(),
-            metrics: [("m".to_string(), metric)].into_iter().collect(),
+            outcome: Outcome {
+                scenario: scenario.into(),
+                seed: 1,
+                completed: true,
+                steps: 5,
+                hash: "00".into(),
+                metrics: [("m".to_string(), metric)].into_iter().collect(),
+            },
             params: [("p".to_string(), param)].into_iter().collect(),
             scenario_hash: "11".into(),
             version: "kumiki 0".into(),

@@ -9,6 +9,8 @@
 
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use base64::Engine as _;
+use schemars::JsonSchema;
+use serde::Serialize;
 use serde_json::Value;
 
 use crate::error::{Error, Result};
@@ -34,7 +36,47 @@ pub struct Opened {
     pub current: u32,
 }
 
+/// The behaviour versions of a link's model: the one that made the link and this program's. The
+/// page warns when they differ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, JsonSchema)]
+pub struct Versions {
+    /// The model's behaviour version when the link was made.
+    pub made_with: u32,
+    /// The model's behaviour version in this program.
+    pub current: u32,
+}
+
+/// A link's scenario, not yet read, with its model's [`Versions`]: what the page unpacks on its
+/// main thread before it knows whether the scenario is small enough to check there.
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
+pub struct Unpacked {
+    /// The scenario JSON, indented, as the link holds it.
+    pub scenario: String,
+    #[serde(flatten)]
+    pub versions: Versions,
+}
+
+/// A link's scenario as indented JSON, not yet read, and its model's versions (this program's is
+/// the link's own when the model is unknown: reading it will say so).
+pub fn unpacked(link: &str) -> Result<Unpacked> {
+    let (doc, made_with) = unpack(link)?;
+    let model = doc.get("model").and_then(Value::as_str).unwrap_or_default();
+    let current = models::entry(model).map_or(made_with, |e| e.model_version);
+    Ok(Unpacked {
+        scenario: serde_json::to_string_pretty(&doc).map_err(|e| Error::json(&e))?,
+        versions: Versions { made_with, current },
+    })
+}
+
 impl Opened {
+    /// Its model's versions.
+    pub fn versions(&self) -> Versions {
+        Versions {
+            made_with: self.made_with,
+            current: self.current,
+        }
+    }
+
     /// True when the link was made with another behaviour of the model than this program's, so
     /// its run may differ from the one its maker saw.
     pub fn version_differs(&self) -> bool {

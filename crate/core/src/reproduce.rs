@@ -246,6 +246,7 @@ pub fn json(sections: &[Section]) -> Value {
 mod tests {
     use super::*;
     use crate::experiment::Row;
+    use crate::run::Outcome;
     use serde_json::Map;
 
     fn row(scenario: &str, robots: u64, steps: u64, collisions: u64) -> Row {
@@ -254,12 +255,14 @@ mod tests {
         let mut metrics = Map::new();
         metrics.insert("collisions".into(), collisions.into());
         Row {
-            scenario: scenario.into(),
-            seed: 1,
-            completed: steps < 100,
-            steps,
-            hash: String::new(),
-            metrics,
+            outcome: Outcome {
+                scenario: scenario.into(),
+                seed: 1,
+                completed: steps < 100,
+                steps,
+                hash: String::new(),
+                metrics,
+            },
             params,
             scenario_hash: String::new(),
             version: String::new(),

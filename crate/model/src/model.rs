@@ -14,6 +14,7 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
+use crate::bounds::Bounded;
 use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
@@ -21,6 +22,17 @@ use crate::limits::Limits;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
+
+/// The JSON Schema of [`Model::inspect`]'s answer as it crosses to the page: a few facts about one
+/// cell by name, whatever the model says (each model's inspector plugin reads its own).
+#[derive(JsonSchema)]
+pub struct Facts(pub std::collections::BTreeMap<String, Value>);
+
+/// The JSON Schema of [`Metrics`] as they cross to the page and into rows: each value a
+/// [`Metric`] in its JSON form (the Rust type is a JSON map, which says no more).
+#[derive(JsonSchema)]
+#[schemars(rename = "Metrics")]
+pub struct MetricValues(pub std::collections::BTreeMap<String, Metric>);
 
 /// One metric's value as a model reports it: given by name to [`Model::each_metric`], so a
 /// caller that wants every step's values (the page's chart) needs no map per step.
@@ -32,6 +44,20 @@ pub enum Metric {
     Flag(bool),
     /// Not defined yet (a time to completion before completion, a ratio of nothing).
     Missing,
+}
+
+/// A metric's JSON form ([`Metric::to_json`]): a number, a flag, or null when missing.
+impl JsonSchema for Metric {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Metric".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        schemars::json_schema!({
+            "description": "A metric's value: a count or a measure, a flag, or null when it is missing (not defined yet, or not finite).",
+            "type": ["number", "boolean", "null"],
+        })
+    }
 }
 
 impl Metric {
@@ -59,7 +85,7 @@ impl Metric {
 /// model lists its own next to its code (`<model>/metrics.rs`), registered in its [`ModelEntry`](crate::entry::ModelEntry);
 /// the page (explanations on hover, units in exports), the CLI (`kumiki metrics`) and the docs
 /// (docs/metrics.md) all read this one table.
-#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq, JsonSchema)]
 pub struct MetricInfo {
     pub name: &'static str,
     /// What one of it measures: `steps`, `count`, `fraction` (0 to 1), `flag`, `MPa`, ...
@@ -237,7 +263,7 @@ pub trait Model: Snapshot {
     /// the present state (a cell with nothing to remove) is an error and changes nothing; a
     /// scheduled one is then skipped, identically in every replay.
     fn apply(&mut self, action: &Action) -> Result<()>;
-    /// A few facts about one cell, for the page's inspector.
+    /// A few facts about one cell, for the page's inspector ([`Facts`] as it crosses).
     fn inspect(&self, _cell: usize) -> Map<String, Value> {
         Map::new()
     }
@@ -255,14 +281,16 @@ pub trait Model: Snapshot {
 
 /// A model's typed scenario description: its keys read, every default filled in, and checked
 /// by [`Spec::validate`] before any model state is allocated.
-pub trait Spec: Serialize + DeserializeOwned + Clone + std::fmt::Debug + PartialEq {
+pub trait Spec:
+    Bounded + Serialize + DeserializeOwned + Clone + std::fmt::Debug + PartialEq
+{
     /// What validation learns that building and action checks need (the lattice size, the
     /// shapes read from their text), so neither reads or checks the description again. A
     /// scenario keeps it beside the description, and its copies share it.
     type Checked: Clone + Send + Sync + 'static;
     /// Checks every field, naming the field and the rule, without building the model; every
     /// size is computed from the text and held to `limits` before anything of that size is
-    /// allocated.
+    /// allocated. Its [`Bounded::BOUNDS`] are checked before, whoever reads it.
     fn validate(&self, limits: &Limits) -> Result<Self::Checked>;
     /// Checks the form of an action (its kind, its fields, cells inside the lattice), whatever
     /// the state; the same check [`Model::check_action`] makes.

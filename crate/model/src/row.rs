@@ -2,6 +2,7 @@
 //! parameters, scenario and program, with the [`Trace`] of metrics sampled along the way. The
 //! papers' findings ([`crate::report`]) read them.
 
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
@@ -11,37 +12,57 @@ use crate::model::Metrics;
 pub const PROGRAM_VERSION: &str = concat!("kumiki ", env!("CARGO_PKG_VERSION"));
 
 /// The summary of a run, as the CLI prints it.
-#[derive(Clone, Debug, Serialize, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct Outcome {
+    /// The scenario's name.
     pub scenario: String,
     pub seed: u64,
+    /// The run reached its goal.
     pub completed: bool,
     pub steps: u64,
+    /// The state hash at the end, in hex.
     pub hash: String,
+    #[schemars(with = "crate::model::MetricValues")]
     pub metrics: Metrics,
 }
 
 /// A metric sampled during a run: `step[i]` and `values[name][i]`.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct Trace {
     pub step: Vec<u64>,
+    /// Each traced metric's values, one per sampled step (null where it was missing).
+    #[schemars(with = "std::collections::BTreeMap<String, Vec<crate::model::Metric>>")]
     pub values: Map<String, Value>,
 }
 
-/// The result of one run, traceable to its scenario and program.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+/// The result of one run, traceable to its scenario and program: its [`Outcome`] (which it
+/// dereferences to) and where it came from.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct Row {
-    pub scenario: String,
-    pub seed: u64,
-    pub completed: bool,
-    pub steps: u64,
-    pub hash: String,
-    pub metrics: Metrics,
+    #[serde(flatten)]
+    pub outcome: Outcome,
+    /// The experiment's overrides of this run, by dotted path.
     pub params: Map<String, Value>,
+    /// The hash of the scenario without its seed: every seed of one configuration shares it.
     pub scenario_hash: String,
+    /// The program that ran it.
     pub version: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub trace: Option<Trace>,
+}
+
+impl std::ops::Deref for Row {
+    type Target = Outcome;
+
+    fn deref(&self) -> &Outcome {
+        &self.outcome
+    }
+}
+
+impl std::ops::DerefMut for Row {
+    fn deref_mut(&mut self) -> &mut Outcome {
+        &mut self.outcome
+    }
 }
 
 impl Row {
@@ -53,12 +74,7 @@ impl Row {
         trace: Option<Trace>,
     ) -> Row {
         Row {
-            scenario: outcome.scenario,
-            seed: outcome.seed,
-            completed: outcome.completed,
-            steps: outcome.steps,
-            hash: outcome.hash,
-            metrics: outcome.metrics,
+            outcome,
             params,
             scenario_hash,
             version: PROGRAM_VERSION.to_string(),

@@ -262,6 +262,66 @@ pub fn estimate_cells(doc: &serde_json::Value) -> u64 {
     }
 }
 
+/// A shape as the page's editors hold it: `w × h × d` cells, one byte each (1 filled, 0 empty),
+/// row-major and layers from the ground up (`d` is 1 on a planar lattice).
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
+pub struct Cells {
+    pub w: u32,
+    pub h: u32,
+    pub d: u32,
+    pub cells: Vec<u8>,
+}
+
+/// Reads a text shape of a lattice (`square`, `hex` or `cubic`) into its [`Cells`], with the row
+/// and column of a bad character.
+pub fn cells_of(lattice: &str, text: &str) -> Result<Cells> {
+    let bytes = |cells: Vec<bool>| cells.into_iter().map(u8::from).collect();
+    let planar = |g: Grid2| Cells {
+        w: g.w,
+        h: g.h,
+        d: 1,
+        cells: bytes(g.cells),
+    };
+    match lattice {
+        "square" => parse_square(text).map(planar),
+        "hex" => parse_hex(text).map(planar),
+        "cubic" => parse_cubic(text).map(|g| Cells {
+            w: g.w,
+            h: g.h,
+            d: g.d,
+            cells: bytes(g.cells),
+        }),
+        other => Err(unknown_lattice(other)),
+    }
+}
+
+/// The text of [`Cells`] on a lattice: the inverse of [`cells_of`].
+pub fn text_of(lattice: &str, shape: &Cells) -> Result<String> {
+    let Cells { w, h, d, cells } = shape;
+    let (w, h, d) = (*w, *h, *d);
+    let n = (w as usize) * (h as usize) * (d.max(1) as usize);
+    if cells.len() != n {
+        return Err(Error::field(
+            "cells",
+            format!("{} cells given for a {w}×{h}×{d} shape", cells.len()),
+        ));
+    }
+    let cells: Vec<bool> = cells.iter().map(|&c| c != 0).collect();
+    match lattice {
+        "square" => Ok(square_text(&Grid2 { w, h, cells })),
+        "hex" => Ok(hex_text(&Grid2 { w, h, cells })),
+        "cubic" => Ok(cubic_text(&Grid3 { w, h, d, cells })),
+        other => Err(unknown_lattice(other)),
+    }
+}
+
+fn unknown_lattice(name: &str) -> Error {
+    Error::field(
+        "lattice",
+        format!("unknown lattice '{name}'; known: square, hex, cubic"),
+    )
+}
+
 /// The text form of a square-lattice shape, the inverse of [`parse_square`].
 pub fn square_text(g: &Grid2) -> String {
     let mut out = String::with_capacity(((g.w + 1) * g.h) as usize);

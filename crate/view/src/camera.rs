@@ -105,8 +105,19 @@ impl Camera2D {
     }
 }
 
+/// What is under the pointer: a cell (or none), its code, and in 3-D the face hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
+pub struct Picked {
+    /// The cell, or -1 off the lattice.
+    pub cell: i64,
+    /// The cell's code in the frame drawn (0: empty).
+    pub code: u8,
+    /// In 3-D, the face hit.
+    pub hit: Option<Hit>,
+}
+
 /// A 3-D pick: the occupied cell hit, and the empty cell in front of the face hit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
 pub struct Hit {
     pub cell: u32,
     /// The empty cell in front of the hit face, or -1 when that is off the lattice.

@@ -7,10 +7,13 @@
 //!   WebGL2 ([`planar::gl`], [`cubic::gl`]) or the Canvas 2D fallback ([`planar::canvas`],
 //!   [`cubic::canvas`]), with [`annotate`] drawing labels, arrows and marks over either.
 //!
+//! - [`contract`]: the records that cross to and from the page, whose TypeScript is generated.
+//!
 //! The core never depends on this crate.
 
 pub mod annotate;
 pub mod camera;
+pub mod contract;
 pub mod cubic;
 pub mod geometry;
 pub mod gl;

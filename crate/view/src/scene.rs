@@ -4,6 +4,7 @@
 use crate::camera::Camera;
 use crate::geometry::Grid;
 use kumiki_core::models::{Agent, Event, Layout, Scene};
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 /// A field drawn as a heat map, with its finite range.
@@ -31,7 +32,7 @@ pub struct Frame<'a> {
 }
 
 /// What kind of editing cursor a 3-D view shows, or the keyboard cursor.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum CursorKind {
     Add,
@@ -39,14 +40,15 @@ pub enum CursorKind {
     Cursor,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+/// An editing cursor in 3-D (where a unit would be added or removed), or the keyboard cursor.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, JsonSchema)]
 pub struct Cursor {
     pub cell: u32,
     pub kind: CursorKind,
 }
 
 /// The page's marks over the lattice (its hover, selection, cursor and view options).
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, JsonSchema)]
 #[serde(default, rename_all = "camelCase")]
 pub struct Marks {
     /// Gradient arrows over a field that has them.
@@ -100,7 +102,7 @@ pub struct SceneRef<'a> {
 }
 
 /// What a 3-D frame drew, for the page (and its tests) to read.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, JsonSchema)]
 pub struct RenderStats {
     pub units: u32,
     pub bonds: u32,

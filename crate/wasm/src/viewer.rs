@@ -5,12 +5,11 @@
 use crate::{to_js, Sim};
 use kumiki_core::lattice::LatticeKind;
 use kumiki_core::models::{Layout, Scene};
-use kumiki_view::camera::{Camera, Hit};
+use kumiki_view::camera::{Camera, Picked};
 use kumiki_view::geometry::{hex_corners, Grid, HEX_RADIUS, HEX_ROW};
 use kumiki_view::palette::range;
 use kumiki_view::scene::{Frame, Marks, Overlay};
 use kumiki_view::view::{Kind, View};
-use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use web_sys::{ImageBitmap, OffscreenCanvas};
 
@@ -19,14 +18,6 @@ extern "C" {
     /// `performance.now()`, in the page and in workers alike.
     #[wasm_bindgen(js_namespace = performance, js_name = now)]
     fn performance_now() -> f64;
-}
-
-/// What is under the pointer: a cell (or none), its code, and in 3-D the face hit.
-#[derive(Serialize)]
-struct Picked {
-    cell: i64,
-    code: u8,
-    hit: Option<Hit>,
 }
 
 /// A view on an OffscreenCanvas: camera, marks and renderer (see `kumiki_view::view::View`).

@@ -139,7 +139,7 @@ pub(crate) fn same(a: &Value, b: &Value) -> bool {
 }
 
 /// A graded hand-in: the student's scenario replayed to its end and judged by its exercise.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Grade {
     pub name: String,
     pub met: bool,
@@ -158,6 +158,37 @@ pub struct Grade {
     /// them; `kumiki check` leaves them out).
     #[serde(skip)]
     pub goal_metrics: BTreeMap<String, Value>,
+}
+
+/// A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
+/// it could not be graded.
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[serde(untagged)]
+pub enum Graded {
+    Graded {
+        #[serde(flatten)]
+        grade: Grade,
+        /// The metrics the goal reads, at the end of the replayed run.
+        goal_metrics: BTreeMap<String, Value>,
+    },
+    Failed {
+        /// Why the hand-in could not be graded (a bad link, no exercise).
+        error: String,
+    },
+}
+
+impl Graded {
+    pub fn of(graded: Result<Grade>) -> Graded {
+        match graded {
+            Ok(mut grade) => Graded::Graded {
+                goal_metrics: std::mem::take(&mut grade.goal_metrics),
+                grade,
+            },
+            Err(e) => Graded::Failed {
+                error: e.to_string(),
+            },
+        }
+    }
 }
 
 /// Replays a hand-in and judges it by the exercise it carries, or by `original`'s when the

@@ -5,6 +5,7 @@
 
 use std::collections::BTreeMap;
 
+use schemars::JsonSchema;
 use serde::Serialize;
 use serde_json::Value;
 
@@ -12,9 +13,21 @@ use super::stats::{Comparison, Stats};
 use super::{statistic_of, Carry, PlotSpec, Spread, Statistic, Where};
 use crate::experiment::Row;
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// What kind of plot a figure is (its spec's `kind`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum FigureKind {
+    Lines,
+    Trace,
+    Histogram,
+    Bars,
+    Summary,
+}
+
+/// What a plot draws, as the page's table and the SVG read it.
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct Figure {
-    pub kind: &'static str,
+    pub kind: FigureKind,
     /// The spec's title.
     pub title: String,
     /// What is drawn, in words, from the spec and the rows: "median and interquartile range of
@@ -32,7 +45,7 @@ pub struct Figure {
     pub comparisons: Vec<ComparisonRow>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct Panel {
     /// The facet, in words ("tip load: 0"); empty without facets.
     pub title: String,
@@ -43,14 +56,14 @@ pub struct Panel {
     pub series: Vec<Series>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct Series {
     /// In words: "collision: token", "adaptation: on".
     pub label: String,
     pub points: Vec<Point>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct Point {
     pub x: f64,
     pub y: f64,
@@ -60,7 +73,7 @@ pub struct Point {
     pub n: usize,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct SummaryRow {
     /// The condition: one value per group path, in words.
     pub condition: Vec<String>,
@@ -71,7 +84,7 @@ pub struct SummaryRow {
     pub stats: Option<Stats>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct ComparisonRow {
     pub value: String,
     /// The two conditions, first and second.
@@ -229,7 +242,13 @@ pub fn figures(specs: &[PlotSpec], rows: &[Row], models: &[&str]) -> Vec<Figure>
 pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
     let all: Vec<&Row> = rows.iter().collect();
     let mut f = Figure {
-        kind: "",
+        kind: match spec {
+            PlotSpec::Lines(_) => FigureKind::Lines,
+            PlotSpec::Trace(_) => FigureKind::Trace,
+            PlotSpec::Histogram(_) => FigureKind::Histogram,
+            PlotSpec::Bars(_) => FigureKind::Bars,
+            PlotSpec::Summary(_) => FigureKind::Summary,
+        },
         title: spec.title().to_string(),
         described: String::new(),
         statistic: None,
@@ -246,7 +265,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
             let spread = s.spread.unwrap_or(Spread::Minmax);
             let statistic = statistic_of(s.statistic, spread);
             let ys = s.y.list();
-            f.kind = "lines";
             f.x_label = axis_label(s.x_label.as_deref(), &s.x, models);
             f.y_label = match ys.as_slice() {
                 [one] => axis_label(s.y_label.as_deref(), one, models),
@@ -320,7 +338,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
             let spread = s.spread.unwrap_or(Spread::Sd);
             let statistic = statistic_of(s.statistic, spread);
             let carry = s.carry.unwrap_or(Carry::Last) == Carry::Last;
-            f.kind = "trace";
             f.x_label = s.x_label.clone().unwrap_or_else(|| "step".into());
             f.y_label = axis_label(s.y_label.as_deref(), &format!("metrics.{}", s.y), models);
             let traced: Vec<&Row> = all
@@ -394,7 +411,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
                 .copied()
                 .filter(|r| s.only != Some(Where::Completed) || r.completed)
                 .collect();
-            f.kind = "histogram";
             f.x_label = axis_label(s.x_label.as_deref(), &s.value, models);
             f.y_label = "runs".into();
             let mut total = 0;
@@ -454,7 +470,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
         PlotSpec::Bars(s) => {
             let spread = s.spread.unwrap_or(Spread::Minmax);
             let statistic = statistic_of(s.statistic, spread);
-            f.kind = "bars";
             f.x_label = s.x_label.clone().unwrap_or_else(|| name_of(&s.x));
             f.y_label = axis_label(s.y_label.as_deref(), &s.y, models);
             let cats: Vec<String> = group_by(&all, Some(&s.x))
@@ -499,7 +514,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
         PlotSpec::Summary(s) => {
             let group: Vec<String> = s.group.clone().unwrap_or_else(|| vec!["scenario".into()]);
             let values: Vec<String> = s.values.clone().unwrap_or_else(|| vec!["steps".into()]);
-            f.kind = "summary";
             let mut conditions: Vec<(Vec<String>, Vec<&Row>)> = Vec::new();
             for r in &all {
                 let key: Vec<String> = group

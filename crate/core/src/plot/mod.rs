@@ -17,7 +17,7 @@ use serde_json::{Map, Value};
 use crate::error::{from_value, Error, Result};
 
 /// What a line or bar stands for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Statistic {
     Mean,
@@ -25,7 +25,7 @@ pub enum Statistic {
 }
 
 /// The band or whisker around the statistic.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Spread {
     None,

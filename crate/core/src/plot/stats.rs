@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 /// The statistics of the finite values of one condition.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Stats {
     pub n: usize,
     pub mean: f64,
@@ -71,7 +71,8 @@ pub fn t975(df: usize) -> f64 {
 
 /// Two conditions compared: the difference of means, effect sizes and the Mann-Whitney U test
 /// (two-sided).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[schemars(rename = "StatisticalComparison")]
 pub struct Comparison {
     /// Mean of the second condition minus mean of the first.
     pub difference: f64,

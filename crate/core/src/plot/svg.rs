@@ -5,7 +5,7 @@
 
 use std::fmt::Write;
 
-use super::figure::{spread_words, statistic_words, Figure, Panel};
+use super::figure::{spread_words, statistic_words, Figure, FigureKind, Panel};
 use super::Spread;
 
 pub const COLORS: [&str; 10] = [
@@ -96,7 +96,7 @@ pub fn svg(f: &Figure) -> String {
         escape(&f.described)
     );
     y += 16.0;
-    if f.kind == "summary" {
+    if f.kind == FigureKind::Summary {
         y = summary(&mut body, f, y);
     } else {
         for p in &f.panels {
@@ -105,7 +105,7 @@ pub fn svg(f: &Figure) -> String {
         y = legend(&mut body, f, y);
     }
     let height = y + 12.0;
-    let width = if f.kind == "summary" {
+    let width = if f.kind == FigureKind::Summary {
         SUMMARY_WIDTH
     } else {
         WIDTH
@@ -149,7 +149,7 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         let _ = writeln!(out, "<text x=\"{LEFT}\" y=\"{}\" font-size=\"12\" fill=\"#52606d\">No values to draw.</text>", top + 16.0);
         return top + 28.0;
     }
-    let bars = f.kind == "bars" || f.kind == "histogram";
+    let bars = f.kind == FigureKind::Bars || f.kind == FigureKind::Histogram;
     if bars {
         ylo = ylo.min(0.0);
     }
@@ -157,7 +157,7 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         xlo -= w / 2.0;
         xhi += w / 2.0;
     }
-    if f.kind == "bars" {
+    if f.kind == FigureKind::Bars {
         xlo = -0.5;
         xhi = p.categories.len() as f64 - 0.5;
     }
@@ -206,7 +206,7 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         let _ = writeln!(out, "<text x=\"{}\" y=\"{:.1}\" font-size=\"11\" text-anchor=\"end\" fill=\"#52606d\">{}</text>", LEFT - 6.0, yy + 4.0, short_number(*t));
     }
     let xticks: Vec<(f64, String)> = match f.kind {
-        "bars" => p
+        FigureKind::Bars => p
             .categories
             .iter()
             .enumerate()
@@ -243,7 +243,7 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         let color = COLORS[i % COLORS.len()];
         let _ = writeln!(out, "<g data-series=\"{}\">", escape(&s.label));
         match f.kind {
-            "bars" | "histogram" => {
+            FigureKind::Bars | FigureKind::Histogram => {
                 let slot = match p.bin_width {
                     Some(w) => (xs.at(w) - xs.at(0.0)).abs(),
                     None => (xs.at(1.0) - xs.at(0.0)) * 0.8 / groups,
@@ -343,7 +343,7 @@ fn legend(out: &mut String, f: &Figure, mut y: f64) -> f64 {
         y += 18.0;
         let what = match (f.kind, sp) {
             (_, Spread::None) => format!("{}s; no spread drawn", statistic_words(st)),
-            ("bars", sp) => format!(
+            (FigureKind::Bars, sp) => format!(
                 "bars: {}s; whiskers: {}",
                 statistic_words(st),
                 spread_words(sp)

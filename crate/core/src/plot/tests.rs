@@ -7,6 +7,7 @@ use super::figure::{figures, name_of, value_at, words, Figure};
 use super::{statistic_of, PlotSpec, Spread, Statistic};
 use crate::experiment::{Experiment, Row, Trace};
 use crate::presets;
+use crate::run::Outcome;
 
 /// Rows for every job of `e`, with made-up metric values (a fixed hash of the job, so medians
 /// and means differ), so every plot has something to draw.
@@ -46,12 +47,14 @@ fn made_up_rows(e: &Experiment) -> Vec<Row> {
                 }
             });
             Row {
-                scenario: scenario.name.clone(),
-                seed: job.seed,
-                completed: next() < 700.0,
-                steps: next() as u64,
-                hash: "0".into(),
-                metrics,
+                outcome: Outcome {
+                    scenario: scenario.name.clone(),
+                    seed: job.seed,
+                    completed: next() < 700.0,
+                    steps: next() as u64,
+                    hash: "0".into(),
+                    metrics,
+                },
                 params: job.params.iter().cloned().collect(),
                 scenario_hash: "0".into(),
                 version: "test".into(),

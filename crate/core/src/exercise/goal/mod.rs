@@ -94,7 +94,7 @@ pub struct Outcome<'a> {
 }
 
 /// Whether a goal is met, and why, in words.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, schemars::JsonSchema)]
 pub struct Check {
     pub met: bool,
     pub because: String,
