@@ -4,6 +4,23 @@
 export type CellMark = "ring" | "cross";
 
 /**
+ * A shape as the page's editors hold it: `w × h × d` cells, one byte each (1 filled, 0 empty),
+ * row-major and layers from the ground up (`d` is 1 on a planar lattice).
+ */
+export interface Cells {
+  cells: number[];
+  d: number;
+  h: number;
+  w: number;
+}
+
+/** Whether a goal is met, and why, in words. */
+export interface Check {
+  because: string;
+  met: boolean;
+}
+
+/**
  * One row of the report: a finding, named so that a link can open it, with the experiments
  * whose rows it is computed from.
  */
@@ -32,6 +49,47 @@ export interface Claim {
   verdict: Verdict;
 }
 
+/** A scenario's comparison (its `compare` section), as the page opens it. */
+export type Comparison = {
+  kind: "none";
+} | {
+  kind: "pair";
+  labels: [string, string];
+  second: string;
+} | {
+  kind: "too_large";
+};
+
+export interface ComparisonRow {
+  comparison: StatisticalComparison;
+  /** The two conditions, first and second. */
+  conditions: [string, string];
+  value: string;
+}
+
+/** One key of the envelope, the keys every model's scenario has beside its own. */
+export interface EnvelopeKey {
+  key: string;
+  role: Role;
+}
+
+/** What the page shows of an experiment, and the number of jobs its workers share out. */
+export interface ExperimentInfo {
+  description: string;
+  /** Runs: scenarios × grid combinations × seeds. */
+  jobs: number;
+  name: string;
+  title: string;
+  /** The runs trace metrics (the traces can be exported in long form). */
+  traced: boolean;
+}
+
+/**
+ * The JSON Schema of [`Model::inspect`]'s answer as it crosses to the page: a few facts about one
+ * cell by name, whatever the model says (each model's inspector plugin reads its own).
+ */
+export type Facts = Record<string, unknown>;
+
 /** A scalar field defined on the cells, drawn as an overlay. */
 export interface FieldInfo {
   /** Draw gradient arrows on top of the heatmap. */
@@ -39,6 +97,31 @@ export interface FieldInfo {
   label: string;
   name: string;
 }
+
+/** What a plot draws, as the page's table and the SVG read it. */
+export interface Figure {
+  /** For `summary` with exactly two conditions: one comparison per value. */
+  comparisons: ComparisonRow[];
+  /**
+   * What is drawn, in words, from the spec and the rows: "median and interquartile range of
+   * 10 runs per point".
+   */
+  described: string;
+  kind: FigureKind;
+  log_y: boolean;
+  panels: Panel[];
+  spread?: Spread | null;
+  statistic?: Statistic | null;
+  /** For `summary`: one row per condition and value. */
+  table: SummaryRow[];
+  /** The spec's title. */
+  title: string;
+  x_label: string;
+  y_label: string;
+}
+
+/** What kind of plot a figure is (its spec's `kind`). */
+export type FigureKind = "lines" | "trace" | "histogram" | "bars" | "summary";
 
 /** One claim of the paper beside Kumiki's figure. */
 export interface Finding {
@@ -54,6 +137,33 @@ export interface Finding {
   section: string;
   verdict: Verdict;
 }
+
+/**
+ * A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
+ * it could not be graded.
+ */
+export type Graded = {
+  because: string;
+  /**
+   * Every field that differs from the teacher's exercise, when it is known (the name, which
+   * Hand in sets, left out).
+   */
+  changed: string[];
+  completed: boolean;
+  /** The hand-in's exercise section is not the teacher's (its goal or locks were edited). */
+  exercise_edited: boolean;
+  /** The metrics the goal reads, at the end of the replayed run. */
+  goal_metrics: Record<string, unknown>;
+  hash: string;
+  /** Locked fields the hand-in changed: "robots: 5 → 7". */
+  locked_edited: string[];
+  met: boolean;
+  name: string;
+  steps: number;
+} | {
+  /** Why the hand-in could not be graded (a bad link, no exercise). */
+  error: string;
+};
 
 export type LatticeKind = "square" | "hex" | "cubic";
 
@@ -108,6 +218,48 @@ export interface LessonInfo {
   title: string;
 }
 
+/** A metric's value: a count or a measure, a flag, or null when it is missing (not defined yet, or not finite). */
+export type Metric = number | boolean | null;
+
+/**
+ * One metric a model reports: its name, its unit and what it means in a plain sentence. Each
+ * model lists its own next to its code (`<model>/metrics.rs`), registered in its [`ModelEntry`](crate::entry::ModelEntry);
+ * the page (explanations on hover, units in exports), the CLI (`kumiki metrics`) and the docs
+ * (docs/metrics.md) all read this one table.
+ */
+export interface MetricInfo {
+  /** One sentence, for a reader who has not read the paper. */
+  about: string;
+  name: string;
+  /** What one of it measures: `steps`, `count`, `fraction` (0 to 1), `flag`, `MPa`, ... */
+  unit: string;
+}
+
+/**
+ * The JSON Schema of [`Metrics`] as they cross to the page and into rows: each value a
+ * [`Metric`] in its JSON form (the Rust type is a JSON map, which says no more).
+ */
+export type Metrics = Record<string, Metric>;
+
+export interface Panel {
+  /** Width of a histogram's bins. */
+  bin_width?: number | null;
+  /** Category names of a bar chart (x is the category's index). */
+  categories: string[];
+  series: Series[];
+  /** The facet, in words ("tip load: 0"); empty without facets. */
+  title: string;
+}
+
+export interface Point {
+  /** The spread's ends, when one is drawn. */
+  band?: [number, number] | null;
+  /** Runs behind the point. */
+  n: number;
+  x: number;
+  y: number;
+}
+
 /** What the gallery shows of a built-in scenario. */
 export interface PresetInfo {
   description: string;
@@ -115,6 +267,53 @@ export interface PresetInfo {
   name: string;
   /** The model's title, as its registry entry gives it. */
   title: string;
+}
+
+/** What an edit or an opening would make of the scenario in view. */
+export interface Proposal {
+  /** The whole of the scenario's own problem, when it says more than `problem`. */
+  in_full?: string | null;
+  /**
+   * The cells of its largest shape when it is too large to check here (the worker checks it as
+   * it opens it; it becomes the scenario in view once the worker ran it); 0 when checked here.
+   */
+  large_cells: number;
+  /**
+   * Why it was refused, briefly (under 200 characters): the scenario's own problem, naming the
+   * field and the rule, or an exercise's lock. Null when it may run.
+   */
+  problem?: string | null;
+  /**
+   * The scenario to run, as indented JSON: canonical, every default written out, when it was
+   * checked here; as written when it is too large to check here. Empty when refused.
+   */
+  text: string;
+}
+
+/** What a key of the envelope is. */
+export type Role = "format" | "text" | "setting" | "section";
+
+/**
+ * The result of one run, traceable to its scenario and program: its [`Outcome`] (which it
+ * dereferences to) and where it came from.
+ */
+export interface Row {
+  /** The run reached its goal. */
+  completed: boolean;
+  /** The state hash at the end, in hex. */
+  hash: string;
+  metrics: Metrics;
+  /** The experiment's overrides of this run, by dotted path. */
+  params: Record<string, unknown>;
+  /** The scenario's name. */
+  scenario: string;
+  /** The hash of the scenario without its seed: every seed of one configuration shares it. */
+  scenario_hash: string;
+  seed: number;
+  steps: number;
+  trace?: Trace | null;
+  /** The program that ran it. */
+  version: string;
 }
 
 /**
@@ -142,6 +341,71 @@ export interface Section {
   model: string;
 }
 
+export interface Series {
+  /** In words: "collision: token", "adaptation: on". */
+  label: string;
+  points: Point[];
+}
+
+/** The band or whisker around the statistic. */
+export type Spread = "none" | "minmax" | "sd" | "ci95" | "iqr";
+
+/** What a line or bar stands for. */
+export type Statistic = "mean" | "median";
+
+/**
+ * Two conditions compared: the difference of means, effect sizes and the Mann-Whitney U test
+ * (two-sided).
+ */
+export interface StatisticalComparison {
+  /** Cohen's d: the difference over the pooled sd (NaN when both sds are 0). */
+  cohens_d: number;
+  /** Mean of the second condition minus mean of the first. */
+  difference: number;
+  /** `exact` or `normal`. */
+  method: string;
+  /**
+   * Two-sided p of U: exact (the distribution of U counted) without ties and with
+   * n1·n2 ≤ 10 000, else the normal approximation with tie and continuity correction.
+   */
+  p: number;
+  /**
+   * The rank-biserial correlation 2U/(n1·n2) − 1, from −1 (all of the first below the second)
+   * to 1.
+   */
+  rank_biserial: number;
+  /** U of the first condition: pairs where its value is larger, ties counting one half. */
+  u: number;
+}
+
+/** The statistics of the finite values of one condition. */
+export interface Stats {
+  /**
+   * The 95% confidence interval of the mean, mean ± t(0.975, n − 1) · sd / √n; the mean
+   * itself for one value.
+   */
+  ci95: [number, number];
+  max: number;
+  mean: number;
+  median: number;
+  min: number;
+  n: number;
+  q1: number;
+  q3: number;
+  /** Sample standard deviation (n − 1); 0 for one value. */
+  sd: number;
+}
+
+export interface SummaryRow {
+  completed: number;
+  /** The condition: one value per group path, in words. */
+  condition: string[];
+  runs: number;
+  stats?: Stats | null;
+  unit: string;
+  value: string;
+}
+
 /**
  * A click tool the page offers for this model. Clicking a cell sends `action` with the cell's
  * index added as `"cells": [i]`.
@@ -152,5 +416,39 @@ export interface ToolInfo {
   name: string;
 }
 
+/** A metric sampled during a run: `step[i]` and `values[name][i]`. */
+export interface Trace {
+  step: number[];
+  /** Each traced metric's values, one per sampled step (null where it was missing). */
+  values: Record<string, Metric[]>;
+}
+
+/**
+ * A link's scenario, not yet read, with its model's [`Versions`]: what the page unpacks on its
+ * main thread before it knows whether the scenario is small enough to check there.
+ */
+export interface Unpacked {
+  /** The model's behaviour version in this program. */
+  current: number;
+  /** The model's behaviour version when the link was made. */
+  made_with: number;
+  /** The scenario JSON, indented, as the link holds it. */
+  scenario: string;
+}
+
 /** Whether the paper's claim holds in Kumiki, where the paper states a comparison. */
 export type Verdict = "holds" | "differs" | "not_stated";
+
+/**
+ * The behaviour versions of a link's model: the one that made the link and this program's. The
+ * page warns when they differ.
+ */
+export interface Versions {
+  /** The model's behaviour version in this program. */
+  current: number;
+  /** The model's behaviour version when the link was made. */
+  made_with: number;
+}
+
+/** The envelope's keys, in the order a form shows them (kumiki_core::scenario::ENVELOPE). */
+export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"}];

@@ -14,11 +14,12 @@ import { setupExperiments } from './ui/experiments';
 import { setupGallery } from './ui/gallery';
 import { setupGrade } from './ui/grade';
 import { registerOffline } from './ui/offline';
-import { change, isLarge, LargeOpening } from './ui/opening';
+import { LARGE_CELLS, LargeOpening } from './ui/opening';
 import { setupRecordDialog } from './ui/record';
 import { setupClaimLinks } from './ui/reproduction';
 import { StructureViews } from './ui/structure';
 import { setupWelcome } from './ui/welcome';
+import type { Proposal } from './contract.gen';
 import * as core from './wasm';
 
 const DEFAULT_PRESET = 'amas-L';
@@ -34,6 +35,8 @@ let embed: Embed | null = null;
 const prefs = loadPrefs();
 const persistPrefs = () => savePrefs(prefs);
 const session = new Session();
+/** The scenario in view, held in the wasm between edits. */
+const draft = new core.Draft(LARGE_CELLS);
 const banner = new Banner();
 /** Frames received and drawn, read by the page benchmark. */
 let framesDrawn = 0;
@@ -57,6 +60,8 @@ session.on('frame', (frame) => view.setFrame(frame));
 
 const sim = new SimClient({
   loaded(layout, json) {
+    // The worker checked and wrote back a scenario the page did not check (a large one).
+    if (json !== session.scenario) draft.ran(json);
     large.loaded(json);
     // A scenario opened or the run was reset: an earlier message no longer applies.
     if (!banner.keep) banner.dismiss();
@@ -90,6 +95,7 @@ const sim = new SimClient({
   scenario(json) {
     // A click recorded a disturbance (and, in the past, forked the run): undo brings back the
     // scenario before it.
+    draft.ran(json);
     session.recorded(json);
     saveScenario(json);
     announcer.disturbed((session.doc().disturbances as Disturbance[] | undefined) ?? [], inspector.cellText);
@@ -167,46 +173,38 @@ function loadDefault(): boolean {
   return load(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
 }
 
-/** Loads a scenario text: validated first, so a bad one never replaces a good run. */
-function load(json: string, { record = true, quiet = false, onProblem, opens = false }: LoadOptions = {}): boolean {
-  // `validity`: the problem is the scenario's own, so its whole message can be offered; a lock's
-  // refusal has no more to say (and a large scenario is not read on this thread to find out).
-  const refuse = (problem: string, validity = false) => {
-    if (onProblem) onProblem(problem);
-    else if (!quiet) reportProblem(validity ? json : null, problem);
-    return false;
-  };
+/** Loads a scenario text: checked first, so a bad one never replaces a good run. */
+function load(json: string, { opens = false, ...options }: LoadOptions = {}): boolean {
   // An edit keeps the exercise in force and its locked fields at the teacher's values.
-  const locked = (text: string) => (opens || !session.scenario ? undefined : core.exerciseGuard(session.scenario, text));
+  return proceed(draft.open(json, !opens), options);
+}
+
+/**
+ * Runs what an opening or an edit proposed, or says why it cannot run: the proposal's own problem
+ * in brief, with the whole of it a click away when it says more.
+ */
+function proceed(proposal: Proposal, { record = true, quiet = false, onProblem }: LoadOptions = {}): boolean {
+  if (proposal.problem) {
+    if (onProblem) onProblem(proposal.problem);
+    else if (!quiet) reportProblem(proposal.problem, proposal.in_full ?? '');
+    return false;
+  }
   const opened = (normal: string) => {
     if (record) session.remember(session.scenario, normal);
     share.leaveLink();
   };
-  // A large scenario is validated by the worker, so its text is held to the locks as it is.
-  const lockedLarge = isLarge(json) ? locked(json) : undefined;
-  if (lockedLarge) return refuse(lockedLarge);
-  if (large.begin(json, opened, () => open(json))) return true;
-  let normal: string;
-  try {
-    normal = core.normalize(json);
-  } catch (e) {
-    return refuse(core.message(e), true);
+  if (proposal.large_cells > 0) {
+    large.begin(proposal.large_cells, opened, () => open(proposal.text));
+    return true;
   }
-  const problem = locked(normal);
-  if (problem) return refuse(problem);
-  if (record) session.remember(session.scenario, normal);
-  session.scenario = normal;
-  open(normal);
-  share.leaveLink();
+  opened(proposal.text);
+  session.scenario = proposal.text;
+  open(proposal.text);
   return true;
 }
 
-/**
- * Says why a scenario cannot run, briefly; when `json` is given and its whole message says more,
- * the rest is a click away.
- */
-function reportProblem(json: string | null, brief: string) {
-  const full = json === null ? '' : core.problemInFull(json);
+/** Says why a scenario cannot run, briefly; when the whole message says more, the rest is a click away. */
+function reportProblem(brief: string, full: string) {
   const text = (message: string) => `This scenario cannot run: ${message}`;
   banner.report(text(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(text(full)) } : undefined);
 }
@@ -231,15 +229,17 @@ const page: Page = {
   banner,
   prefs,
   persistPrefs,
+  draft,
   load,
   applyChange(key, valueJson, onError) {
     let problem: string | null = null;
-    try {
-      load(change(session.scenario, key, valueJson), { onProblem: (message) => (problem = message) });
-    } catch (e) {
-      problem = core.message(e);
-    }
+    proceed(draft.edit(key, valueJson), { onProblem: (message) => (problem = message) });
     if (problem) onError?.(problem);
+    return problem;
+  },
+  applyChanges(changes) {
+    let problem: string | null = null;
+    proceed(draft.editAll(changes), { onProblem: (message) => (problem = message) });
     return problem;
   },
 };

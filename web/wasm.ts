@@ -3,8 +3,7 @@
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
-import type { Finding } from './contract.gen';
-import type { ExperimentInfo, Figure, LessonInfo, MetricInfo, PresetInfo } from './types';
+import type { Cells, Comparison, ExperimentInfo, Figure, Finding, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Proposal, Unpacked } from './contract.gen';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
@@ -33,36 +32,70 @@ export const presets = (): PresetInfo[] => core.presets() as PresetInfo[];
 export const presetJson = (name: string): string => core.preset_json(name);
 export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];
 export const lessonJson = (name: string): string => core.lesson_json(name);
-export const normalize = (json: string): string => core.normalize_scenario(json);
-/** A scenario's comparison: the second run's scenario and the two runs' names, or null (crate/core/src/compare.rs). */
-export function comparePair(json: string): { second: string; labels: [string, string] } | null {
-  const pair = core.compare_pair(json);
-  return pair ? { second: pair[0], labels: [pair[1], pair[2]] } : null;
-}
-/** The whole of what is wrong with scenario JSON ("" when nothing is): `normalize` throws it briefly. */
-export const problemInFull = (json: string): string => core.scenario_problem_in_full(json);
-/** The link of a scenario the core validated before (the page's own); nothing is rebuilt. */
-export const encodeLink = (json: string): string => core.pack_link(json);
-/** The cells of the largest shape in scenario JSON, read from its text without building it. */
-export const estimateCells = (json: string): number => core.estimate_cells(json);
 /** The most cells a shape may span in the page; a scenario over it is refused. */
 export const pageShapeCells = (): number => core.page_shape_cells();
 /** A link's scenario JSON, not yet validated, and the model versions that made and read it. */
-export const unpackLink = (link: string): { scenario: string; made_with: number; current: number } =>
-  core.unpack_link(link) as { scenario: string; made_with: number; current: number };
-/** Sets one dotted path without validating: for a large scenario, which the worker validates. */
-export const setPath = (json: string, path: string, valueJson: string): string => core.set_scenario_path(json, path, valueJson);
+export const unpackLink = (link: string): Unpacked => core.unpack_link(link) as Unpacked;
 /** A fresh seed from crypto.getRandomValues (through getrandom), 0 to 2^53 − 1. */
 export const freshSeed = (): number => core.fresh_seed();
-/** What is wrong with a goal: its syntax, or a metric or scenario field the model does not have. */
-export const goalProblem = (text: string, metrics: string[], scenario: string): string | undefined => core.goal_problem(text, metrics, scenario);
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
 /** The title of the teacher's exercise (a link or a lesson's name) the Grade view grades by; throws why it cannot. */
 export const exerciseTitle = (text: string): string => core.exercise_title(text);
-/** Why an edit may not replace the exercise in force (a locked field, the exercise itself); undefined when it may. */
-export const exerciseGuard = (current: string, next: string): string | undefined => core.exercise_guard(current, next);
-export const override = (json: string, path: string, valueJson: string): string => core.override_scenario(json, path, valueJson);
+
+/**
+ * The scenario in view, held in the wasm between edits (crate/core/src/draft.rs): opening a text
+ * reads and checks it once; an edit changes the scenario held and checks the result once. Either
+ * answers a Proposal: the text to run, or why it was refused. A scenario whose shapes span more
+ * than `checkUpToCells` is left to the worker to check, and is the one in view once it ran.
+ */
+export class Draft {
+  private handle: core.Draft | null = null;
+
+  constructor(private readonly checkUpToCells: number) {}
+
+  /** Made at first use: the module is loaded by then. */
+  private get draft(): core.Draft {
+    this.handle ??= new core.Draft(this.checkUpToCells);
+    return this.handle;
+  }
+
+  /** Opens a scenario text; `keepLocks` holds it to the exercise in view (an edit of the JSON text). */
+  open(json: string, keepLocks: boolean): Proposal {
+    return this.draft.open(json, keepLocks) as Proposal;
+  }
+
+  /** Sets one dotted path to `valueJson` (JSON, or else text). */
+  edit(path: string, valueJson: string): Proposal {
+    return this.draft.edit(path, valueJson) as Proposal;
+  }
+
+  /** Sets several dotted paths at once; the result is checked once. */
+  editAll(changes: Record<string, unknown>): Proposal {
+    return this.draft.edit_all(JSON.stringify(changes)) as Proposal;
+  }
+
+  /** The worker runs `json` (it opened a large scenario, or recorded a click). */
+  ran(json: string) {
+    this.draft.ran(json);
+  }
+
+  /** The share-link payload of the scenario in view, or of it named `name` (a hand-in). */
+  link(name?: string): string {
+    return this.draft.link(name);
+  }
+
+  /** The scenario in view's comparison: none, the second run's scenario and the two names, or too large to run twice. */
+  comparison(): Comparison {
+    return this.draft.comparison() as Comparison;
+  }
+
+  /** What is wrong with a goal: its syntax, or a metric or scenario field the model does not have. */
+  goalProblem(goal: string, metrics: string[]): string | undefined {
+    return this.draft.goal_problem(goal, metrics);
+  }
+}
+
 export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
 export const experimentJson = (name: string): string => core.experiment_json(name);
 /** A model's helper call (see `kumiki queries`): JSON arguments, a JSON answer. */
@@ -115,15 +148,9 @@ export function modelSchema(model: string): ModelSchema | undefined {
   return def?.properties ? { properties: def.properties, defs } : undefined;
 }
 
-export interface Shape {
-  w: number;
-  h: number;
-  d: number;
-  cells: number[];
-}
 /** A text shape read by the core's rules; throws with the row and column of a bad character. */
-export const parseShape = (lattice: 'square' | 'hex' | 'cubic', text: string): Shape => core.shape_parse(lattice, text) as Shape;
-export const formatShape = (lattice: 'square' | 'hex' | 'cubic', s: Shape): string => core.shape_format(lattice, s.w, s.h, s.d, Uint8Array.from(s.cells));
+export const parseShape = (lattice: LatticeKind, text: string): Cells => core.shape_parse(lattice, text) as Cells;
+export const formatShape = (lattice: LatticeKind, s: Cells): string => core.shape_format(lattice, s.w, s.h, s.d, Uint8Array.from(s.cells));
 export const experimentInfo = (json: string): ExperimentInfo => {
   const runner = new core.ExperimentRunner(json);
   try {
@@ -153,7 +180,7 @@ export class Geometry {
   }
 
   constructor(
-    readonly lattice: 'square' | 'hex' | 'cubic',
+    readonly lattice: LatticeKind,
     readonly dims: [number, number, number],
   ) {
     this.g = new core.LatticeGeometry(lattice, dims[0], dims[1], dims[2]);

@@ -2,8 +2,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use kumiki_wasm::{
-    decode_link, encode_link, estimate_cells, fresh_seed, link_model_versions, model_query,
-    pack_link, preset_json, set_scenario_path, unpack_link, ExperimentRunner, Sim,
+    decode_link, encode_link, fresh_seed, link_model_versions, model_query, preset_json,
+    unpack_link, Draft, ExperimentRunner, Sim,
 };
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -151,12 +151,18 @@ fn fresh_seeds_come_from_crypto_and_fit_a_scenario() {
 
 #[wasm_bindgen_test]
 fn large_scenarios_are_measured_and_packed_without_building() {
+    let field =
+        |v: &wasm_bindgen::JsValue, key: &str| js_sys::Reflect::get(v, &key.into()).unwrap();
     let json = preset_json("amas-L").unwrap();
-    assert_eq!(estimate_cells(&json), 14.0 * 12.0);
-    assert_eq!(estimate_cells("not json"), 0.0);
-    let big = set_scenario_path(&json, "target", r#"{"rect": [2048, 2040]}"#).unwrap();
-    assert_eq!(estimate_cells(&big), 2048.0 * 2040.0);
-    let link = pack_link(&json).unwrap();
+    let mut draft = Draft::new(f64::from(1 << 18));
+    let small = draft.open(&json, false).unwrap();
+    assert_eq!(field(&small, "large_cells").as_f64(), Some(0.0));
+    assert_eq!(field(&small, "text").as_string(), Some(json.clone()));
+    let big = draft.edit("target", r#"{"rect": [2048, 2040]}"#).unwrap();
+    assert_eq!(field(&big, "large_cells").as_f64(), Some(2048.0 * 2040.0));
+    assert!(field(&big, "problem").is_null());
+    // The large one is the worker's to check: until it ran, the scenario in view is the first.
+    let link = draft.link(None).unwrap();
     assert_eq!(link, encode_link(&json).unwrap());
     let unpacked = unpack_link(&link).unwrap();
     let scenario = js_sys::Reflect::get(&unpacked, &"scenario".into())

@@ -5,6 +5,7 @@ import type { Session } from '../session';
 import type { SimClient } from '../sim/client';
 import type { Prefs } from '../store';
 import type { Banner } from '../ui/banner';
+import type { Draft } from '../wasm';
 
 export interface LoadOptions {
   /** The scenario replaced can be brought back by undo (default true). */
@@ -27,8 +28,12 @@ export interface Page {
   banner: Banner;
   prefs: Prefs;
   persistPrefs(): void;
-  /** Loads a scenario text: validated first, so a bad one never replaces a good run. */
+  /** The scenario in view, held in the wasm: its link, its comparison, a goal's names checked against it. */
+  draft: Draft;
+  /** Loads a scenario text: checked first, so a bad one never replaces a good run. */
   load(json: string, options?: LoadOptions): boolean;
-  /** Changes one top-level key through the core; returns the problem, or null when applied. */
+  /** Changes one dotted path (`valueJson` is JSON, or else text); returns the problem, or null when applied. */
   applyChange(key: string, valueJson: string, onError?: (problem: string) => void): string | null;
+  /** Changes several dotted paths at once, checked together; returns the problem, or null when applied. */
+  applyChanges(changes: Record<string, unknown>): string | null;
 }

@@ -1,7 +1,8 @@
 // The run panel: the transport (play, step, reset, speed, timeline, seed), the step count, status,
 // metrics and chart of each frame, and the overlays, tools and legend of the model in view.
 import * as core from '../wasm';
-import type { Frame, MetricInfo, Metrics } from '../types';
+import type { MetricInfo, Metrics } from '../contract.gen';
+import type { Frame } from '../types';
 import { MetricChart, type RunLabels } from '../ui/chart';
 import { byId, clear, el, formatNumber } from '../ui/dom';
 import { SPEED_MAX, speedText, stepsPerSecond } from '../ui/speed';
@@ -100,18 +101,12 @@ export function setupRunPanel(page: Page): RunPanel {
   byId('reset').addEventListener('click', reset);
 
   const seedInput = byId<HTMLInputElement>('seed');
-  function setSeed(seed: number) {
-    page.applyChange('seed', String(seed), (problem) => page.banner.report(`Seed: ${problem}`));
+  /** Sets the seed as written: the core checks it (a whole number it can carry exactly) and says why not. */
+  function setSeed(seed: string) {
+    page.applyChange('seed', seed || '""', (problem) => page.banner.report(`The seed was not changed: ${problem}`));
   }
-  seedInput.addEventListener('change', () => {
-    const v = Number(seedInput.value);
-    if (!Number.isSafeInteger(v) || v < 0) {
-      page.banner.report('The seed is a whole number from 0 to 9007199254740991.');
-      return;
-    }
-    setSeed(v);
-  });
-  byId('new-seed').addEventListener('click', () => setSeed(core.freshSeed()));
+  seedInput.addEventListener('change', () => setSeed(seedInput.value.trim()));
+  byId('new-seed').addEventListener('click', () => setSeed(String(core.freshSeed())));
 
   // ---- frames ----
 

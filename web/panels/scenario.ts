@@ -1,10 +1,10 @@
 // The scenario panel: the parameter form, the model's own editor, the JSON text, undo and redo,
 // and the classroom exercise (the student's panel on the run tab and the teacher's editor).
+import { ENVELOPE } from '../contract.gen';
 import { modelEditors, type MountedEditor } from '../models/index';
 import type { Exercise } from '../scenario.gen';
 import { byId, clear, displayText, download, el } from '../ui/dom';
 import { renderMarkdown } from '../ui/markdown';
-import { change } from '../ui/opening';
 import { renderParams } from '../ui/params';
 import { renderReproduction } from '../ui/reproduction';
 import * as core from '../wasm';
@@ -67,8 +67,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     const student = byId<HTMLInputElement>('exercise-student').value.trim();
     const out = byId('exercise-handin-out');
     try {
-      const handin = student ? core.override(session.scenario, 'name', JSON.stringify(student)) : session.scenario;
-      const url = `${location.origin}${location.pathname}#${core.encodeLink(handin)}`;
+      const url = `${location.origin}${location.pathname}#${page.draft.link(student || undefined)}`;
       out.textContent = url;
       handedIn(url, student);
       await navigator.clipboard?.writeText(url).then(
@@ -87,7 +86,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
   function showGoalProblem(): boolean {
     // The goal's names are checked against the model in view: its metrics and its scenario.
     const metrics = Object.keys(session.frame?.metrics ?? {});
-    const problem = goalInput.value.trim() ? core.goalProblem(goalInput.value, metrics, session.scenario) : 'write the goal the run must meet';
+    const problem = goalInput.value.trim() ? page.draft.goalProblem(goalInput.value, metrics) : 'write the goal the run must meet';
     byId('ex-goal-problem').textContent = problem ?? '';
     goalInput.setAttribute('aria-invalid', problem ? 'true' : 'false');
     return !problem;
@@ -102,7 +101,9 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
     byId<HTMLTextAreaElement>('ex-hints').value = (current?.hints ?? []).join('\n\n');
     const locked = byId('ex-locked');
     clear(locked);
-    for (const key of Object.keys(doc).filter((k) => !['version', 'model', 'exercise', 'disturbances'].includes(k))) {
+    // Every setting may be locked: the model's keys and the envelope's texts and settings.
+    const fixed = new Set(ENVELOPE.filter((k) => k.role === 'format' || k.role === 'section').map((k) => k.key));
+    for (const key of Object.keys(doc).filter((k) => !fixed.has(k))) {
       const box = el('input', { type: 'checkbox', value: key });
       box.checked = key in (current?.locked ?? {});
       locked.append(el('label', { class: 'check' }, box, ` ${key.replace(/_/g, ' ')}`));
@@ -177,17 +178,7 @@ export function setupScenarioPanel(page: Page, selectTab: (name: string) => void
         root.append(mount);
         editor = spec.mount(mount, {
           scenario: () => JSON.parse(session.scenario) as Record<string, unknown>,
-          change: (changes) => {
-            let next = session.scenario;
-            try {
-              for (const [k, v] of Object.entries(changes)) next = change(next, k, JSON.stringify(v));
-            } catch (e) {
-              return core.message(e);
-            }
-            let problem: string | null = null;
-            page.load(next, { onProblem: (message) => (problem = message) });
-            return problem;
-          },
+          change: (changes) => page.applyChanges(changes),
           layout: () => session.layout,
         });
       }

@@ -35,7 +35,7 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
 
   function scenarioLink(): string {
     try {
-      return `${location.origin}${location.pathname}#${core.encodeLink(session.scenario)}`;
+      return `${location.origin}${location.pathname}#${page.draft.link()}`;
     } catch {
       return session.scenario;
     }
@@ -65,7 +65,7 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
   byId('copy-link').addEventListener('click', async () => {
     let payload: string;
     try {
-      payload = core.encodeLink(session.scenario);
+      payload = page.draft.link();
     } catch (e) {
       banner.report(`No link can be made: ${core.message(e)}`);
       return;
@@ -87,11 +87,10 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
     const hash = location.hash.slice(1);
     // An experiment link (`x1.`) is the Experiments panel's, a claim's (`claim=`) the About panel's.
     if (!hash || hash.startsWith('x1.') || hash.startsWith('claim=')) return false;
-    /** The link's scenario text, once unpacked: what the whole message is read from. */
-    let text: string | null = null;
+    /** Why the link cannot be opened: brief, and whole when that says more. */
+    let problem: { brief: string; full: string };
     try {
       const unpacked = core.unpackLink(hash);
-      text = unpacked.scenario;
       const previous = session.scenario;
       const remember = (json: string) => {
         session.remember(previous, json);
@@ -103,37 +102,36 @@ export function setupSharePanel(page: Page, { large, open, embedded }: ShareDeps
         linkNotice.textContent = `This link was made with ${made_with < current ? 'an earlier' : 'a newer'} Kumiki; results may differ.`;
         linkNotice.hidden = made_with === current;
       };
-      // A large scenario is validated by the worker as it opens (once agreed to, when it needs
+      // A large scenario is checked by the worker as it opens (once agreed to, when it needs
       // much memory); a small one here, at once.
-      const started = large.begin(unpacked.scenario, remember, () => {
-        notice();
-        open(unpacked.scenario);
-      });
-      if (!started) {
-        const json = core.normalize(unpacked.scenario);
-        remember(json);
-        session.scenario = json;
-        notice();
-        open(json);
+      const proposal = page.draft.open(unpacked.scenario, false);
+      if (!proposal.problem) {
+        if (proposal.large_cells > 0)
+          large.begin(proposal.large_cells, remember, () => {
+            notice();
+            open(proposal.text);
+          });
+        else {
+          remember(proposal.text);
+          session.scenario = proposal.text;
+          notice();
+          open(proposal.text);
+        }
+        banner.dismiss();
+        return true;
       }
-      banner.dismiss();
-      return true;
+      problem = { brief: proposal.problem, full: proposal.in_full ?? '' };
     } catch (e) {
-      // The message is brief; the whole of it is a click away when there is more.
-      const say = (message: string) => `This link could not be opened, so your last scenario is shown instead.\n${message}`;
-      const brief = core.message(e);
-      const full = text === null ? '' : core.problemInFull(text);
-      banner.report(say(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(say(full)) } : undefined);
-      return false;
+      problem = { brief: core.message(e), full: '' };
     }
+    // The message is brief; the whole of it is a click away when there is more.
+    const say = (message: string) => `This link could not be opened, so your last scenario is shown instead.\n${message}`;
+    const { brief, full } = problem;
+    banner.report(say(brief), full && full !== brief ? { label: 'Show all of it', run: () => banner.report(say(full)) } : undefined);
+    return false;
   }
   window.addEventListener('hashchange', () => {
-    if (
-      location.hash.length > 1 &&
-      !location.hash.startsWith('#x1.') &&
-      !location.hash.startsWith('#claim=') &&
-      core.encodeLink(session.scenario) !== location.hash.slice(1)
-    )
+    if (location.hash.length > 1 && !location.hash.startsWith('#x1.') && !location.hash.startsWith('#claim=') && page.draft.link() !== location.hash.slice(1))
       openHash();
   });
 

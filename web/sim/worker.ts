@@ -6,7 +6,9 @@
 // Recordings are made here too (web/sim/encode.ts): each frame is stepped, drawn and encoded next
 // to the view, and only the finished file goes to the page.
 import init, { Sim, Viewer, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
-import type { ChartBand, Frame, Metrics, RenderStats, SceneInfo } from '../types';
+import type { Check, Facts, Metrics, Scene } from '../contract.gen';
+import type { ChartBand, Frame } from '../types';
+import type { RenderStats } from '../view.gen';
 import type { FromWorker, ToWorker } from './protocol';
 import { encode, type RecordHost } from './encode';
 import { Cancelled, type RecordSettings } from './record';
@@ -122,7 +124,7 @@ function sendFrame(force = false) {
       hash = s.hash();
       nextHashAt = now + Math.max(HASH_EVERY_MS, (performance.now() - now) / HASH_SHARE);
     }
-    const scene = s.scene_if_changed() as SceneInfo | null;
+    const scene = s.scene_if_changed() as Scene | null;
     const range = overlay ? viewer?.overlay_range() : undefined;
     return {
       steps: s.steps(),
@@ -228,7 +230,7 @@ function chartBand(s: Sim, metric: string): ChartBand {
 
 /** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
 function judge(s: Sim) {
-  const result = guard('step', () => s.check_goal() as { met: boolean; because: string } | undefined);
+  const result = guard('step', () => s.check_goal() as Check | undefined);
   if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps() });
 }
 
@@ -348,7 +350,7 @@ function handle(msg: ToWorker) {
       if (!created) return;
       sim?.free();
       sim = created;
-      maxSteps = (JSON.parse(created.scenario_json()) as { max_steps: number }).max_steps;
+      maxSteps = created.max_steps();
       post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
       post({ type: 'playing', playing: false });
       awaitingAck = false;
@@ -423,7 +425,7 @@ function handle(msg: ToWorker) {
     case 'inspect': {
       if (!sim) return;
       const s = sim;
-      const facts = guard('step', () => s.inspect(msg.cell) as Record<string, unknown>);
+      const facts = guard('step', () => s.inspect(msg.cell) as Facts);
       if (facts) post({ type: 'inspected', id: msg.id, cell: msg.cell, facts });
       return;
     }

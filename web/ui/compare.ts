@@ -8,14 +8,17 @@ import type { Page } from '../panels/page';
 import type { RunPanel } from '../panels/run';
 import { View } from '../render/view';
 import { SimClient } from '../sim/client';
+import { type Comparison, ENVELOPE } from '../contract.gen';
 import type { Frame } from '../types';
 import * as core from '../wasm';
 import { byId, clear, el } from './dom';
-import { isLarge } from './opening';
 import { choices, resolve } from './params';
 
-/** Keys a comparison never varies: the envelope's texts and sections, and the step limit. */
-const NOT_COMPARED = new Set(['version', 'model', 'name', 'description', 'disturbances', 'exercise', 'compare', 'max_steps']);
+/**
+ * Keys the page does not offer to vary: those of the envelope a comparison cannot vary (all but its
+ * settings), and the step limit, which would only cut one run short.
+ */
+const NOT_COMPARED = new Set([...ENVELOPE.filter((k) => k.role !== 'setting').map((k) => k.key), 'max_steps']);
 
 /** One setting a second run may change, and the values it may take there. */
 interface Setting {
@@ -87,16 +90,15 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
 
   /** Opens, changes or closes the comparison as the scenario in view says. */
   function follow() {
-    let pair: ReturnType<typeof core.comparePair> = null;
-    // A large scenario is never read on this thread, and is not run twice: the second run would
-    // double the memory the page asked about.
-    const large = isLarge(session.scenario);
-    if (large && session.scenario.includes('"compare"')) error.textContent = 'This scenario is too large to run twice side by side; only its own run is shown.';
+    let comparison: Comparison = { kind: 'none' };
     try {
-      if (!large) pair = core.comparePair(session.scenario);
+      comparison = page.draft.comparison();
     } catch {
       // The scenario in view was checked when it opened.
     }
+    // A large scenario is not run twice: the second run would double the memory the page asked about.
+    if (comparison.kind === 'too_large') error.textContent = 'This scenario is too large to run twice side by side; only its own run is shown.';
+    const pair = comparison.kind === 'pair' ? comparison : null;
     // The first run's view changes size as the second appears or goes: it is framed again once
     // resized (the resize observer reports in the next frame, after its animation callbacks).
     if (!!pair !== document.body.classList.contains('comparing')) requestAnimationFrame(() => requestAnimationFrame(() => page.view.fit()));

@@ -1,21 +1,20 @@
 // Large scenarios open in the simulation worker first, and one estimated to need much memory
-// only once the user agrees. Validating a scenario builds its model,
-// which for a 4096 × 4096 lattice takes seconds; on the main thread that would freeze the page.
-// A scenario whose shapes span more than LARGE_CELLS cells (read from its text, nothing built) is
-// therefore sent straight to the worker, which validates it while it builds its run, and the page
-// shows a notice with an indeterminate bar and a way to stop until the worker answers. Its changes
-// (a new seed, a field) are made without validation and validated by the worker in turn.
+// only once the user agrees. Checking a scenario lays out its shapes, which for a 4096 × 4096
+// lattice takes seconds; on the main thread that would freeze the page. The scenario in view
+// (web/wasm.ts, Draft) therefore checks only scenarios whose shapes span up to LARGE_CELLS cells
+// (counted from the text, nothing built); a larger one is sent straight to the worker, which checks
+// it while it builds its run, and the page shows a notice with an indeterminate bar and a way to
+// stop until the worker answers. Its changes (a new seed, a field) are checked by the worker in
+// turn.
 import { byId } from './dom';
 import * as core from '../wasm';
 
 /**
- * Above this many cells the main thread does not build a scenario. Building costs about 0.2 µs a
+ * Above this many cells the main thread does not check a scenario. Checking costs about 0.2 µs a
  * cell natively and about twice that in wasm: 2^18 cells stay well under 0.1 s on the main thread
  * of a busy machine; the largest (4096 × 4096, 64 times more) take seconds.
  */
-const LARGE_CELLS = 1 << 18;
-
-export const isLarge = (json: string): boolean => core.estimateCells(json) > LARGE_CELLS;
+export const LARGE_CELLS = 1 << 18;
 
 /**
  * Memory a scenario adds to the page, per cell of its largest shape, measured in headless
@@ -32,11 +31,6 @@ export const ASK_ABOVE_MB = 128;
 /** Megabytes a scenario is estimated to add to the page, from its text (nothing built). */
 export function memoryEstimateMb(cells: number): number {
   return (cells * BYTES_PER_CELL) / 2 ** 20;
-}
-
-/** One dotted-path change: validated at once for a small scenario, by the worker for a large one. */
-export function change(json: string, path: string, valueJson: string): string {
-  return isLarge(json) ? core.setPath(json, path, valueJson) : core.override(json, path, valueJson);
 }
 
 /** The notice shown while the worker opens a large scenario, and what to do once it has. */
@@ -71,13 +65,11 @@ export class LargeOpening {
   }
 
   /**
-   * Starts opening `json` in the worker when it is large: shows the notice and keeps `opened`
-   * for when the worker has loaded it (it gets the worker's canonical JSON). False for a scenario
-   * the main thread may validate itself.
+   * Starts opening a large scenario (its largest shape spans `cells`) in the worker: shows the
+   * notice and keeps `opened` for when the worker has loaded it (it gets the worker's canonical
+   * JSON). `start` sends it to the worker, at once or once the user agrees.
    */
-  begin(json: string, opened: (json: string) => void, start: () => void): boolean {
-    const cells = core.estimateCells(json);
-    if (cells <= LARGE_CELLS) return false;
+  begin(cells: number, opened: (json: string) => void, start: () => void) {
     const mb = memoryEstimateMb(cells);
     // One over the page's limits is refused by the worker at once: nothing to ask about.
     if (mb > ASK_ABOVE_MB && cells > this.agreed && cells <= core.pageShapeCells()) {
@@ -86,11 +78,10 @@ export class LargeOpening {
         this.open(cells, opened);
         start();
       });
-      return true;
+      return;
     }
     this.open(cells, opened);
     start();
-    return true;
   }
 
   /**

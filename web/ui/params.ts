@@ -2,11 +2,14 @@
 // select for every choice, bounds and help text from the schema), falling back to the value's own
 // type for a key the schema does not describe. A change is validated by the core; an invalid value
 // stays in its field with the core's message under it.
+import { ENVELOPE } from '../contract.gen';
 import type { ModelSchema, SchemaNode } from '../wasm';
 import { clear, el } from './dom';
 
-const HIDDEN = new Set(['version', 'model', 'disturbances', 'exercise', 'compare']);
-const ORDER = ['name', 'description', 'max_steps'];
+/** The envelope's format keys and sections, which have editors of their own (or none). */
+const HIDDEN = new Set(ENVELOPE.filter((k) => k.role === 'format' || k.role === 'section').map((k) => k.key));
+/** The envelope's texts and settings come first, in the core's order; the model's keys follow. */
+const ORDER = ENVELOPE.filter((k) => !HIDDEN.has(k.key)).map((k) => k.key);
 
 export type Apply = (key: string, valueJson: string) => string | null;
 

@@ -16,21 +16,10 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::error::{Error, Result};
+use crate::scenario::{envelope_role, Role};
 
 /// The longest label, in characters.
 pub const MAX_LABEL_CHARS: usize = 60;
-
-/// Keys of the envelope a comparison may not vary: they name or describe the scenario, or are
-/// themselves sections, so varying them would not change the run.
-const FIXED: &[&str] = &[
-    "version",
-    "model",
-    "name",
-    "description",
-    "disturbances",
-    "exercise",
-    "compare",
-];
 
 /// A scenario's `compare` section: the one setting the second run changes.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
@@ -60,7 +49,10 @@ impl Compare {
         let compare: Compare =
             serde_json::from_value(section).map_err(|e| Error::field("", e.to_string()))?;
         let head = compare.path.split('.').next().unwrap_or_default();
-        if compare.path.is_empty() || FIXED.contains(&head) {
+        // The envelope's other keys name or describe the scenario, or are sections themselves:
+        // varying them would not change the run.
+        let fixed = envelope_role(head).is_some_and(|role| role != Role::Setting);
+        if compare.path.is_empty() || fixed {
             return Err(Error::field(
                 "path",
                 format!(

@@ -24,7 +24,7 @@ pub struct Proposal {
     /// checked here; as written when it is too large to check here. Empty when refused.
     pub text: String,
     /// Why it was refused, briefly (under 200 characters): the scenario's own problem, naming the
-    /// field and the rule, or an exercise's lock. `None` when it may run.
+    /// field and the rule, or an exercise's lock. Null when it may run.
     pub problem: Option<String>,
     /// The whole of the scenario's own problem, when it says more than `problem`.
     pub in_full: Option<String>,
@@ -33,14 +33,18 @@ pub struct Proposal {
     pub large_cells: f64,
 }
 
-/// A scenario's comparison (its `compare` section), as the page opens it: the second run's
-/// scenario and the two runs' names in words.
+/// A scenario's comparison (its `compare` section), as the page opens it.
 #[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
-pub struct Comparison {
-    /// The second run's scenario, indented JSON: this one with the one setting changed.
-    pub second: String,
-    /// The first run's name and the second's.
-    pub labels: [String; 2],
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Comparison {
+    /// The scenario compares nothing.
+    None,
+    /// The second run's scenario (indented JSON: this one with the one setting changed) and the
+    /// two runs' names in words, the first run's first.
+    Pair { second: String, labels: [String; 2] },
+    /// The scenario is too large to check on the page's thread, and is not run twice: the
+    /// second run would double the memory the page asked about.
+    TooLarge,
 }
 
 /// The scenario in view.
@@ -131,20 +135,16 @@ impl Draft {
         Ok(link::pack(doc))
     }
 
-    /// The scenario in view's comparison, or `None` when it compares nothing. Its `compare`
-    /// section was checked with the scenario, so nothing is checked again here: the second run's
-    /// worker checks the second scenario as it opens it. A scenario too large to check here is not
-    /// run twice (the second run would double the memory the page asked about): an error says so.
-    pub fn comparison(&self) -> Result<Option<Comparison>> {
+    /// The scenario in view's comparison. Its `compare` section was checked with the scenario, so
+    /// nothing is checked again here: the second run's worker checks the second scenario as it
+    /// opens it.
+    pub fn comparison(&self) -> Result<Comparison> {
         let doc = self.document()?;
         let Some(section) = doc.get("compare").cloned() else {
-            return Ok(None);
+            return Ok(Comparison::None);
         };
         if self.checked().is_none() && shape::estimate_cells(&doc) > self.check_up_to {
-            return Err(Error::field(
-                "compare",
-                "this scenario is too large to run twice side by side; only its own run is shown",
-            ));
+            return Ok(Comparison::TooLarge);
         }
         let compare = crate::compare::Compare::from_value(section, &doc)?;
         let (first, second_label) = compare.labels(&doc);
@@ -154,10 +154,10 @@ impl Draft {
             map.remove("exercise");
         }
         set_path(&mut second, &compare.path, compare.value)?;
-        Ok(Some(Comparison {
+        Ok(Comparison::Pair {
             second: json::pretty(&second).map_err(|e| Error::json(&e))?,
             labels: [first, second_label],
-        }))
+        })
     }
 
     /// What is wrong with an exercise goal written for the scenario in view, whose model reports
@@ -378,24 +378,22 @@ mod tests {
         let draft = opened("lesson-amas-compare");
         let scenario = lessons::scenario("lesson-amas-compare").unwrap();
         let checks = counts::checks();
-        let pair = draft.comparison().unwrap().unwrap();
+        let Comparison::Pair { second, labels } = draft.comparison().unwrap() else {
+            panic!("the lesson compares two runs")
+        };
         assert_eq!(counts::checks(), checks);
-        let second = Scenario::from_json(&pair.second).unwrap();
+        let second = Scenario::from_json(&second).unwrap();
         assert_eq!(second, scenario.compared().unwrap().unwrap());
         assert_eq!(
-            pair.labels,
+            labels,
             ["collision relay".to_string(), "tokens only".to_string()]
         );
-        assert_eq!(opened("amas-L").comparison().unwrap(), None);
+        assert_eq!(opened("amas-L").comparison().unwrap(), Comparison::None);
         let mut large = Draft::new(100);
         let text = scenario.to_json_pretty();
         assert!(large.open(&text, false).large_cells > 0.0);
         large.ran(text);
-        assert!(large
-            .comparison()
-            .unwrap_err()
-            .to_string()
-            .contains("too large"));
+        assert_eq!(large.comparison().unwrap(), Comparison::TooLarge);
     }
 
     /// The link of the scenario in view is the core's link of it, named as a hand-in when asked.

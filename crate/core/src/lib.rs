@@ -18,12 +18,12 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
 
-pub use kumiki_model::{error, hash, lattice, limits, math, rng, shape};
+pub use kumiki_model::{bounds, error, hash, lattice, limits, math, rng, shape};
 
 pub mod compare;
-pub mod draft;
 #[cfg(test)]
 pub mod counts;
+pub mod draft;
 pub mod exercise;
 pub mod experiment;
 pub mod export;

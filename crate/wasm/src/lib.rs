@@ -1,6 +1,6 @@
 //! The page's window into the core: one simulation handle ([`Sim`]), one view handle
-//! ([`Viewer`], which draws a `Sim` from its buffers in place), one experiment handle
-//! ([`ExperimentRunner`]) and a few free functions. Small records go through serde-wasm-bindgen.
+//! ([`Viewer`], which draws a `Sim` from its buffers in place), one handle on the scenario the page
+//! edits ([`Draft`]), one experiment handle ([`ExperimentRunner`]) and a few free functions. Small records go through serde-wasm-bindgen.
 //! No simulation logic lives here.
 
 use std::sync::Mutex;
@@ -15,7 +15,9 @@ use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
 
+mod draft;
 mod viewer;
+pub use draft::Draft;
 pub use viewer::{LatticeGeometry, Viewer};
 
 static PANIC: Mutex<Option<String>> = Mutex::new(None);
@@ -93,47 +95,11 @@ pub fn lesson_json(name: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
-/// Validates scenario JSON and returns it in canonical, indented form.
-#[wasm_bindgen]
-pub fn normalize_scenario(json: &str) -> Result<String, JsError> {
-    Scenario::from_json(json)
-        .map(|s| s.to_json_pretty())
-        .map_err(js_err)
-}
-
-/// A scenario's comparison (its `compare` section), as `[second, first label, second label]`:
-/// the second run's scenario (this one with the one setting changed, canonical and indented) and
-/// the two runs' names in words; `undefined` when the scenario compares nothing.
-#[wasm_bindgen]
-pub fn compare_pair(json: &str) -> Result<Option<Vec<String>>, JsError> {
-    let scenario = Scenario::from_json(json).map_err(js_err)?;
-    let (Some(compare), Some(second)) = (&scenario.compare, scenario.compared().map_err(js_err)?)
-    else {
-        return Ok(None);
-    };
-    let (first_label, second_label) = compare.labels(&scenario.to_value());
-    Ok(Some(vec![
-        second.to_json_pretty(),
-        first_label,
-        second_label,
-    ]))
-}
-
 /// The most cells a shape may span in the page (`Limits::PAGE`): a scenario over it is refused
 /// by the worker, so the page does not ask the user about the memory it would need.
 #[wasm_bindgen]
 pub fn page_shape_cells() -> f64 {
     kumiki_core::Limits::PAGE.shape_cells as f64
-}
-
-/// The whole of what is wrong with scenario JSON, or "" when nothing is. The errors the other
-/// calls throw are brief (under 200 characters); this is the rest, for whoever asks.
-#[wasm_bindgen]
-pub fn scenario_problem_in_full(json: &str) -> String {
-    Scenario::from_json(json)
-        .err()
-        .map(|e| format!("{e:#}"))
-        .unwrap_or_default()
 }
 
 /// The share-link payload (the part after `#`) for scenario JSON.
@@ -152,70 +118,19 @@ pub fn decode_link(link_text: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
-/// The behaviour version of its model that made a link, and this program's:
-/// `{made_with, current}`. The page warns when they differ.
+/// The behaviour version of its model that made a link, and this program's: `Versions`. The
+/// page warns when they differ.
 #[wasm_bindgen]
 pub fn link_model_versions(link_text: &str) -> Result<JsValue, JsError> {
-    #[derive(Serialize)]
-    struct Versions {
-        made_with: u32,
-        current: u32,
-    }
-    let opened = link::open(link_text).map_err(js_err)?;
-    to_js(&Versions {
-        made_with: opened.made_with,
-        current: opened.current,
-    })
+    to_js(&link::open(link_text).map_err(js_err)?.versions())
 }
 
-/// The cells of the largest shape a scenario's JSON describes, read from the text without
-/// building anything (see `shape::estimate_cells`); 0 when it is not JSON. The page opens a
-/// scenario above its threshold in the simulation worker, so the main thread never builds it.
-/// Saturates at 2^53 so it stays a JavaScript number.
-#[wasm_bindgen]
-pub fn estimate_cells(json: &str) -> f64 {
-    json::parse(json)
-        .map(|doc| shape::estimate_cells(&doc).min(1 << 53) as f64)
-        .unwrap_or(0.0)
-}
-
-/// A link's scenario JSON, not yet validated, with the behaviour version of its model that made
-/// it and this program's: `{scenario, made_with, current}`. Nothing is built, so a large
-/// scenario's link can be read on the main thread and opened in the worker.
+/// A link's scenario JSON, not yet checked, with the behaviour version of its model that made
+/// it and this program's: `Unpacked`. Nothing is built, so a large scenario's link can be read on
+/// the main thread and opened in the worker.
 #[wasm_bindgen]
 pub fn unpack_link(link_text: &str) -> Result<JsValue, JsError> {
-    #[derive(Serialize)]
-    struct Unpacked {
-        scenario: String,
-        made_with: u32,
-        current: u32,
-    }
-    let (doc, made_with) = link::unpack(link_text).map_err(js_err)?;
-    let model = doc.get("model").and_then(Value::as_str).unwrap_or_default();
-    let current = models::entry(model).map_or(made_with, |e| e.model_version);
-    to_js(&Unpacked {
-        scenario: json::pretty(&doc).map_err(js_err)?,
-        made_with,
-        current,
-    })
-}
-
-/// The share-link payload for scenario JSON that was validated before (the page's own scenario),
-/// without building its model again.
-#[wasm_bindgen]
-pub fn pack_link(json: &str) -> Result<String, JsError> {
-    json::parse(json).map(link::pack).map_err(js_err)
-}
-
-/// Sets one dotted path of scenario JSON without validating the result: the page changes a large
-/// scenario this way and leaves its validation to the worker that opens it.
-#[wasm_bindgen]
-pub fn set_scenario_path(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
-    let value: Value =
-        json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
-    let mut doc: Value = json::parse(json).map_err(js_err)?;
-    kumiki_core::scenario::set_path(&mut doc, path, value).map_err(js_err)?;
-    json::pretty(&doc).map_err(js_err)
+    to_js(&link::unpacked(link_text).map_err(js_err)?)
 }
 
 /// A fresh seed from the system's entropy (`crypto.getRandomValues`), 0 to 2^53 − 1: the page's
@@ -227,56 +142,11 @@ pub fn fresh_seed() -> Result<f64, JsError> {
         .map_err(|e| JsError::new(&format!("no fresh seed could be drawn: {e}")))
 }
 
-/// Applies one dotted-path override to scenario JSON and returns the validated result.
-#[wasm_bindgen]
-pub fn override_scenario(json: &str, path: &str, value_json: &str) -> Result<String, JsError> {
-    let value: Value =
-        json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.to_string()));
-    Scenario::from_json(json)
-        .and_then(|s| s.with_override(path, value))
-        .map(|s| s.to_json_pretty())
-        .map_err(js_err)
-}
-
-/// A text shape parsed by the core's rules: `{w, h, d, cells}` with one 0/1 byte per cell
-/// (row-major, layers from the ground up). `lattice` is `square`, `hex` or `cubic`.
+/// A text shape read by the core's rules, as `Cells`: `{w, h, d, cells}` with one 0/1 byte per
+/// cell (row-major, layers from the ground up). `lattice` is `square`, `hex` or `cubic`.
 #[wasm_bindgen]
 pub fn shape_parse(lattice: &str, text: &str) -> Result<JsValue, JsError> {
-    #[derive(Serialize)]
-    struct Parsed {
-        w: u32,
-        h: u32,
-        d: u32,
-        cells: Vec<u8>,
-    }
-    let bytes = |cells: Vec<bool>| cells.into_iter().map(u8::from).collect();
-    let parsed = match lattice {
-        "square" | "hex" => {
-            let g = if lattice == "square" {
-                shape::parse_square(text)
-            } else {
-                shape::parse_hex(text)
-            }
-            .map_err(js_err)?;
-            Parsed {
-                w: g.w,
-                h: g.h,
-                d: 1,
-                cells: bytes(g.cells),
-            }
-        }
-        "cubic" => {
-            let g = shape::parse_cubic(text).map_err(js_err)?;
-            Parsed {
-                w: g.w,
-                h: g.h,
-                d: g.d,
-                cells: bytes(g.cells),
-            }
-        }
-        other => return Err(JsError::new(&format!("unknown lattice '{other}'"))),
-    };
-    to_js(&parsed)
+    to_js(&shape::cells_of(lattice, text).map_err(js_err)?)
 }
 
 /// The text form of a shape (the inverse of [`shape_parse`]).
@@ -288,33 +158,13 @@ pub fn shape_format(
     d: u32,
     cells: &[u8],
 ) -> Result<String, JsError> {
-    let n = (w as usize) * (h as usize) * (d.max(1) as usize);
-    if cells.len() != n {
-        return Err(JsError::new(&format!(
-            "{} cells given for a {w}×{h}×{d} shape",
-            cells.len()
-        )));
-    }
-    let filled: Vec<bool> = cells.iter().map(|&c| c != 0).collect();
-    Ok(match lattice {
-        "square" => shape::square_text(&shape::Grid2 {
-            w,
-            h,
-            cells: filled,
-        }),
-        "hex" => shape::hex_text(&shape::Grid2 {
-            w,
-            h,
-            cells: filled,
-        }),
-        "cubic" => shape::cubic_text(&shape::Grid3 {
-            w,
-            h,
-            d,
-            cells: filled,
-        }),
-        other => return Err(JsError::new(&format!("unknown lattice '{other}'"))),
-    })
+    let cells = shape::Cells {
+        w,
+        h,
+        d,
+        cells: cells.to_vec(),
+    };
+    shape::text_of(lattice, &cells).map_err(js_err)
 }
 
 /// `performance.now()` of the page or worker, in milliseconds; `None` where there is none.
@@ -523,6 +373,11 @@ impl Sim {
         Ok(value)
     }
 
+    /// The step limit of the scenario.
+    pub fn max_steps(&self) -> f64 {
+        self.run().scenario().max_steps as f64
+    }
+
     /// The scenario as it now stands, with clicked disturbances recorded.
     pub fn scenario_json(&self) -> String {
         self.run().scenario().to_json_pretty()
@@ -547,35 +402,11 @@ impl Sim {
     }
 }
 
-/// What is wrong with an exercise goal (see `kumiki_core::exercise`), or undefined when it
-/// reads well: the teacher's editor validates as they type. `metrics` are the model's metric
-/// names and `scenario_json` the scenario, against which the goal's names are checked.
-#[wasm_bindgen]
-pub fn goal_problem(text: &str, metrics: Vec<String>, scenario_json: &str) -> Option<String> {
-    match Goal::parse(text) {
-        Err(e) => Some(e.to_string()),
-        Ok(goal) => {
-            let doc: Value = serde_json::from_str(scenario_json).unwrap_or(Value::Null);
-            grading::unknown_name(&goal, &metrics, &doc)
-        }
-    }
-}
-
 /// A goal in words for students ("Completed, and collisions below 40."), or undefined when it
 /// does not parse.
 #[wasm_bindgen]
 pub fn goal_words(text: &str) -> Option<String> {
     Goal::parse(text).ok().map(|g| g.words())
-}
-
-/// Why the scenario `next_json` may not replace `current_json` by an edit, when the current one
-/// is an exercise (a locked field away from the teacher's value, or the exercise itself changed);
-/// undefined when it may.
-#[wasm_bindgen]
-pub fn exercise_guard(current_json: &str, next_json: &str) -> Option<String> {
-    let current: Value = serde_json::from_str(current_json).ok()?;
-    let next: Value = serde_json::from_str(next_json).ok()?;
-    grading::locked_problem(&current, &next)
 }
 
 /// The teacher's exercise for grading: a link, or a lesson's name, as `kumiki check --exercise`
@@ -608,32 +439,13 @@ pub fn exercise_title(text: &str) -> Result<String, JsError> {
 
 /// Grades one hand-in as `kumiki check` does (page limits): the link replayed to its end and
 /// judged by the teacher's exercise (`exercise`: a link or a lesson's name) when given, else by
-/// its own. A graded row (`{name, met, because, completed, steps, hash, locked_edited, changed,
-/// exercise_edited, goal_metrics}`) or `{error}`.
+/// its own. Its `Graded` row.
 #[wasm_bindgen]
 pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, JsError> {
-    #[derive(Serialize)]
-    struct Graded {
-        #[serde(flatten)]
-        grade: kumiki_core::exercise::Grade,
-        goal_metrics: std::collections::BTreeMap<String, Value>,
-    }
-    #[derive(Serialize)]
-    struct Failed {
-        error: String,
-    }
     let original = exercise.map(|e| teacher_exercise(&e)).transpose()?;
     let graded = link::open_within(handin.trim(), &kumiki_core::Limits::PAGE)
         .and_then(|o| kumiki_core::exercise::grade(&o.scenario, original.as_ref()));
-    match graded {
-        Ok(mut grade) => to_js(&Graded {
-            goal_metrics: std::mem::take(&mut grade.goal_metrics),
-            grade,
-        }),
-        Err(e) => to_js(&Failed {
-            error: e.to_string(),
-        }),
-    }
+    to_js(&kumiki_core::exercise::Graded::of(graded))
 }
 
 /// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance
@@ -677,16 +489,6 @@ pub struct ExperimentRunner {
     jobs: Vec<Job>,
 }
 
-#[derive(Serialize)]
-struct ExperimentInfo<'a> {
-    name: &'a str,
-    title: &'a str,
-    description: &'a str,
-    jobs: usize,
-    /// Whether the runs trace metrics (the traces can be exported in long form).
-    traced: bool,
-}
-
 #[wasm_bindgen]
 impl ExperimentRunner {
     /// From a built-in experiment name or an experiment's JSON text.
@@ -697,15 +499,9 @@ impl ExperimentRunner {
         Ok(ExperimentRunner { experiment, jobs })
     }
 
+    /// The experiment's `ExperimentInfo`.
     pub fn info(&self) -> Result<JsValue, JsError> {
-        let e = &self.experiment;
-        to_js(&ExperimentInfo {
-            name: &e.name,
-            title: &e.title,
-            description: &e.description,
-            jobs: self.jobs.len(),
-            traced: e.trace.is_some(),
-        })
+        to_js(&self.experiment.info(&self.jobs))
     }
 
     pub fn job_count(&self) -> u32 {
@@ -724,22 +520,15 @@ impl ExperimentRunner {
     }
 }
 
-/// The built-in experiments: name, title, description, job count.
+/// The built-in experiments, each's `ExperimentInfo`.
 #[wasm_bindgen]
 pub fn experiments() -> Result<JsValue, JsError> {
-    let runners: Vec<ExperimentRunner> = presets::experiment_names()
-        .map(ExperimentRunner::new)
-        .collect::<Result<_, _>>()?;
-    let infos: Vec<ExperimentInfo> = runners
-        .iter()
-        .map(|r| ExperimentInfo {
-            name: &r.experiment.name,
-            title: &r.experiment.title,
-            description: &r.experiment.description,
-            jobs: r.jobs.len(),
-            traced: r.experiment.trace.is_some(),
+    let infos: Vec<_> = presets::experiment_names()
+        .map(|name| {
+            let runner = ExperimentRunner::new(name)?;
+            Ok(runner.experiment.info(&runner.jobs))
         })
-        .collect();
+        .collect::<Result<_, JsError>>()?;
     to_js(&infos)
 }
 

@@ -1,0 +1,71 @@
+//! The scenario the page shows and edits, held here between edits: a handle on
+//! [`kumiki_core::draft::Draft`]. Answers are `Proposal` and `Comparison` records
+//! (web/contract.gen.ts).
+
+use kumiki_core::json;
+use serde_json::Value;
+use wasm_bindgen::prelude::*;
+
+use crate::{js_err, to_js};
+
+/// The page's scenario in view. One per page, made once; `free` is never needed.
+#[wasm_bindgen]
+pub struct Draft {
+    draft: kumiki_core::draft::Draft,
+}
+
+#[wasm_bindgen]
+impl Draft {
+    /// A draft with nothing in view, which checks scenarios whose shapes span up to
+    /// `check_up_to_cells` cells and leaves larger ones to the simulation worker.
+    #[wasm_bindgen(constructor)]
+    pub fn new(check_up_to_cells: f64) -> Draft {
+        Draft {
+            draft: kumiki_core::draft::Draft::new(check_up_to_cells as u64),
+        }
+    }
+
+    /// Opens scenario JSON in place of the one in view; `keep_locks` holds it to the exercise in
+    /// view (an edit of the JSON text). A `Proposal`.
+    pub fn open(&mut self, json: &str, keep_locks: bool) -> Result<JsValue, JsError> {
+        to_js(&self.draft.open(json, keep_locks))
+    }
+
+    /// Sets one dotted path (`value_json` is JSON, or else taken as text) and checks the result.
+    /// A `Proposal`.
+    pub fn edit(&mut self, path: &str, value_json: &str) -> Result<JsValue, JsError> {
+        let value = json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.into()));
+        to_js(&self.draft.edit(&[(path.to_string(), value)]))
+    }
+
+    /// Sets several dotted paths at once (`changes_json`: an object from path to value) and
+    /// checks the result once. A `Proposal`.
+    pub fn edit_all(&mut self, changes_json: &str) -> Result<JsValue, JsError> {
+        let Value::Object(changes) = json::parse(changes_json).map_err(js_err)? else {
+            return Err(JsError::new("changes are an object from path to value"));
+        };
+        let changes: Vec<(String, Value)> = changes.into_iter().collect();
+        to_js(&self.draft.edit(&changes))
+    }
+
+    /// The simulation worker runs `json` (it opened a large scenario, or recorded a click).
+    pub fn ran(&mut self, json: String) {
+        self.draft.ran(json);
+    }
+
+    /// The share-link payload of the scenario in view, or of it named `name` (a hand-in).
+    pub fn link(&self, name: Option<String>) -> Result<String, JsError> {
+        self.draft.link(name.as_deref()).map_err(js_err)
+    }
+
+    /// The scenario in view's `Comparison`.
+    pub fn comparison(&self) -> Result<JsValue, JsError> {
+        to_js(&self.draft.comparison().map_err(js_err)?)
+    }
+
+    /// What is wrong with an exercise goal for the scenario in view, whose model reports
+    /// `metrics`; undefined when it reads well.
+    pub fn goal_problem(&self, goal: &str, metrics: Vec<String>) -> Option<String> {
+        self.draft.goal_problem(goal, &metrics)
+    }
+}
