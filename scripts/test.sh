@@ -4,7 +4,8 @@
 # a fresh build. The gates come first: they take seconds and fail on what a review would.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
+# Each step's header says how long the test has run so far, so the slow steps show.
+step() { printf '\n\033[1m== %s ==\033[0m (at %d s)\n' "$*" "$SECONDS"; }
 
 step "gate: no merge-conflict markers in tracked files"
 if git grep -nE '^(<{7}|>{7})( |$)' -- . ':!package-lock.json'; then
@@ -62,3 +63,4 @@ for f in tests/e2e/*.test.mjs; do
 done
 node --test --test-concurrency=2 "${together[@]}"
 node --test --test-concurrency=1 "${alone[@]}"
+printf '\nnpm test: passed in %d s\n' "$SECONDS"
