@@ -25,30 +25,45 @@ pub const KEYFRAME_COUNT: usize = 256;
 /// Steps between the first keyframes; the interval doubles as the run grows.
 pub const KEYFRAME_EVERY: u64 = 16;
 /// The share of stepping time keyframes may take. A small model in a large lattice copies more
-/// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
+/// bytes per keyframe than its steps touch, so its interval grows (by powers of two) until copies
+/// cost at most this.
 pub const KEYFRAME_TIME_SHARE: f64 = 0.05;
 /// Keyframes are judged too costly only once this much time (ms) has been measured, so that one
 /// slow copy among fast steps (or a coarse clock: browsers round `performance.now()` to 0.1 ms)
-/// does not double the interval.
+/// does not widen the interval.
 const COST_WINDOW_MS: f64 = 5.0;
 
-/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
+/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds,
+/// and the steps and copies it covers.
 #[derive(Default)]
 struct KeyframeCost {
     total: f64,
     copying: f64,
+    steps: u64,
+    copies: u64,
 }
 
 impl KeyframeCost {
-    /// Whether keyframes took more than their share of the time measured; starts a new measure
-    /// when they did.
-    fn too_costly(&mut self) -> bool {
-        let costly = self.copying > KEYFRAME_TIME_SHARE * (self.total - self.copying).max(0.0)
-            && self.total > COST_WINDOW_MS;
-        if costly {
-            *self = KeyframeCost::default();
+    /// The interval at which keyframes would take at most their share of the time measured, when
+    /// `every` is too short for that; starts a new measure when it is. Judged once
+    /// [`COST_WINDOW_MS`] have been measured, and then straight to the interval needed (a power
+    /// of two times `every`), so a fast model does not copy at the first interval for long.
+    fn needs_interval(&mut self, every: u64) -> Option<u64> {
+        let stepping = (self.total - self.copying).max(0.0);
+        let costly = self.copying > KEYFRAME_TIME_SHARE * stepping && self.total > COST_WINDOW_MS;
+        if !costly {
+            return None;
         }
-        costly
+        let per_copy = self.copying / self.copies.max(1) as f64;
+        let per_step = stepping / self.steps.max(1) as f64;
+        let mut interval = every * 2;
+        while (interval as f64) * per_step * KEYFRAME_TIME_SHARE < per_copy
+            && interval < u64::MAX / 2
+        {
+            interval *= 2;
+        }
+        *self = KeyframeCost::default();
+        Some(interval)
     }
 }
 
@@ -125,11 +140,15 @@ impl Playback {
                     mark = now();
                     self.cost.copying += mark - t;
                     self.cost.total += mark - t;
-                    if self.cost.too_costly() {
-                        self.timeline.coarsen();
+                    self.cost.copies += 1;
+                    if let Some(every) = self.cost.needs_interval(self.timeline.keyframes().1) {
+                        while self.timeline.keyframes().1 < every {
+                            self.timeline.coarsen();
+                        }
                     }
                 }
             }
+            self.cost.steps += 1;
             // Steps passed through again after going back are already recorded: the series
             // skips them before reading a metric.
             self.series.record_model(run.steps(), run.model());
