@@ -119,6 +119,8 @@ test('an edited experiment travels by link and by file, and survives a reload', 
   assert.equal(saved.bytes.toString('utf8'), text);
   await page.selectOption('#experiment-select', 'amas-fig23');
   await page.setInputFiles('#experiment-open', { name: 'mine.json', mimeType: 'application/json', buffer: saved.bytes });
+  // The file is read asynchronously: wait for its text to arrive before comparing.
+  await page.waitForFunction(() => document.querySelector('#experiment-json').value.includes('e2e-travel'));
   assert.equal(await page.inputValue('#experiment-json'), text);
 
   await page.reload();
