@@ -5,7 +5,7 @@ use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
     VISITING,
 };
-use crate::models::Event;
+use kumiki_model::model::Event;
 
 impl Amas {
     /// Token and relay: whether robot `r`'s move goes ahead, following the robots ahead of it.

@@ -9,8 +9,8 @@ use super::state::{ACTIVE_MASK, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT}
 use super::{
     Amas, FieldKind, Plan, Robot, NONE, STREAM_DISTURBANCE, STREAM_PLACEMENT, UNKNOWN, UP,
 };
-use crate::lattice::{Lattice, Square};
-use crate::rng::Rng;
+use kumiki_model::lattice::{Lattice, Square};
+use kumiki_model::rng::Rng;
 
 impl Amas {
     /// The model at step 0, from its checked plan (see [`spec::Spec::validate`]).

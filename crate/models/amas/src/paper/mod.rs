@@ -8,11 +8,11 @@ mod figures;
 
 use serde_json::{json, Value};
 
-use crate::reproduce::{Finding, Paper, Results, Stats, Verdict};
 use appendix::figb1_findings;
 use bridge::bridge_findings;
 use disturbances::fig27_findings;
 use figures::{fig23_findings, fig24_findings};
+use kumiki_model::report::{Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "amas",

@@ -7,10 +7,11 @@ use std::collections::BTreeMap;
 
 use serde_json::{Map, Value};
 
-use crate::error::Result;
-use crate::hash::StateHasher;
-use crate::models::{self, Action, Agent, Event, Layout, Metric, Model, ModelEntry};
-use crate::rng::Rng;
+use kumiki_model::entry::{self, ModelEntry};
+use kumiki_model::error::Result;
+use kumiki_model::hash::StateHasher;
+use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model};
+use kumiki_model::rng::Rng;
 
 mod act;
 mod actions;
@@ -36,11 +37,11 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 100_000,
     model_version: 2,
     metrics: metrics::METRICS,
-    parse: models::parse::<Spec>,
+    parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
-    schema: crate::schema::of::<Spec>,
+    schema: entry::schema_of::<Spec>,
     #[cfg(feature = "schema")]
-    disturbance: crate::schema::of::<actions::Raw>,
+    disturbance: entry::schema_of::<actions::Raw>,
     queries: &[],
     #[cfg(feature = "report")]
     paper: &paper::PAPER,

@@ -4,19 +4,20 @@ use super::field::FAR;
 use super::state::{code, CLAIMED, CONVEYOR, FRONT, MODULE, SOURCE, VACANT};
 use super::view::action;
 use super::*;
-use crate::run::Run;
-use crate::scenario::Scenario;
+use kumiki_core::run::Run;
+use kumiki_core::scenario::Scenario;
 use proptest::prelude::*;
 use serde_json::json;
 
 impl Amas {
-    /// The model of a test scenario, built the way a run builds it.
-    fn new(s: &Scenario) -> crate::Result<Amas> {
-        let Some(spec) = s.spec.downcast::<super::Spec>() else {
-            panic!("not a amas scenario");
-        };
+    /// The model of a test scenario, built the way a run builds it. Its keys are read again
+    /// into this crate's `Spec`: the core (a dev-dependency, for scenarios, presets and runs)
+    /// links its own build of this crate, whose `Spec` is another type to the tests.
+    fn new(s: &Scenario) -> kumiki_model::Result<Amas> {
+        assert_eq!(s.model(), ENTRY.name, "not a amas scenario");
+        let spec: Spec = kumiki_model::error::from_value(Value::Object(s.body()))?;
         Ok(Amas::from_checked(
-            crate::models::Spec::validate(spec, s.limits)?,
+            kumiki_model::model::Spec::validate(&spec, s.limits)?,
             s.seed,
         ))
     }

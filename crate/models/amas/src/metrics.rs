@@ -1,6 +1,6 @@
 //! The metrics AMAS reports (see [`super::Amas`]'s `each_metric`): unit and meaning of each.
 
-use crate::models::MetricInfo;
+use kumiki_model::model::MetricInfo;
 
 pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new(

@@ -14,8 +14,8 @@ use serde_json::Value;
 
 use super::state::{BROKEN, CONVEYOR, MODULE, REMOVE, VACANT};
 use super::{Amas, NONE};
-use crate::error::{Error, Result};
-use crate::models::Action;
+use kumiki_model::error::{Error, Result};
+use kumiki_model::model::Action;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -163,7 +163,7 @@ impl Amas {
 /// `cells_in_lattice` cells. Whether the cells suit the action depends on the state when it is
 /// applied (see [`Amas::check`]).
 pub(super) fn parse(action: &Action, cells_in_lattice: usize) -> Result<Checked> {
-    let (kind, which) = match crate::error::from_value(Value::Object(action.clone()))? {
+    let (kind, which) = match kumiki_model::error::from_value(Value::Object(action.clone()))? {
         Raw::Remove(w) => (Kind::Remove, w),
         Raw::Break(w) => (Kind::Break, w),
         Raw::Dismantle(w) => (Kind::Dismantle, w),

@@ -10,8 +10,8 @@ use super::state::{self, code, MODULE, REMOVE};
 use super::{
     Amas, FieldKind, EV_COLLISION, EV_RELAY, LOADED, LOADED_LOST, NONE, UNLOADED, UNLOADED_LOST,
 };
-use crate::lattice::LatticeKind;
-use crate::models::{Action, Agent, FieldInfo, Layout, LegendEntry, ToolInfo};
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::{Action, Agent, FieldInfo, Layout, LegendEntry, ToolInfo};
 
 impl Amas {
     pub(super) fn describe_layout(&self) -> Layout {

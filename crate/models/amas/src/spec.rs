@@ -5,11 +5,11 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::{actions, Amas};
-use crate::error::{Error, Result};
-use crate::lattice::{Lattice, Square};
-use crate::limits::{AmasLimits, Limits};
-use crate::models::{self, Action, Model};
-use crate::shape::{self, Grid2};
+use kumiki_model::error::{Error, Result};
+use kumiki_model::lattice::{Lattice, Square};
+use kumiki_model::limits::{AmasLimits, Limits};
+use kumiki_model::model::{self, Action, Model};
+use kumiki_model::shape::{self, Grid2};
 
 /// The largest `field_updates_per_step`.
 pub const MAX_UPDATES: u32 = 1000;
@@ -271,7 +271,7 @@ impl Plan {
     }
 }
 
-impl models::Spec for Spec {
+impl model::Spec for Spec {
     type Checked = Plan;
 
     fn validate(&self, limits: &Limits) -> Result<Plan> {
