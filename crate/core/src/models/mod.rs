@@ -13,7 +13,6 @@ pub use kumiki_model::model::*;
 use crate::error::{Error, Result};
 use crate::limits::Limits;
 
-pub mod chobie;
 pub mod fracta;
 
 #[cfg(test)]

@@ -9,10 +9,10 @@ use super::election::{Kind, Mode};
 use super::motion::NONE;
 use super::signals::kind;
 use super::Chobie;
-use crate::error::Result;
-use crate::hash::StateHasher;
-use crate::lattice::LatticeKind;
-use crate::models::{
+use kumiki_model::error::Result;
+use kumiki_model::hash::StateHasher;
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::{
     Action, Agent, CellMark, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
 

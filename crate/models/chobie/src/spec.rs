@@ -4,8 +4,8 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::error::{Error, Result};
-use crate::limits::Limits;
+use kumiki_model::error::{Error, Result};
+use kumiki_model::limits::Limits;
 
 /// What the robots do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]

@@ -12,7 +12,8 @@
 //! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
 //! - [`paper`]: the paper's claims beside the experiments' figures.
 
-use crate::models::{self, Event, ModelEntry};
+use kumiki_model::entry::{self, ModelEntry};
+use kumiki_model::model::Event;
 
 pub mod actions;
 pub mod cycle;
@@ -40,12 +41,12 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 200,
     model_version: 3,
     metrics: metrics::METRICS,
-    parse: models::parse::<spec::Spec>,
+    parse: entry::parse::<spec::Spec>,
     #[cfg(feature = "schema")]
-    schema: crate::schema::of::<spec::Spec>,
+    schema: entry::schema_of::<spec::Spec>,
     #[cfg(feature = "schema")]
-    disturbance: crate::schema::of::<actions::LoadAction>,
-    queries: &[models::Query {
+    disturbance: entry::schema_of::<actions::LoadAction>,
+    queries: &[entry::Query {
         name: "crawl",
         description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
         run: queries::crawl,

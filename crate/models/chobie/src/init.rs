@@ -5,9 +5,9 @@ use super::election::{Kind, Mode};
 use super::motion::Body;
 use super::spec::{self, Mechanics, Spec, Task, World};
 use super::{Chobie, Last, Params, Totals};
-use crate::error::Result;
-use crate::limits::Limits;
-use crate::models::{self, Action, Model};
+use kumiki_model::error::Result;
+use kumiki_model::limits::Limits;
+use kumiki_model::model::{self, Action, Model};
 
 /// The priority sequence of figure 18, highest first: the vertical commands (lift the left
 /// end, lower the right end) before the horizontal ones. Figure 18 is not in the text; of the
@@ -29,7 +29,7 @@ pub struct Checked {
     hop_us: f64,
 }
 
-impl models::Spec for Spec {
+impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
@@ -40,7 +40,7 @@ impl models::Spec for Spec {
         if let Some(g) = self.goal {
             let max_goal = limits.chobie.goal;
             if g == 0 || g > max_goal {
-                return Err(crate::Error::field(
+                return Err(kumiki_model::Error::field(
                     "goal",
                     format!("must be from 1 to {max_goal} cells"),
                 ));

@@ -29,7 +29,7 @@ fn parameters_are_checked() {
 
 #[test]
 fn extend_copies_the_rightmost_terrain_column() {
-    let w = spec::parse_world("#.\n==\n", 3, &crate::Limits::PAGE).unwrap();
+    let w = spec::parse_world("#.\n==\n", 3, &kumiki_model::Limits::PAGE).unwrap();
     assert_eq!(w.w, 5);
     assert_eq!(w.get(4, 1), spec::Tile::Ground);
     assert_eq!(w.get(4, 0), spec::Tile::Empty);

@@ -5,18 +5,20 @@ use super::motion::{Drive, Refusal, DOWN, RIGHT, UP};
 use super::signals::Comm;
 use super::spec::{self, Mechanics};
 use super::*;
-use crate::models::Model;
-use crate::scenario::Scenario;
+use kumiki_core::scenario::Scenario;
+use kumiki_model::model::Model;
 use serde_json::json;
 
 impl Chobie {
-    /// The model of a test scenario, built the way a run builds it.
-    fn new(s: &Scenario) -> crate::Result<Chobie> {
-        let Some(spec) = s.spec.downcast::<super::spec::Spec>() else {
-            panic!("not a chobie scenario");
-        };
-        Ok(Chobie::from_checked(crate::models::Spec::validate(
-            spec, s.limits,
+    /// The model of a test scenario, built the way a run builds it. Its keys are read again
+    /// into this crate's `Spec`: the core (a dev-dependency, for scenarios, presets and runs)
+    /// links its own build of this crate, whose `Spec` is another type to the tests.
+    fn new(s: &Scenario) -> kumiki_model::Result<Chobie> {
+        assert_eq!(s.model(), ENTRY.name, "not a chobie scenario");
+        let spec: spec::Spec =
+            kumiki_model::error::from_value(serde_json::Value::Object(s.body()))?;
+        Ok(Chobie::from_checked(kumiki_model::model::Spec::validate(
+            &spec, s.limits,
         )?))
     }
 }

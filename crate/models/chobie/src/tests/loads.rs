@@ -66,7 +66,7 @@ fn the_move_tool_lifts_a_load_and_puts_it_down_and_unload_takes_it_off() {
 
 #[test]
 fn the_slot_trace_names_every_slot_and_its_senders() {
-    let preset = crate::presets::scenario("chobie-crawl5").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-crawl5").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     step_checked(&mut m);
     let trace = &m.last.trace;
@@ -101,7 +101,7 @@ fn the_slot_trace_names_every_slot_and_its_senders() {
 
 #[test]
 fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_root() {
-    let preset = crate::presets::scenario("chobie-bridge").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-bridge").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     let mut modes = Vec::new();
     for _ in 0..30 {
@@ -129,7 +129,7 @@ fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_roo
 
 #[test]
 fn figure_14_step_7_thickens_the_root_and_lowers_b_stress() {
-    let preset = crate::presets::scenario("chobie-load5").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-load5").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     let act = json!({"kind": "load", "cells": [19], "force": 300.0});
     m.apply(act.as_object().unwrap()).unwrap();
@@ -205,7 +205,7 @@ fn a_robot_beyond_the_breaking_stress_breaks_the_structure() {
 
 #[test]
 fn figure_13_reserve_a_reaches_the_overloaded_root_and_step_7_makes_it_thick() {
-    let preset = crate::presets::scenario("chobie-fig13").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-fig13").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     let a = m.body.robot_at(0, 1);
     let mut overloaded_before = false;
@@ -245,7 +245,7 @@ fn figure_13_reserve_a_reaches_the_overloaded_root_and_step_7_makes_it_thick() {
 #[test]
 fn the_reinforcement_count_is_the_cycles_in_which_a_leader_1_moved() {
     // Figure 14: B's column goes down once, under robot A.
-    let preset = crate::presets::scenario("chobie-load5").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-load5").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     let act = json!({"kind": "load", "cells": [19], "force": 300.0});
     m.apply(act.as_object().unwrap()).unwrap();
@@ -259,7 +259,7 @@ fn the_reinforcement_count_is_the_cycles_in_which_a_leader_1_moved() {
         }
     }
     assert_eq!((m.totals.reinforcements, counted), (1, 1));
-    let bridge = crate::presets::scenario("chobie-bridge").unwrap();
+    let bridge = kumiki_core::presets::scenario("chobie-bridge").unwrap();
     let mut adaptive = Chobie::new(&bridge).unwrap();
     let mut plain = Chobie::new(&bridge).unwrap();
     plain.p.adaptation = false;

@@ -2,7 +2,7 @@
 
 use serde_json::{json, Value};
 
-use crate::error::{Error, Result};
+use kumiki_model::error::{Error, Result};
 
 /// The largest crawl drawn by the query.
 pub const MAX_CRAWL: u64 = 4001;

@@ -192,7 +192,7 @@ fn in_form_b_the_only_transformation_is_the_whole_row_sliding_on_the_base() {
     // Interpretation 7: the second algorithm drives the lone row along the base because no other
     // move exists. Lifting or lowering any run of its robots leaves them touching the rest by an
     // edge only, and part of the row cannot slide without parting face-on from the rest.
-    let preset = crate::presets::scenario("chobie-form-b").unwrap();
+    let preset = kumiki_core::presets::scenario("chobie-form-b").unwrap();
     let m = Chobie::new(&preset).unwrap();
     let b = &m.body;
     let n = b.len() as u32;

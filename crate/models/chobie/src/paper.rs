@@ -3,7 +3,7 @@
 
 use serde_json::{json, Value};
 
-use crate::reproduce::{Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::report::{Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "chobie",
@@ -229,7 +229,7 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
 }
 
 /// A traced metric of a row, one value per cycle.
-fn traced(row: &crate::experiment::Row, metric: &str) -> Vec<f64> {
+fn traced(row: &kumiki_model::row::Row, metric: &str) -> Vec<f64> {
     row.trace
         .as_ref()
         .and_then(|t| t.values.get(metric))
@@ -293,13 +293,13 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
                 ("tip_load", tip.clone()),
             ],
         );
-        let (Some(plain), Some(span)) = (plain.first(), crate::reproduce::value(row, "span"))
+        let (Some(plain), Some(span)) = (plain.first(), kumiki_model::report::value(row, "span"))
         else {
             continue;
         };
         let (p_span, p_peak) = (traced(plain, "span"), traced(plain, "peak_stress"));
         let at = p_span.iter().rposition(|&s| s == span);
-        let (Some(at), Some(peak)) = (at, crate::reproduce::value(row, "peak_stress")) else {
+        let (Some(at), Some(peak)) = (at, kumiki_model::report::value(row, "peak_stress")) else {
             continue;
         };
         pairs += 1;

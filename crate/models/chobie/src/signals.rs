@@ -7,7 +7,7 @@
 use std::collections::VecDeque;
 
 use super::motion::{Body, NONE};
-use crate::models::Event;
+use kumiki_model::model::Event;
 
 /// Event kinds, one per kind of slot, drawn on the robots that sent in it.
 pub mod kind {

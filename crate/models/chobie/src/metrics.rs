@@ -1,6 +1,6 @@
 //! The metrics CHOBIE II reports (see its `each_metric` in `view.rs`): unit and meaning of each.
 
-use crate::models::MetricInfo;
+use kumiki_model::model::MetricInfo;
 
 pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("adaptations", "cycles", "Transformation cycles that moved robots while the group was in adaptation mode."),

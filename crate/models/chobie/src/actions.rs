@@ -13,8 +13,8 @@ use serde::Deserialize;
 
 use super::motion::NONE;
 use super::Chobie;
-use crate::error::{from_value, Error, Result};
-use crate::models::Action;
+use kumiki_model::error::{from_value, Error, Result};
+use kumiki_model::model::Action;
 
 /// The largest load, newtons.
 pub const MAX_FORCE: f64 = 1e6;
