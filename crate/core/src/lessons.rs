@@ -1,5 +1,5 @@
-//! Built-in lessons: classroom exercises tied to the papers, one JSON file each under `lessons/`
-//! (the core's, or a model crate's), registered by file name like the presets.
+//! Built-in lessons: classroom exercises tied to the papers, one JSON file each in a model crate's
+//! `lessons/`, registered by file name like the presets.
 //!
 //! A lesson is a scenario with an `exercise` section. Its description starts with
 //! `Lesson (SECTION): ` where SECTION names the paper's section and figures it is about, so the

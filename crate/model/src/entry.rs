@@ -40,6 +40,22 @@ pub struct ModelEntry {
     pub paper: &'static crate::report::Paper,
 }
 
+/// The keys of a scenario document that belong to its envelope, common to every model: the
+/// others are the model's own, read by its entry's `parse`. The core's scenario reader reads these
+/// (a test there holds it to this list); a model crate that reads one of its own preset files
+/// leaves them out to have the model's keys.
+pub const ENVELOPE: &[&str] = &[
+    "version",
+    "model",
+    "name",
+    "description",
+    "seed",
+    "max_steps",
+    "disturbances",
+    "exercise",
+    "compare",
+];
+
 /// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
 /// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
 /// argument and the problem like scenario errors do.

@@ -1,5 +1,6 @@
-//! The registry of models, one module per model, and a scenario's description whatever its
-//! model ([`ModelSpec`]).
+//! The registry of models ([`MODELS`], one line a model, each a crate of its own under
+//! `crate/models/`), what is found through it, and a scenario's description whatever its model
+//! ([`ModelSpec`]).
 //!
 //! The interface a model implements ([`Model`], [`Spec`], [`Layout`], ...) and its registry entry
 //! ([`ModelEntry`]) are the contract crate's, [`kumiki_model::model`] and [`kumiki_model::entry`],
@@ -12,8 +13,6 @@ pub use kumiki_model::model::*;
 
 use crate::error::{Error, Result};
 use crate::limits::Limits;
-
-pub mod fracta;
 
 #[cfg(test)]
 mod metrics_tests;

@@ -6,13 +6,13 @@ use super::*;
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "FractaSpec")]
 pub struct Spec {
-    /// The starting configuration, a hex shape (see [`crate::shape`]).
+    /// The starting configuration, a hex shape (see [`kumiki_model::shape`]).
     pub(super) start: String,
     /// The goal statements (see [`goal`]).
     pub(super) goal: String,
     /// Free cells around the start shape's bounding box.
     #[serde(default = "defaults::margin")]
-    #[schemars(range(max = crate::limits::Limits::PAGE.fracta.margin))]
+    #[schemars(range(max = kumiki_model::limits::Limits::PAGE.fracta.margin))]
     pub(super) margin: u32,
     /// Diffusion coefficient (equation 2); above 1/6 a unit with six neighbours would overshoot.
     #[serde(rename = "K", default = "defaults::k")]

@@ -20,15 +20,16 @@ use std::collections::VecDeque;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
 
-use crate::error::{Error, Result};
-use crate::hash::StateHasher;
-use crate::lattice::{Hex, Lattice, LatticeKind};
-use crate::math;
-use crate::models::{
-    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ModelEntry, ToolInfo,
+use kumiki_model::entry::{self, ModelEntry};
+use kumiki_model::error::{Error, Result};
+use kumiki_model::hash::StateHasher;
+use kumiki_model::lattice::{Hex, Lattice, LatticeKind};
+use kumiki_model::math;
+use kumiki_model::model::{
+    self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
-use crate::rng::Rng;
-use crate::shape;
+use kumiki_model::rng::Rng;
+use kumiki_model::shape;
 
 mod actions;
 mod commit;
@@ -59,23 +60,23 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 20_000,
     model_version: 5,
     metrics: metrics::METRICS,
-    parse: models::parse::<Spec>,
+    parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
-    schema: crate::schema::of::<Spec>,
+    schema: entry::schema_of::<Spec>,
     #[cfg(feature = "schema")]
-    disturbance: crate::schema::of::<actions::FaultAction>,
+    disturbance: entry::schema_of::<actions::FaultAction>,
     queries: &[
-        models::Query {
+        entry::Query {
             name: "derive",
             description: "Goal statements of a hex shape ({\"shape\": text}); shapes separated by '---' give priorities 1, 2, ...",
             run: queries::derive,
         },
-        models::Query {
+        entry::Query {
             name: "check",
             description: "Checks goal statements ({\"goal\": text}) and returns them in normal form",
             run: queries::check,
         },
-        models::Query {
+        entry::Query {
             name: "types",
             description: "The connection types: name, ASCII spelling, bonds, movable, colour",
             run: queries::types,

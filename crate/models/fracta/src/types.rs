@@ -3,7 +3,7 @@
 //!
 //! Everything here is computed from the geometry of the hexagonal lattice:
 //! - a bond pattern is a 6-bit mask, bit `d` set when the neighbour in direction `d` is present
-//!   (directions as in [`crate::lattice::Hex`]: counter-clockwise, so `(d + 1) % 6` turns 60°);
+//!   (directions as in [`kumiki_model::lattice::Hex`]: counter-clockwise, so `(d + 1) % 6` turns 60°);
 //! - the classes are the orbits of the 64 masks under the 12 symmetries of the hexagon; the
 //!   empty mask is its own class, called `none` (a missing neighbour), the other 63 masks fall
 //!   into the 12 connection types of the paper;

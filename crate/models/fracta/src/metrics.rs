@@ -1,6 +1,6 @@
 //! The metrics fracta reports (see its `each_metric` in `mod.rs`): unit and meaning of each.
 
-use crate::models::MetricInfo;
+use kumiki_model::model::MetricInfo;
 
 pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("completed", "flag", "True when every working unit matches a goal statement."),

@@ -5,7 +5,7 @@
 use serde_json::{json, Value};
 
 use super::search;
-use crate::reproduce::{fmt, value, Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::report::{fmt, value, Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "fracta",

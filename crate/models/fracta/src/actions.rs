@@ -44,7 +44,7 @@ pub(super) enum FaultAction {
 /// starting state; whether a working unit is there is checked when it is applied.
 pub(super) fn parse_fault(action: &Action, cells_in_lattice: usize, units: usize) -> Result<Fault> {
     let FaultAction::Fault { cells, unit } =
-        crate::error::from_value(Value::Object(action.clone()))?;
+        kumiki_model::error::from_value(Value::Object(action.clone()))?;
     match (cells, unit) {
         (Some(cells), None) => {
             if cells.is_empty() {

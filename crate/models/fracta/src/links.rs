@@ -5,8 +5,8 @@ use std::collections::BTreeSet;
 
 use super::types::{far_steps, roll_ok, target_slot, Turn, CLASSES};
 
-/// Axial offsets of the six directions (same as [`crate::lattice::Hex::AXIAL`]).
-const AXIAL: [(i32, i32); 6] = crate::lattice::Hex::AXIAL;
+/// Axial offsets of the six directions (same as [`kumiki_model::lattice::Hex::AXIAL`]).
+const AXIAL: [(i32, i32); 6] = kumiki_model::lattice::Hex::AXIAL;
 
 fn axial_step((q, r): (i32, i32), d: usize) -> (i32, i32) {
     (q + AXIAL[d].0, r + AXIAL[d].1)

@@ -4,18 +4,25 @@
 use std::collections::BTreeSet;
 
 use super::*;
-use crate::scenario::Scenario;
+use kumiki_model::entry::ENVELOPE;
+use kumiki_model::limits::Limits;
+
+/// The presets the search starts from, read from this crate's files.
+const REPAIR: &str = include_str!("../presets/fracta-repair.json");
+const TRIANGLE10: &str = include_str!("../presets/fracta-triangle10.json");
 
 impl Fracta {
-    /// The model of a scenario, built the way a run builds it.
-    pub(super) fn of_scenario(s: &Scenario) -> Result<Fracta> {
-        let Some(spec) = s.spec.downcast::<super::Spec>() else {
-            return Err(Error::field("model", "not a fracta scenario"));
+    /// The model of one of this crate's preset files, built the way a run builds it (within the
+    /// page's limits): the file's own keys, its envelope left out, with its seed.
+    fn of_preset(text: &str) -> Option<Fracta> {
+        let Ok(Value::Object(mut doc)) = serde_json::from_str::<Value>(text) else {
+            return None;
         };
-        Ok(Fracta::from_checked(
-            models::Spec::validate(spec, s.limits)?,
-            s.seed,
-        ))
+        let seed = doc.get("seed")?.as_u64()?;
+        doc.retain(|key, _| !ENVELOPE.contains(&key.as_str()));
+        let spec: Spec = kumiki_model::error::from_value(Value::Object(doc)).ok()?;
+        let checked = model::Spec::validate(&spec, &Limits::PAGE).ok()?;
+        Some(Fracta::from_checked(checked, seed))
     }
 
     /// The occupied cells of the working units, sorted: a configuration up to which unit is
@@ -33,12 +40,11 @@ impl Fracta {
 
 /// The `fracta-repair` preset's model with the fault on `unit` applied and cut off.
 fn after_cut_off(unit: u64) -> Option<Fracta> {
-    let mut s = crate::presets::scenario("fracta-repair").ok()?;
-    let fault = s.disturbances.first_mut()?;
-    fault.action.insert("unit".into(), json!(unit));
-    let action = fault.action.clone();
-    let mut m = Fracta::of_scenario(&s).ok()?;
-    m.apply(&action).ok()?;
+    let Value::Object(fault) = json!({"kind": "fault", "unit": unit}) else {
+        return None;
+    };
+    let mut m = Fracta::of_preset(REPAIR)?;
+    m.apply(&fault).ok()?;
     m.cut_off_faulty();
     Some(m)
 }
@@ -93,8 +99,7 @@ pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
 /// How the self-assembly of `fracta-triangle10` from two lines begins, within `limit` steps.
 /// Nothing is drawn at random before the first motion, so every seed begins the same way.
 pub fn first_motion_of_assembly(limit: u64) -> Option<FirstMotion> {
-    let s = crate::presets::scenario("fracta-triangle10").ok()?;
-    first_motion(Fracta::of_scenario(&s).ok()?, limit)
+    first_motion(Fracta::of_preset(TRIANGLE10)?, limit)
 }
 
 /// The units of `m` with a motion that lowers the summed difference, with their differences

@@ -4,11 +4,27 @@ use super::derive::{derive, realisable};
 use super::goal::Statement;
 use super::types::{canonical, images, reflect, rotate, CLASSES};
 use super::*;
-use crate::lattice::Coord;
-use crate::presets;
-use crate::run::Run;
-use crate::scenario::Scenario;
+use kumiki_core::run::Run;
+use kumiki_core::scenario::Scenario;
+use kumiki_core::{models, presets};
+use kumiki_model::lattice::Coord;
 use proptest::prelude::*;
+
+impl Fracta {
+    /// The model of a scenario, built the way a run builds it. Its keys are read again into
+    /// this crate's `Spec`: the core (a dev-dependency, for scenarios, presets and runs) links
+    /// its own build of this crate, whose `Spec` is another type to the tests.
+    fn of_scenario(s: &Scenario) -> Result<Fracta> {
+        if s.model() != ENTRY.name {
+            return Err(Error::field("model", "not a fracta scenario"));
+        }
+        let spec: Spec = kumiki_model::error::from_value(Value::Object(s.body()))?;
+        Ok(Fracta::from_checked(
+            model::Spec::validate(&spec, s.limits)?,
+            s.seed,
+        ))
+    }
+}
 
 const TRIANGLE: &str = ". . # .\n . # # .\n. # # #\n # # # #\n";
 const TRIANGLE_GOAL: &str = "o{K, K}  K{o, K, K, s}  s{K, K, K, K, K, K}\n";

@@ -5,8 +5,8 @@ use std::collections::VecDeque;
 
 use super::goal::{Goal, Statement, MAX_PRIORITY, MAX_STATEMENTS};
 use super::types::{types, Types};
-use crate::lattice::{Hex, Lattice};
-use crate::shape::Grid2;
+use kumiki_model::lattice::{Hex, Lattice};
+use kumiki_model::shape::Grid2;
 
 /// Whether some arrangement of `neighbours` around a unit of class `unit` is consistent on the
 /// lattice: a neighbour in slot k is bonded to the unit and, since the cells of slots k − 1 and

@@ -1,7 +1,7 @@
 //! Figures the outputs read from the state: the mean difference and the enclosed holes.
 
 use super::*;
-use crate::lattice::Coord;
+use kumiki_model::lattice::Coord;
 
 impl Fracta {
     pub(super) fn mean_difference(&self) -> f64 {

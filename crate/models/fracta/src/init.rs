@@ -2,19 +2,19 @@
 //! reads: neighbour masks, types, differences, connected groups, and equation 2's initial state.
 
 use super::*;
-use crate::limits::Limits;
+use kumiki_model::limits::Limits;
 
 /// A description whose every key is checked: its parameters, its goal, and the start shape's
 /// units placed on a lattice of `w × h` cells, in reading order.
 pub struct Checked {
     p: Params,
     goal: Goal,
-    placed: Vec<crate::lattice::Coord>,
+    placed: Vec<kumiki_model::lattice::Coord>,
     w: u32,
     h: u32,
 }
 
-impl models::Spec for Spec {
+impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
@@ -45,7 +45,8 @@ impl models::Spec for Spec {
         for y in 0..start.h {
             for x in 0..start.w {
                 if start.get(x, y) {
-                    let (q, r) = Hex::to_axial(crate::lattice::Coord::xy(x as i32, y as i32));
+                    let (q, r) =
+                        Hex::to_axial(kumiki_model::lattice::Coord::xy(x as i32, y as i32));
                     axial.push((q, r + m));
                 }
             }
@@ -56,7 +57,7 @@ impl models::Spec for Spec {
             .min()
             .unwrap_or(0);
         let shift = m - min_x;
-        let placed: Vec<crate::lattice::Coord> = axial
+        let placed: Vec<kumiki_model::lattice::Coord> = axial
             .iter()
             .map(|&(q, r)| Hex::from_axial(q + shift, r))
             .collect();
