@@ -6,7 +6,7 @@ use super::*;
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "FractaSpec")]
 pub struct Spec {
-    /// The starting configuration, a hex shape (see [`kumiki_model::shape`]).
+    /// The starting configuration, a hex shape (see [`crate::shape`]).
     pub(super) start: String,
     /// The goal statements (see [`goal`]).
     pub(super) goal: String,
