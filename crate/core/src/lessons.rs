@@ -74,7 +74,7 @@ fn section(description: &str) -> Option<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exercise::grade;
+    use crate::grading::grade;
     use serde_json::{json, Value};
 
     /// The edit each lesson is designed to be solved by: a student who makes it meets the goal.

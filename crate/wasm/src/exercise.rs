@@ -77,7 +77,7 @@ pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, J
     #[derive(Serialize)]
     struct Graded {
         #[serde(flatten)]
-        grade: kumiki_core::exercise::Grade,
+        grade: kumiki_core::grading::Grade,
         goal_metrics: std::collections::BTreeMap<String, Value>,
     }
     #[derive(Serialize)]
@@ -86,7 +86,7 @@ pub fn grade_handin(handin: &str, exercise: Option<String>) -> Result<JsValue, J
     }
     let original = exercise.map(|e| teacher_exercise(&e)).transpose()?;
     let graded = link::open_within(handin.trim(), &kumiki_core::Limits::PAGE)
-        .and_then(|o| kumiki_core::exercise::grade(&o.scenario, original.as_ref()));
+        .and_then(|o| kumiki_core::grading::grade(&o.scenario, original.as_ref()));
     match graded {
         Ok(mut grade) => to_js(&Graded {
             goal_metrics: std::mem::take(&mut grade.goal_metrics),
