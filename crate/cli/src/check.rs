@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use kumiki_core::experiment::csv_text;
+use kumiki_core::export::csv_text;
 use kumiki_core::grading::{self, Grade};
 use kumiki_core::Scenario;
 use serde::Serialize;

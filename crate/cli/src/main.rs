@@ -18,7 +18,7 @@ use std::process::ExitCode;
 
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use kumiki_core::experiment::{self, Experiment, Row, PROGRAM_VERSION};
+use kumiki_core::experiment::{Experiment, Row, PROGRAM_VERSION};
 use kumiki_core::export::{self, Provenance};
 use kumiki_core::scenario::{parse_override, MAX_SEED, MAX_STEPS};
 use kumiki_core::{hash, lessons, link, presets, Limits, Run, Scenario};
@@ -829,7 +829,7 @@ impl Output {
         if self.format == Format::Csv && !self.quiet {
             let text = match &self.provenance {
                 Some(p) => export::csv(p, &rows),
-                None => experiment::to_csv(&rows),
+                None => export::to_csv(&rows),
             };
             write!(out, "{text}")?;
         }
