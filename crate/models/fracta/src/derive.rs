@@ -1,60 +1,11 @@
-//! Goals derived from shapes (section 3.3), and whether a statement can be realised on the
-//! lattice at all.
+//! Goals derived from shapes (section 3.3).
 
 use std::collections::VecDeque;
 
 use super::goal::{Goal, Statement, MAX_PRIORITY, MAX_STATEMENTS};
-use super::types::{types, Types};
+use super::types::types;
 use kumiki_model::lattice::{Hex, Lattice};
 use kumiki_model::shape::Grid2;
-
-/// Whether some arrangement of `neighbours` around a unit of class `unit` is consistent on the
-/// lattice: a neighbour in slot k is bonded to the unit and, since the cells of slots k − 1 and
-/// k + 1 touch it, to whichever of those are occupied, and to none that are empty.
-pub fn realisable(t: &Types, unit: u8, neighbours: &[u8]) -> bool {
-    let own = t.info[unit as usize].canonical;
-    let slots: Vec<usize> = (0..6).filter(|d| own & (1 << d) != 0).collect();
-    if slots.len() != neighbours.len() {
-        return false;
-    }
-    let occupied = |d: usize| own & (1 << (d % 6)) != 0;
-    // What a neighbour of class c in slot k needs: bit k+3 (towards the unit) set, bits k+2 and
-    // k+4 equal to the occupancy of the unit's slots k+1 and k-1.
-    let fits = |c: u8, k: usize| -> bool {
-        (0..64u8).filter(|&m| t.of(m) == c).any(|m| {
-            let bit = |d: usize| m & (1 << (d % 6)) != 0;
-            bit(k + 3) && bit(k + 2) == occupied(k + 1) && bit(k + 4) == occupied(k + 5)
-        })
-    };
-    let mut used = vec![false; neighbours.len()];
-    fn place(
-        i: usize,
-        slots: &[usize],
-        neighbours: &[u8],
-        used: &mut [bool],
-        fits: &dyn Fn(u8, usize) -> bool,
-    ) -> bool {
-        if i == slots.len() {
-            return true;
-        }
-        for j in 0..neighbours.len() {
-            if used[j] || (j > 0 && neighbours[j] == neighbours[j - 1] && !used[j - 1]) {
-                continue;
-            }
-            if fits(neighbours[j], slots[i]) {
-                used[j] = true;
-                if place(i + 1, slots, neighbours, used, fits) {
-                    return true;
-                }
-                used[j] = false;
-            }
-        }
-        false
-    }
-    let mut sorted = neighbours.to_vec();
-    sorted.sort_unstable();
-    place(0, &slots, &sorted, &mut used, &fits)
-}
 
 /// The statements of a shape: one per distinct (type, neighbour types) found in it.
 ///

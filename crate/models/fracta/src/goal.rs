@@ -1,6 +1,6 @@
 //! Goal descriptions (sections 3.2.1 and 3.3): statements such as `K{o, K, K, s}`, read from
-//! text, written back, derived from a shape (`derive.rs`), and the difference of a unit to the
-//! closest one (section 3.2.2).
+//! text (each checked to be one that can occur on the lattice), written back, derived from a
+//! shape (`derive.rs`), and the difference of a unit to the closest one (section 3.2.2).
 //!
 //! The text form, one or more statements per line:
 //! ```text
@@ -13,7 +13,6 @@
 //! (`eps`, `lambda`, `psi`; Latin letters in either case). The neighbour list may be written in
 //! any order; it is kept sorted by bond count, as in the paper.
 
-use super::derive::realisable;
 use super::types::{types, Types, CLASSES, NONE};
 
 /// The largest number of statements a goal may hold.
@@ -357,6 +356,54 @@ fn parse_line(t: &Types, content: &str) -> Result<Vec<Statement>, String> {
         rest = &rest[close + 1..];
     }
     Ok(out)
+}
+
+/// Whether some arrangement of `neighbours` around a unit of class `unit` is consistent on the
+/// lattice: a neighbour in slot k is bonded to the unit and, since the cells of slots k − 1 and
+/// k + 1 touch it, to whichever of those are occupied, and to none that are empty.
+pub fn realisable(t: &Types, unit: u8, neighbours: &[u8]) -> bool {
+    let own = t.info[unit as usize].canonical;
+    let slots: Vec<usize> = (0..6).filter(|d| own & (1 << d) != 0).collect();
+    if slots.len() != neighbours.len() {
+        return false;
+    }
+    let occupied = |d: usize| own & (1 << (d % 6)) != 0;
+    // What a neighbour of class c in slot k needs: bit k+3 (towards the unit) set, bits k+2 and
+    // k+4 equal to the occupancy of the unit's slots k+1 and k-1.
+    let fits = |c: u8, k: usize| -> bool {
+        (0..64u8).filter(|&m| t.of(m) == c).any(|m| {
+            let bit = |d: usize| m & (1 << (d % 6)) != 0;
+            bit(k + 3) && bit(k + 2) == occupied(k + 1) && bit(k + 4) == occupied(k + 5)
+        })
+    };
+    let mut used = vec![false; neighbours.len()];
+    fn place(
+        i: usize,
+        slots: &[usize],
+        neighbours: &[u8],
+        used: &mut [bool],
+        fits: &dyn Fn(u8, usize) -> bool,
+    ) -> bool {
+        if i == slots.len() {
+            return true;
+        }
+        for j in 0..neighbours.len() {
+            if used[j] || (j > 0 && neighbours[j] == neighbours[j - 1] && !used[j - 1]) {
+                continue;
+            }
+            if fits(neighbours[j], slots[i]) {
+                used[j] = true;
+                if place(i + 1, slots, neighbours, used, fits) {
+                    return true;
+                }
+                used[j] = false;
+            }
+        }
+        false
+    }
+    let mut sorted = neighbours.to_vec();
+    sorted.sort_unstable();
+    place(0, &slots, &sorted, &mut used, &fits)
 }
 
 fn class_of_word(t: &Types, word: &str) -> Result<u8, String> {

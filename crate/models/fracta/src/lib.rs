@@ -3,7 +3,9 @@
 //! (sections 3 and 4). See `docs/models/fracta.md` for the ODD description and every
 //! interpretation made.
 //!
-//! - [`types`]: the 12 connection types, which can move, and the distances between them;
+//! - `pattern`: bond patterns, their symmetries and the roll; [`types`]: the 12 connection
+//!   types (classes of patterns), which can move, and the distances between them (`links`: the
+//!   type graph);
 //! - [`goal`]: goal statements, their text form, "derive from shape", and the difference;
 //! - `spec`: the scenario keys, their defaults and checks; `init`: building the model and the
 //!   per-unit data every phase reads;
@@ -41,6 +43,7 @@ mod init;
 mod links;
 pub mod metrics;
 pub mod paper;
+mod pattern;
 mod plan;
 pub mod queries;
 pub mod search;
@@ -50,9 +53,10 @@ mod view;
 
 use actions::Fault;
 use goal::{Goal, Priorities};
+use pattern::{far_steps, swept_slots, target_slot, Turn};
 use spec::{check_params, Params};
 pub use spec::{defaults, Spec};
-use types::{far_steps, swept_slots, target_slot, types, Turn, Types};
+use types::{types, Types};
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",

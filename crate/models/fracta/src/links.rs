@@ -3,7 +3,7 @@
 
 use std::collections::BTreeSet;
 
-use super::types::{far_steps, roll_ok, target_slot, Turn, CLASSES};
+use super::pattern::{far_steps, roll_ok, target_slot, Turn};
 
 /// Axial offsets of the six directions (same as [`kumiki_model::lattice::Hex::AXIAL`]).
 const AXIAL: [(i32, i32); 6] = kumiki_model::lattice::Hex::AXIAL;
@@ -82,35 +82,4 @@ pub fn derive_links() -> BTreeSet<(u8, u8)> {
         }
     }
     pairs
-}
-
-/// Shortest-path lengths in the type graph (breadth-first from every class).
-pub(super) fn distances(links: &BTreeSet<(u8, u8)>) -> [[u8; CLASSES]; CLASSES] {
-    let mut dist = [[u8::MAX; CLASSES]; CLASSES];
-    for (s, row) in dist.iter_mut().enumerate() {
-        row[s] = 0;
-        let mut frontier = vec![s as u8];
-        let mut d = 0u8;
-        while !frontier.is_empty() {
-            d += 1;
-            let mut next = Vec::new();
-            for &u in &frontier {
-                for &(a, b) in links {
-                    let v = if a == u {
-                        b
-                    } else if b == u {
-                        a
-                    } else {
-                        continue;
-                    };
-                    if row[v as usize] == u8::MAX {
-                        row[v as usize] = d;
-                        next.push(v);
-                    }
-                }
-            }
-            frontier = next;
-        }
-    }
-    dist
 }

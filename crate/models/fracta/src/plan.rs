@@ -8,7 +8,7 @@ const HOLE_REACH: usize = 7;
 
 impl Fracta {
     /// Where the unit on `cell` with neighbours `mask` ends when it rolls about slot `pivot`, if
-    /// it may. One 60° roll is legal by the rule of [`types::roll_ok`], with every swept cell
+    /// it may. One 60° roll is legal by the rule of [`pattern::roll_ok`], with every swept cell
     /// inside the lattice and the far swept cell free (collision avoidance). With `avoid_e` the
     /// unit does not stop as an `e` (section 4): while the cell it reached touches no unit but
     /// the pivot, it rolls on about the same pivot, each 60° legal in the same way, and the
@@ -76,7 +76,7 @@ impl Fracta {
     /// The cell one legal 60° roll about slot `pivot` takes the unit on `at` (neighbours `mask`)
     /// to.
     pub(super) fn roll_once(&self, at: u32, mask: u8, pivot: usize, turn: Turn) -> Option<u32> {
-        if !types::roll_ok(mask, pivot, turn) {
+        if !pattern::roll_ok(mask, pivot, turn) {
             return None;
         }
         let nb = &self.nbr[at as usize];

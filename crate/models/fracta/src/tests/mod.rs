@@ -1,8 +1,9 @@
 use std::collections::BTreeSet;
 
-use super::derive::{derive, realisable};
-use super::goal::Statement;
-use super::types::{canonical, images, reflect, rotate, CLASSES};
+use super::derive::derive;
+use super::goal::{realisable, Statement};
+use super::pattern::{canonical, images, reflect, rotate};
+use super::types::CLASSES;
 use super::*;
 use kumiki_core::run::Run;
 use kumiki_core::scenario::Scenario;

@@ -76,7 +76,7 @@ fn movable_types_are_e_o_and_epsilon() {
             .map(|p| {
                 Turn::BOTH
                     .iter()
-                    .filter(|&&tu| types::roll_ok(m, p, tu))
+                    .filter(|&&tu| pattern::roll_ok(m, p, tu))
                     .count()
             })
             .sum();
@@ -173,7 +173,7 @@ fn rolling_sweeps_exactly_the_cells_the_rule_keeps_free() {
                     .iter()
                     .map(|&s| lattice.neighbour(p, s).unwrap())
                     .collect();
-                let [a, b] = types::far_steps(pivot, turn);
+                let [a, b] = pattern::far_steps(pivot, turn);
                 expect.insert(
                     lattice
                         .neighbour(lattice.neighbour(p, a).unwrap(), b)
