@@ -1,13 +1,13 @@
-//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, the reader of
-//! its keys, their schemas, its helper calls and its paper), and the object-safe face of its
-//! description ([`AnySpec`]) that a scenario holds whatever the model.
+//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, limits, the
+//! reader of its keys, their schemas, its helper calls and its paper), and the object-safe face
+//! of its description ([`AnySpec`]) that a scenario holds whatever the model.
 
 use std::any::Any;
 
 use serde_json::{Map, Value};
 
 use crate::error::Result;
-use crate::limits::Limits;
+use crate::limits::{LimitTable, Limits};
 use crate::model::{Action, MetricInfo, Model, Spec};
 
 /// A registered model.
@@ -22,6 +22,9 @@ pub struct ModelEntry {
     pub model_version: u32,
     /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
     pub metrics: &'static [MetricInfo],
+    /// Its own sizes under the page's and the large limits, each described once: its
+    /// [`ModelLimits`](crate::limits::ModelLimits).
+    pub limits: &'static dyn LimitTable,
     /// Reads the model's keys of a scenario into its typed description: [`parse`] of its
     /// [`Spec`].
     pub parse: fn(Value) -> Result<Box<dyn AnySpec>>,

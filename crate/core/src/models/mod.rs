@@ -12,7 +12,7 @@ pub use kumiki_model::entry::*;
 pub use kumiki_model::model::*;
 
 use crate::error::{Error, Result};
-use crate::limits::Limits;
+use crate::limits::{Limits, TableLine};
 
 #[cfg(test)]
 mod metrics_tests;
@@ -51,6 +51,19 @@ pub fn metrics_markdown() -> String {
                 i.unit,
                 i.about.replace('|', "\\|")
             ));
+        }
+    }
+    out
+}
+
+/// The limits as a Markdown table (docs/scenario-format.md, written by `kumiki schema`): the bound
+/// every model shares, then each model's own in registry order, page and large side by side.
+pub fn limits_markdown() -> String {
+    let mut out = String::from("| model | what | page | large |\n| --- | --- | ---: | ---: |\n");
+    out.push_str(&TableLine::shape_cells().markdown("every"));
+    for m in MODELS {
+        for line in m.limits.lines() {
+            out.push_str(&line.markdown(&format!("`{}`", m.name)));
         }
     }
     out

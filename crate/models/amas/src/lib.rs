@@ -18,6 +18,7 @@ mod actions;
 mod conflicts;
 mod field;
 mod init;
+pub mod limits;
 pub mod metrics;
 pub mod paper;
 mod plan;
@@ -37,6 +38,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 100_000,
     model_version: 2,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: entry::schema_of::<Spec>,

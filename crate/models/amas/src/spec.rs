@@ -5,9 +5,10 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::{actions, Amas};
+use crate::limits::AmasLimits;
 use kumiki_model::error::{Error, Result};
 use kumiki_model::lattice::{Lattice, Square};
-use kumiki_model::limits::{AmasLimits, Limits};
+use kumiki_model::limits::Limits;
 use kumiki_model::model::{self, Action, Model};
 use kumiki_model::shape::{self, Grid2};
 
@@ -58,7 +59,7 @@ pub struct Spec {
     pub target: Value,
     /// Intermediate targets built, in order, before `target` (section 6.4).
     #[serde(default)]
-    #[schemars(length(max = Limits::PAGE.amas.stages))]
+    #[schemars(length(max = crate::limits::LIMITS.page.stages))]
     pub stages: Vec<Value>,
     /// Modules already built when the run starts.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -86,7 +87,7 @@ pub struct Spec {
     pub gradient_threshold: Option<f64>,
     /// Rows of the module supply under the shape.
     #[serde(default = "one")]
-    #[schemars(range(min = 1, max = Limits::PAGE.amas.supply_rows))]
+    #[schemars(range(min = 1, max = crate::limits::LIMITS.page.supply_rows))]
     pub supply_rows: u32,
     /// Steps a move to a neighbouring module takes.
     #[serde(default = "one")]
@@ -174,7 +175,7 @@ pub struct Plan {
 }
 
 fn shape_value(v: &Value, path: &str, limits: &Limits) -> Result<Grid2> {
-    let max_side = limits.amas.side;
+    let max_side = crate::limits::LIMITS.of(limits).side;
     match v {
         Value::String(text) => {
             let g = shape::parse_square_within(text, limits).map_err(|e| e.within(path))?;
@@ -294,7 +295,7 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         supply_rows: max_supply_rows,
         stages: max_stages,
         stage_cells: max_stage_cells,
-    } = limits.amas;
+    } = *crate::limits::LIMITS.of(limits);
     if spec.stages.len() > max_stages {
         return Err(Error::field(
             "stages",

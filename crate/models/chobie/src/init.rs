@@ -38,7 +38,7 @@ impl model::Spec for Spec {
         let tip_load = spec::non_negative("tip_load", self.tip_load, 1e7)?;
         let hop_us = spec::positive("hop_us", self.hop_us, 1e9)?;
         if let Some(g) = self.goal {
-            let max_goal = limits.chobie.goal;
+            let max_goal = crate::limits::LIMITS.of(limits).goal;
             if g == 0 || g > max_goal {
                 return Err(kumiki_model::Error::field(
                     "goal",

@@ -20,6 +20,7 @@ pub mod cycle;
 pub mod election;
 pub mod frame;
 pub mod init;
+pub mod limits;
 pub mod metrics;
 pub mod motion;
 pub mod paper;
@@ -41,6 +42,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 200,
     model_version: 3,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<spec::Spec>,
     #[cfg(feature = "schema")]
     schema: entry::schema_of::<spec::Spec>,

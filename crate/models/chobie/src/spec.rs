@@ -50,7 +50,7 @@ pub struct Spec {
     pub world: String,
     /// Empty columns added on the right, each a copy of the rightmost column's terrain.
     #[serde(default)]
-    #[schemars(range(max = Limits::PAGE.chobie.side))]
+    #[schemars(range(max = crate::limits::LIMITS.page.side))]
     pub extend: u32,
     /// What the robots do: crawl (section 3.3) or build a bridge (3.4).
     #[serde(default)]
@@ -73,7 +73,7 @@ pub struct Spec {
     pub construction: bool,
     /// Completed when the crawl has moved this many cells, or the bridge spans this many cells.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    #[schemars(range(min = 1, max = Limits::PAGE.chobie.goal))]
+    #[schemars(range(min = 1, max = crate::limits::LIMITS.page.goal))]
     pub goal: Option<u32>,
     /// The flat part of the base carries the robots' sliding guide and holds the robots resting
     /// on it. Off, the base only pushes, and the structure tips over the cliff edge when the
@@ -250,7 +250,7 @@ impl World {
 /// Reads the world text within `limits`; errors name the line and column (counted in the text as
 /// written).
 pub fn parse_world(text: &str, extend: u32, limits: &Limits) -> Result<World> {
-    let max_side = u64::from(limits.chobie.side);
+    let max_side = u64::from(crate::limits::LIMITS.of(limits).side);
     let lines: Vec<&str> = text.lines().map(str::trim_end).collect();
     let first = lines.iter().position(|l| !l.is_empty());
     let last = lines.iter().rposition(|l| !l.is_empty());
@@ -313,7 +313,7 @@ pub fn parse_world(text: &str, extend: u32, limits: &Limits) -> Result<World> {
         h: h as u32,
         tiles,
     };
-    check_world(&world, first, limits.chobie.robots)?;
+    check_world(&world, first, crate::limits::LIMITS.of(limits).robots)?;
     Ok(world)
 }
 

@@ -22,7 +22,6 @@ use serde_json::{Map, Value};
 use kumiki_model::entry::{self, ModelEntry, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
-use kumiki_model::limits::Limits;
 use kumiki_model::math;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
@@ -32,6 +31,7 @@ mod choose;
 pub mod connect;
 mod init;
 mod light;
+pub mod limits;
 pub mod metrics;
 pub mod motion;
 pub mod paper;
@@ -55,6 +55,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: entry::schema_of::<Spec>,
@@ -77,7 +78,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.
-const MAX_TARGETS: usize = Limits::LARGE.cubes3d.targets;
+const MAX_TARGETS: usize = crate::limits::LIMITS.large.targets;
 
 /// Event kinds.
 const ARRIVED: u8 = 0;

@@ -18,7 +18,7 @@ impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
-        let max = limits.fracta;
+        let max = *crate::limits::LIMITS.of(limits);
         let p = check_params(self)?;
         let goal = Goal::parse(&self.goal).map_err(|e| Error::field("goal", e))?;
         let start = shape::parse_hex_within(&self.start, limits).map_err(|e| e.within("start"))?;

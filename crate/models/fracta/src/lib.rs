@@ -40,6 +40,7 @@ mod diffuse;
 mod faults;
 pub mod goal;
 mod init;
+pub mod limits;
 mod links;
 pub mod metrics;
 pub mod paper;
@@ -64,6 +65,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 20_000,
     model_version: 5,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
     #[cfg(feature = "schema")]
     schema: entry::schema_of::<Spec>,

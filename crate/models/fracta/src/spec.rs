@@ -12,7 +12,7 @@ pub struct Spec {
     pub(super) goal: String,
     /// Free cells around the start shape's bounding box.
     #[serde(default = "defaults::margin")]
-    #[schemars(range(max = kumiki_model::limits::Limits::PAGE.fracta.margin))]
+    #[schemars(range(max = crate::limits::LIMITS.page.margin))]
     pub(super) margin: u32,
     /// Diffusion coefficient (equation 2); above 1/6 a unit with six neighbours would overshoot.
     #[serde(rename = "K", default = "defaults::k")]

@@ -31,10 +31,10 @@ fn bad_scenarios_name_the_field() {
     assert!(bad(json!({"target": {"rect": [0, 3]}})).starts_with("target.rect:"));
     let huge = format!(
         "{}\n",
-        "#".repeat(kumiki_model::Limits::PAGE.amas.side as usize + 1)
+        "#".repeat(crate::limits::LIMITS.page.side as usize + 1)
     );
     assert!(bad(json!({"target": huge})).contains("exceeds the limit"));
-    let e = bad(json!({"target": {"rect": [10, kumiki_model::Limits::PAGE.amas.side]}}));
+    let e = bad(json!({"target": {"rect": [10, crate::limits::LIMITS.page.side]}}));
     assert!(
         e.starts_with("target:") && e.contains("exceeds the limit"),
         "{e}"
