@@ -54,7 +54,12 @@ pub(crate) fn scenario_in(
     kind: &'static str,
     name: &str,
 ) -> Result<Scenario> {
-    Scenario::from_json(lookup(table, kind, name)?).map_err(|e| match e {
+    in_file(kind, name, Scenario::from_json(lookup(table, kind, name)?))
+}
+
+/// A built-in file's scenario, its errors naming the file: which `kind` it is, and its `name`.
+pub(crate) fn in_file(kind: &str, name: &str, read: Result<Scenario>) -> Result<Scenario> {
+    read.map_err(|e| match e {
         Error::Field { path, reason } => {
             Error::field(path, format!("{reason} (in {kind} '{name}')"))
         }
