@@ -29,19 +29,29 @@ pub struct ModelEntry {
     /// [`Spec`].
     pub parse: fn(Value) -> Result<Box<dyn AnySpec>>,
     /// The JSON Schema of those keys ([`schema_of`] its [`Spec`]).
-    #[cfg(feature = "schema")]
-    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub schema: SchemaOf,
     /// The JSON Schema of one of its actions (a disturbance without its `at`).
-    #[cfg(feature = "schema")]
-    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
-    /// Its paper's claims for the reproduction report. Left out of builds without the `report`
-    /// feature (the page's wasm, which shows the report's published JSON), so the findings'
-    /// code is not linked there.
-    #[cfg(feature = "report")]
-    pub paper: &'static crate::report::Paper,
+    /// Its paper's claims for the reproduction report ([`paper_of`] its `Paper`).
+    pub paper: PaperOf,
 }
+
+/// A JSON Schema as a [`ModelEntry`] names it: [`schema_of`] a type. A function of the schema
+/// generator in builds with the `schema` feature; nothing in the others (the page's wasm), so the
+/// generator is not linked there. A model crate writes the same entry either way.
+#[cfg(feature = "schema")]
+pub type SchemaOf = fn(&mut schemars::SchemaGenerator) -> schemars::Schema;
+#[cfg(not(feature = "schema"))]
+pub type SchemaOf = ();
+
+/// A paper as a [`ModelEntry`] names it: [`paper_of`] it. The paper in builds with the `report`
+/// feature; nothing in the others, so the findings' code is not linked there.
+#[cfg(feature = "report")]
+pub type PaperOf = &'static crate::report::Paper;
+#[cfg(not(feature = "report"))]
+pub type PaperOf = ();
 
 /// The keys of a scenario document that belong to its envelope, common to every model: the
 /// others are the model's own, read by its entry's `parse`. The core's scenario reader reads these
@@ -120,11 +130,26 @@ pub fn parse<S: Spec + Send + Sync + 'static>(body: Value) -> Result<Box<dyn Any
     crate::error::from_value::<S>(body).map(|s| Box::new(s) as Box<dyn AnySpec>)
 }
 
-/// The JSON Schema of `T` as a subschema of `generator`: the `schema` and `disturbance` of a
-/// [`ModelEntry`].
+/// The JSON Schema of `T`, as a subschema of the generator it is given: the `schema` and
+/// `disturbance` of a [`ModelEntry`].
 #[cfg(feature = "schema")]
-pub fn schema_of<T: schemars::JsonSchema>(
-    generator: &mut schemars::SchemaGenerator,
-) -> schemars::Schema {
-    generator.subschema_for::<T>()
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {
+    fn of<T: schemars::JsonSchema>(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        generator.subschema_for::<T>()
+    }
+    of::<T>
 }
+
+/// Without the `schema` feature, nothing.
+#[cfg(not(feature = "schema"))]
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {}
+
+/// A model's paper: the `paper` of its [`ModelEntry`].
+#[cfg(feature = "report")]
+pub const fn paper_of(paper: &'static crate::report::Paper) -> PaperOf {
+    paper
+}
+
+/// Without the `report` feature, nothing.
+#[cfg(not(feature = "report"))]
+pub const fn paper_of(_: &'static crate::report::Paper) -> PaperOf {}

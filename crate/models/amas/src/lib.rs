@@ -40,13 +40,10 @@ pub const ENTRY: ModelEntry = ModelEntry {
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::Raw>,
+    schema: entry::schema_of::<Spec>(),
+    disturbance: entry::schema_of::<actions::Raw>(),
     queries: &[],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 const NONE: u32 = u32::MAX;

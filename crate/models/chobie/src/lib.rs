@@ -44,17 +44,14 @@ pub const ENTRY: ModelEntry = ModelEntry {
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<spec::Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<spec::Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::LoadAction>,
+    schema: entry::schema_of::<spec::Spec>(),
+    disturbance: entry::schema_of::<actions::LoadAction>(),
     queries: &[entry::Query {
         name: "crawl",
         description: "The world text of a crawl form (figure 7): {\"robots\": odd n ≥ 3, \"form\": 1-4, \"margin\": empty columns}",
         run: queries::crawl,
     }],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The checked parameters a run uses.

@@ -57,10 +57,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::ActionSpec>,
+    schema: entry::schema_of::<Spec>(),
+    disturbance: entry::schema_of::<actions::ActionSpec>(),
     queries: &[
         Query {
             name: "derive",
@@ -73,8 +71,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

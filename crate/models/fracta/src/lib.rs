@@ -67,10 +67,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::FaultAction>,
+    schema: entry::schema_of::<Spec>(),
+    disturbance: entry::schema_of::<actions::FaultAction>(),
     queries: &[
         entry::Query {
             name: "derive",
@@ -88,8 +86,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: queries::types,
         },
     ],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see
