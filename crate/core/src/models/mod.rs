@@ -15,6 +15,8 @@ use crate::error::{Error, Result};
 use crate::limits::{Limits, TableLine};
 
 #[cfg(test)]
+mod docs_tests;
+#[cfg(test)]
 mod metrics_tests;
 mod registry;
 
