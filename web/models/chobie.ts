@@ -39,7 +39,7 @@ function merge(robots: string, terrain: string): { world: string } | { problem: 
   return { world: `${rows.join('\n').replace(/\n+$/, '')}\n` };
 }
 
-export const chobieEditor: ModelEditor = {
+export const editor: ModelEditor = {
   title: 'World: robots and terrain',
   owns: ['world'],
   mount(root, ctx) {

@@ -291,7 +291,7 @@ pub fn spliced() -> Vec<(&'static str, &'static str, String)> {
     vec![(
         "docs/scenario-format.md",
         "limits",
-        crate::limits::markdown_table(),
+        crate::models::limits_markdown(),
     )]
 }
 
@@ -541,7 +541,7 @@ mod tests {
         let amas = &schema["$defs"]["AmasScenario"]["properties"];
         assert_eq!(
             amas["supply_rows"]["maximum"],
-            crate::Limits::PAGE.amas.supply_rows
+            kumiki_amas::limits::LIMITS.page.supply_rows
         );
         assert_eq!(amas["name"]["maxLength"], MAX_NAME_CHARS);
         assert_eq!(amas["max_steps"]["default"], 100_000);

@@ -1,13 +1,13 @@
-//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, the reader of
-//! its keys, their schemas, its helper calls and its paper), and the object-safe face of its
-//! description ([`AnySpec`]) that a scenario holds whatever the model.
+//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, limits, the
+//! reader of its keys, their schemas, its helper calls and its paper), and the object-safe face
+//! of its description ([`AnySpec`]) that a scenario holds whatever the model.
 
 use std::any::Any;
 
 use serde_json::{Map, Value};
 
 use crate::error::Result;
-use crate::limits::Limits;
+use crate::limits::{LimitTable, Limits};
 use crate::model::{Action, MetricInfo, Model, Spec};
 
 /// A registered model.
@@ -22,23 +22,52 @@ pub struct ModelEntry {
     pub model_version: u32,
     /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
     pub metrics: &'static [MetricInfo],
+    /// Its own sizes under the page's and the large limits, each described once: its
+    /// [`ModelLimits`](crate::limits::ModelLimits).
+    pub limits: &'static dyn LimitTable,
     /// Reads the model's keys of a scenario into its typed description: [`parse`] of its
     /// [`Spec`].
     pub parse: fn(Value) -> Result<Box<dyn AnySpec>>,
     /// The JSON Schema of those keys ([`schema_of`] its [`Spec`]).
-    #[cfg(feature = "schema")]
-    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub schema: SchemaOf,
     /// The JSON Schema of one of its actions (a disturbance without its `at`).
-    #[cfg(feature = "schema")]
-    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
-    /// Its paper's claims for the reproduction report. Left out of builds without the `report`
-    /// feature (the page's wasm, which shows the report's published JSON), so the findings'
-    /// code is not linked there.
-    #[cfg(feature = "report")]
-    pub paper: &'static crate::report::Paper,
+    /// Its paper's claims for the reproduction report ([`paper_of`] its `Paper`).
+    pub paper: PaperOf,
 }
+
+/// A JSON Schema as a [`ModelEntry`] names it: [`schema_of`] a type. A function of the schema
+/// generator in builds with the `schema` feature; nothing in the others (the page's wasm), so the
+/// generator is not linked there. A model crate writes the same entry either way.
+#[cfg(feature = "schema")]
+pub type SchemaOf = fn(&mut schemars::SchemaGenerator) -> schemars::Schema;
+#[cfg(not(feature = "schema"))]
+pub type SchemaOf = ();
+
+/// A paper as a [`ModelEntry`] names it: [`paper_of`] it. The paper in builds with the `report`
+/// feature; nothing in the others, so the findings' code is not linked there.
+#[cfg(feature = "report")]
+pub type PaperOf = &'static crate::report::Paper;
+#[cfg(not(feature = "report"))]
+pub type PaperOf = ();
+
+/// The keys of a scenario document that belong to its envelope, common to every model: the
+/// others are the model's own, read by its entry's `parse`. The core's scenario reader reads these
+/// (a test there holds it to this list); a model crate that reads one of its own preset files
+/// leaves them out to have the model's keys.
+pub const ENVELOPE: &[&str] = &[
+    "version",
+    "model",
+    "name",
+    "description",
+    "seed",
+    "max_steps",
+    "disturbances",
+    "exercise",
+    "compare",
+];
 
 /// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
 /// description from a shape, checking one. JSON arguments, a JSON answer; errors name the
@@ -101,11 +130,26 @@ pub fn parse<S: Spec + Send + Sync + 'static>(body: Value) -> Result<Box<dyn Any
     crate::error::from_value::<S>(body).map(|s| Box::new(s) as Box<dyn AnySpec>)
 }
 
-/// The JSON Schema of `T` as a subschema of `generator`: the `schema` and `disturbance` of a
-/// [`ModelEntry`].
+/// The JSON Schema of `T`, as a subschema of the generator it is given: the `schema` and
+/// `disturbance` of a [`ModelEntry`].
 #[cfg(feature = "schema")]
-pub fn schema_of<T: schemars::JsonSchema>(
-    generator: &mut schemars::SchemaGenerator,
-) -> schemars::Schema {
-    generator.subschema_for::<T>()
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {
+    fn of<T: schemars::JsonSchema>(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        generator.subschema_for::<T>()
+    }
+    of::<T>
 }
+
+/// Without the `schema` feature, nothing.
+#[cfg(not(feature = "schema"))]
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {}
+
+/// A model's paper: the `paper` of its [`ModelEntry`].
+#[cfg(feature = "report")]
+pub const fn paper_of(paper: &'static crate::report::Paper) -> PaperOf {
+    paper
+}
+
+/// Without the `report` feature, nothing.
+#[cfg(not(feature = "report"))]
+pub const fn paper_of(_: &'static crate::report::Paper) -> PaperOf {}

@@ -3,7 +3,9 @@
 
 use serde_json::{json, Map, Value};
 
-use super::figure::{figures, name_of, value_at, words, Figure};
+use super::figure::{figures, Figure};
+use super::labels::name_of;
+use super::values::{value_at, words};
 use super::{statistic_of, PlotSpec, Spread, Statistic};
 use crate::experiment::{Experiment, Row, Trace};
 use crate::presets;
@@ -166,7 +168,7 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
             let st = statistic_of(s.statistic, sp);
             assert_eq!((f.statistic, f.spread), (Some(st), Some(sp)), "{at}");
             assert!(
-                f.described.starts_with(super::figure::statistic_words(st)),
+                f.described.starts_with(super::labels::statistic_words(st)),
                 "{at}: {}",
                 f.described
             );
@@ -179,14 +181,14 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
         (Some(statistic), Some(spread)),
         "{at}"
     );
-    let words_of = super::figure::statistic_words(statistic);
+    let words_of = super::labels::statistic_words(statistic);
     assert!(
         f.described.starts_with(words_of),
         "{at}: '{}' does not start with {words_of}",
         f.described
     );
     assert!(
-        f.described.contains(super::figure::spread_words(spread)),
+        f.described.contains(super::labels::spread_words(spread)),
         "{at}: '{}'",
         f.described
     );
@@ -216,9 +218,9 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
                         PlotSpec::Bars(_) => {
                             words(value_at(r, x).as_deref()) == p.categories[pt.x as usize]
                         }
-                        _ => super::figure::number(value_at(r, x).as_deref()) == pt.x,
+                        _ => super::values::number(value_at(r, x).as_deref()) == pt.x,
                     })
-                    .map(|r| super::figure::number(value_at(r, y).as_deref()))
+                    .map(|r| super::values::number(value_at(r, y).as_deref()))
                     .collect();
                 let n = values.iter().filter(|v| v.is_finite()).count();
                 assert_eq!(pt.n, n, "{at}: n at x = {}", pt.x);

@@ -22,7 +22,6 @@ use serde_json::{Map, Value};
 use kumiki_model::entry::{self, ModelEntry, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
-use kumiki_model::limits::Limits;
 use kumiki_model::math;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
@@ -32,6 +31,7 @@ mod choose;
 pub mod connect;
 mod init;
 mod light;
+pub mod limits;
 pub mod metrics;
 pub mod motion;
 pub mod paper;
@@ -55,11 +55,10 @@ pub const ENTRY: ModelEntry = ModelEntry {
     default_max_steps: 5000,
     model_version: 3,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::ActionSpec>,
+    schema: entry::schema_of::<Spec>(),
+    disturbance: entry::schema_of::<actions::ActionSpec>(),
     queries: &[
         Query {
             name: "derive",
@@ -72,12 +71,11 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.
-const MAX_TARGETS: usize = Limits::LARGE.cubes3d.targets;
+const MAX_TARGETS: usize = crate::limits::LIMITS.large.targets;
 
 /// Event kinds.
 const ARRIVED: u8 = 0;

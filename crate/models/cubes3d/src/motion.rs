@@ -11,11 +11,11 @@
 //!    Q lets go of every bond not on the axis except the one to P, and every unit must still be
 //!    held by the rest of the structure during the swing (so also after it).
 //!
-//! Rule 4 is checked exactly, in [`super::connect`].
+//! Rule 4 is checked exactly, in [`super::connect`], which also lists the positions a unit can
+//! reach by such moves.
 
 use std::sync::Arc;
 
-use super::connect::Scratch;
 use super::types::TYPE_OF_MASK;
 
 /// Empty cells around the space: units stay this far from the edge of the cell buffer, so
@@ -204,47 +204,6 @@ impl Structure {
             let j = self.nb(c, d);
             if self.occupied(j) {
                 self.types[j] = TYPE_OF_MASK[self.mask(j) as usize];
-            }
-        }
-    }
-
-    /// The reachable positions of the unit at `p` (rules 1 to 4 of the module documentation), in
-    /// a fixed order: carriers by direction from p, then axes, then senses. Left in `s.moves`.
-    pub fn reachable(&self, p: usize, s: &mut Scratch) {
-        s.moves.clear();
-        let mut pending = [0u32; 2];
-        for k in 0..6 {
-            let q = self.nb(p, k);
-            if !self.occupied(q) {
-                continue;
-            }
-            let bond_axis = k / 2;
-            for a in 0..3 {
-                if a == bond_axis {
-                    continue;
-                }
-                if !self.supported(q, a) {
-                    continue;
-                }
-                let b = 3 - bond_axis - a;
-                let mut n = 0;
-                for f in [2 * b, 2 * b + 1] {
-                    let dest = self.nb(q, f);
-                    if self.wall[dest] || self.occupied(dest) || self.occupied(self.nb(p, f)) {
-                        continue;
-                    }
-                    pending[n] = dest as u32;
-                    n += 1;
-                }
-                if n > 0 && self.stays_connected(p, Some((q, a)), s) {
-                    for &dest in &pending[..n] {
-                        s.moves.push(Move {
-                            dest,
-                            carrier: q as u32,
-                            axis: a as u8,
-                        });
-                    }
-                }
             }
         }
     }

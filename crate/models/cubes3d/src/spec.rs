@@ -49,7 +49,7 @@ pub struct Spec {
     /// units, connected face to face.
     pub(super) shape: String,
     /// The targets, the first one worked toward first (section 6 switches between them).
-    #[schemars(length(min = 1, max = Limits::PAGE.cubes3d.targets))]
+    #[schemars(length(min = 1, max = crate::limits::LIMITS.page.targets))]
     pub(super) targets: Vec<TargetSpec>,
     /// The choice rule of step 4.
     #[serde(default = "default_selection")]
@@ -177,7 +177,7 @@ impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
-        let max = limits.cubes3d;
+        let max = *crate::limits::LIMITS.of(limits);
         let (movable_types, light) = self.check()?;
 
         let shape = parse_shape(&self.shape, "shape", limits)?;
