@@ -4,6 +4,8 @@ use super::*;
 
 const REMOVE: &str = "square28, module removal (5.4)";
 const BREAK: &str = "square28, communication breakdown (5.5)";
+const NARROW: &str = "square28, conveyor 28 wide";
+const WIDE: &str = "square28, conveyor 36 wide";
 
 fn fig27_steps(r: &Results, scenario: &str, count: u32) -> Stats {
     r.stats(
@@ -79,25 +81,39 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         Verdict::from(worse == disturbed.len()),
         "Disturbance at step 360, modules drawn at random among those built. Medians, because \
          breakdown has a long tail: robots carrying modules climb to the stale high values \
-         broken modules keep and wander there.",
+         broken modules keep and wander there. A run that does not finish (with the most \
+         removals, every robot left on a part cut off from the supply) counts at its cap of \
+         50 000 steps.",
     ));
     // The knee: flat up to a threshold, rising after it.
     let mut text = Vec::new();
     let mut flat = true;
     let plural = |n: u32| if n == 1 { "module" } else { "modules" };
+    // Without rows (a claim re-run from other experiments) every count reads as 0.
+    let first = disturbed.first().copied().unwrap_or(0);
+    let last = disturbed.last().copied().unwrap_or(0);
+    // The lower half of the counts, and their top quarter, for the cost per added module.
+    let half = disturbed
+        .iter()
+        .copied()
+        .rev()
+        .find(|&c| 2 * c <= last)
+        .unwrap_or(0);
+    let quarter = disturbed
+        .iter()
+        .copied()
+        .find(|&c| 4 * c >= 3 * last)
+        .unwrap_or(0);
     for scenario in [REMOVE, BREAK] {
         let name = if scenario == REMOVE {
             "removal"
         } else {
             "breakdown"
         };
-        let rise = |c: u32| 100.0 * (fig27_steps(r, scenario, c).median / base.median - 1.0);
-        // Without rows (a claim re-run from other experiments) every count reads as 0.
-        let first = disturbed.first().copied().unwrap_or(0);
-        flat &= rise(first) < 5.0;
-        let mid = disturbed.get(disturbed.len() / 2).copied().unwrap_or(0);
-        let last = disturbed.last().copied().unwrap_or(0);
         let median = |c: u32| fig27_steps(r, scenario, c).median;
+        let rise = |c: u32| 100.0 * (median(c) / base.median - 1.0);
+        let slope = |a: u32, b: u32| (median(b) - median(a)) / f64::from(b.max(a + 1) - a);
+        flat &= rise(first) < 5.0;
         let collisions = |c: u32| {
             r.stats(
                 "amas-fig27",
@@ -109,31 +125,16 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
             )
             .median
         };
-        // Modules still carried when the square completes: trips never used.
-        let carried = |c: u32| {
-            let filter = [
-                ("scenario", json!(scenario)),
-                ("disturbances.0.count", json!(c)),
-            ];
-            let picked = r.values("amas-fig27", &filter, "picked");
-            let placed = r.values("amas-fig27", &filter, "placed");
-            let left: Vec<f64> = picked.iter().zip(&placed).map(|(a, b)| a - b).collect();
-            Stats::of(&left).median
-        };
         text.push(format!(
-            "{name}: +{:.0} % with {first} disturbed {}, +{:.0} % with {mid}, +{:.0} % with \
-             {last} ({:.1} steps per module from {first} to {mid}, {:.1} from {mid} to {last}); \
-             modules still carried at completion (median) {:.0} undisturbed, {:.0} with {first} \
-             disturbed {}; median collisions {:.0} undisturbed, {:.0} with {first} disturbed {}",
+            "{name}: +{:.0} % with {first} disturbed {}, +{:.0} % with {half}, +{:.0} % with \
+             {last}; {:.1} steps per added module from {first} to {half}, {:.1} from {quarter} \
+             to {last}; median collisions {:.0} undisturbed, {:.0} with {first} disturbed {}",
             rise(first),
             plural(first),
-            rise(mid),
+            rise(half),
             rise(last),
-            (median(mid) - median(first)) / f64::from(mid - first),
-            (median(last) - median(mid)) / f64::from(last - mid),
-            carried(0),
-            carried(first),
-            plural(first),
+            slope(first, half),
+            slope(quarter, last),
             collisions(0),
             collisions(first),
             plural(first),
@@ -153,13 +154,15 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
     };
     let mut rules = Vec::new();
     for (field, _) in FIELDS {
-        for rule in ["token", "relay"] {
+        for rule in ["token", "relay", "blackboard"] {
             let base = rules_steps(field, rule, 0, "steps").median;
             let rise = |c: u32| 100.0 * (rules_steps(field, rule, c, "steps").median / base - 1.0);
             rules.push(format!(
-                "{field} {rule} +{:.0} % / +{:.0} %",
+                "{field} {rule} +{:.0} % / +{:.0} % ({:.0} / {:.0} collisions)",
                 rise(1),
-                rise(10)
+                rise(10),
+                rules_steps(field, rule, 1, "collisions").median,
+                rules_steps(field, rule, 10, "collisions").median,
             ));
         }
     }
@@ -167,6 +170,36 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
     let robots = rules_steps("continuous", "token", 0, "total_steps").mean
         / rules_steps("continuous", "token", 0, "steps").mean;
     let bound = rules_steps("continuous", "token", 0, "lower_bound").mean / robots;
+    // The same square where the robots do not start one under each column.
+    let supply = |scenario: &str, count: u32, metric: &str| {
+        r.stats(
+            "amas-fig27-supply",
+            &[
+                ("scenario", json!(scenario)),
+                ("disturbances.0.count", json!(count)),
+            ],
+            metric,
+        )
+        .median
+    };
+    let mut wide = Vec::new();
+    for scenario in [NARROW, WIDE] {
+        let base = supply(scenario, 0, "steps");
+        let counts: Vec<String> = [1, 10, 40]
+            .iter()
+            .map(|&c| {
+                format!(
+                    "+{:.1} % with {c}",
+                    100.0 * (supply(scenario, c, "steps") / base - 1.0)
+                )
+            })
+            .collect();
+        wide.push(format!(
+            "{scenario}: undisturbed {base:.0} steps ({:.0} collisions), {}",
+            supply(scenario, 0, "collisions"),
+            counts.join(", ")
+        ));
+    }
     out.push(Finding::new(
         "§5.5, fig. 27",
         "When the number of disturbances does not exceed some threshold, efficiency is not much \
@@ -174,26 +207,36 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         format!(
             "median steps against the undisturbed run: {}. Undisturbed {:.0} steps against the \
              footnote-2 bound of {bound:.0}. Removal of 1 / 10 modules with each field and rule \
-             (amas-fig27-rules, medians): {}",
+             (amas-fig27-rules, medians): {}. Removal on a conveyor wider than the square \
+             (amas-fig27-supply, medians): {}",
             text.join("; "),
             base.median,
-            rules.join(", ")
+            rules.join(", "),
+            wide.join("; ")
         ),
-        r.rows("amas-fig27").len() + r.rows("amas-fig27-rules").len(),
+        r.rows("amas-fig27").len()
+            + r.rows("amas-fig27-rules").len()
+            + r.rows("amas-fig27-supply").len(),
         Verdict::from(flat),
         "Holds if the fewest disturbances tried cost less than 5 % of the undisturbed median. \
-         Undisturbed, the field is level across the square, each of the 28 robots starts on its \
-         own supply module and builds one column, no robot meets another, and every robot \
-         places its last module in the same step. The first disturbance costs the end of the \
-         run, not the hole: the hole is refilled within about 40 steps, and the square is 95 % \
-         built only about 2 % later than undisturbed (a step-by-step trace); but the columns \
-         no longer finish together, so robots are still carrying modules, a trip each that is \
-         never used, when the last site is filled, and the last sites wait for robots climbing \
-         the whole square. From 1 to 20 removed modules the cost grows with the collisions of \
-         the mixed traffic, while no robot loses its way; the wandering of 5.4, the paper's \
-         cause of low efficiency, sets in only above about 20 removed modules (next row). \
-         The text does not say how far the paper's undisturbed run was from this perfect \
-         order, nor what 'not much affected' allows (docs/models/amas.md, interpretation 30).",
+         There is a knee: over the top quarter of the counts each further module costs far more \
+         than one did over the lower half (the steps per added module above), as robots lose their way among growth-front \
+         modules (5.4, next row) and, with the most removals, a run may never finish because \
+         every robot is left on a part of the structure cut off from the supply (previous row; \
+         5.4: the assembly is not deadlocked 'as long as there is at least one robot that can \
+         escape'). Below the knee the cost is not flat. Undisturbed, each of the 28 robots \
+         starts under its own column and builds it, no robot meets another and all place their \
+         last module in the same step. Any disturbance ends that order, whatever notices or \
+         refills the hole: the blackboard records no collision at all and one removed module \
+         still costs about as much as with the other rules; a hole at a column's top, refilled the \
+         next step by that column's robot with no collision and no sideways move, still costs \
+         a trip (a step-by-step trace, docs/models/amas.md, interpretation 30), because the \
+         robot whose column is one module behind reaches its column's top first on every trip \
+         and no other robot can share its extra trip. Where the robots do not start one under \
+         each column (the same square in the middle of a conveyor 36 modules wide), the \
+         undisturbed run is already slower, its robots meeting from the start, and the first \
+         removals add little more than their refill trips: the paper's plateau. The text gives the 28 robots and the 28 columns but neither the \
+         conveyor's width nor the counts figure 27 plots.",
     ));
     // Section 5.4's mechanism: robots among growth-front modules lose their way and wander.
     let wander = |scenario: &str, c: u32| {

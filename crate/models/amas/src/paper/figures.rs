@@ -100,20 +100,31 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
 
     // The T (two corners) against the L (one).
     let mut text = Vec::new();
+    let mut corners = Vec::new();
     let mut ok = true;
     for (field, name) in FIELDS {
         let l = fig23(r, "L", field, "token", 10, "collisions");
         let t = fig23(r, "T", field, "token", 10, "collisions");
         ok &= t.mean < l.mean;
         text.push(format!("{name}: T {}, L {}", t.describe(0), l.describe(0)));
+        let corner = |shape: &str| fig23(r, shape, field, "token", 10, "corner_collisions").mean;
+        corners.push(format!(
+            "{name} T {:.1} ({:.0} %), L {:.1} ({:.0} %)",
+            corner("T"),
+            100.0 * corner("T") / t.mean,
+            corner("L"),
+            100.0 * corner("L") / l.mean
+        ));
     }
     out.push(Finding::new(
         "§5.2, fig. 23",
         "The T-shaped structure has two corners, the L-shaped structure one: the T suffers \
          fewer collisions.",
         format!(
-            "collisions per run, 10 robots, token rule: {}",
-            text.join("; ")
+            "collisions per run, 10 robots, token rule: {}. On the two corner rows (mean per \
+             run, share of the shape's collisions): {}",
+            text.join("; "),
+            corners.join("; ")
         ),
         40,
         Verdict::from(ok),
@@ -134,20 +145,30 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
     // The same comparison with both shapes upside down: figure 22's orientation is not in the
     // text, so the other one is reported beside it.
     let mut text = Vec::new();
+    let mut corners = Vec::new();
     let mut ok = true;
     for (field, name) in FIELDS {
         let l = turned("amas-fig23-corner", field, "collisions");
         let t = turned("amas-fig23-turned", field, "collisions");
         ok &= t.mean < l.mean;
         text.push(format!("{name}: T {}, L {}", t.describe(0), l.describe(0)));
+        let tc = turned("amas-fig23-turned", field, "corner_collisions").mean;
+        let lc = turned("amas-fig23-corner", field, "corner_collisions").mean;
+        corners.push(format!(
+            "{name} T {tc:.1} ({:.0} %), L {lc:.1} ({:.0} %)",
+            100.0 * tc / t.mean,
+            100.0 * lc / l.mean
+        ));
     }
     out.push(Finding::new(
         "§5.2, fig. 23",
         "The T-shaped structure has two corners, the L-shaped structure one: the T suffers \
          fewer collisions (both shapes upside down).",
         format!(
-            "collisions per run, 10 robots, token rule, stems on the supply: {}",
-            text.join("; ")
+            "collisions per run, 10 robots, token rule, stems on the supply: {}. On the two \
+             corner rows (mean per run, share of the shape's collisions): {}",
+            text.join("; "),
+            corners.join("; ")
         ),
         r.rows("amas-fig23-turned").len() + 20,
         Verdict::from(ok),

@@ -25,6 +25,7 @@ pub const PAPER: Paper = Paper {
         "amas-fig24",
         "amas-fig27",
         "amas-fig27-rules",
+        "amas-fig27-supply",
         "amas-bridge",
         "amas-figB1",
     ],
