@@ -28,7 +28,13 @@ impl Fracta {
             let diff = f64::from(self.diff[u]);
             let mut irr = unit.irr;
             let mut fired = false;
-            if dx.abs() < p.stable {
+            // Irritation "increases during deadlock state" (section 3.2 (i)): while x is stable
+            // (equation 4) and the unit's own difference is what it was a step before. A unit
+            // whose difference changed is not stuck: the structure around it has just changed
+            // (interpretation 9).
+            let still = self.last_diff[u] == self.diff[u];
+            self.last_diff[u] = self.diff[u];
+            if dx.abs() < p.stable && still {
                 irr += flux.abs().max((diff - unit.x).abs());
             }
             if irr > p.i_th {

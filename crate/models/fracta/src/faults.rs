@@ -1,5 +1,6 @@
-//! Step phase 1, the "OK" signals of section 4: faulty units are cut off, the others take up
-//! the description with one spare fewer per unit lost and start equation 2 again.
+//! Step phase 1, the "OK" signals of section 4: faulty units are cut off, and the others take
+//! up the description with one spare fewer per unit lost. Nothing else restarts: the algorithm
+//! runs on, and the repair is launched by the differences the cut-off raises.
 
 use super::*;
 
@@ -7,8 +8,10 @@ impl Fracta {
     /// Section 4: a unit that sends no "OK" at the start of a step is cut off by its neighbours.
     /// If that splits the system, the largest part carries on (the part holding the smallest
     /// unit id among equals) and the others are stranded. The goal then loses one priority
-    /// level per unit lost (the description with one spare fewer, section 3.3), and every
-    /// working unit restarts equation 2.
+    /// level per unit lost (the description with one spare fewer, section 3.3). x and the
+    /// irritation carry on from the step before: equation 2's initial state is the start's
+    /// (interpretation 8), so the units whose difference the cut-off raised above their x pass
+    /// equation 3 at once.
     pub(super) fn cut_off_faulty(&mut self) {
         if self.pending == 0 {
             return;
@@ -53,8 +56,5 @@ impl Fracta {
         }
         self.goal = self.goal.without_last_levels(before - self.working.len());
         self.refresh();
-        // The structure the units form has changed: equation 2 starts again from its initial
-        // state (section 3.3 / 4: the self-repair process is launched anew).
-        self.restart();
     }
 }

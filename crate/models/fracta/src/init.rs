@@ -167,6 +167,7 @@ impl Fracta {
             mask: vec![0; count],
             class: vec![0; count],
             diff: vec![0; count],
+            last_diff: vec![0; count],
             closest: vec![0; count],
             zero: 0,
             pending: 0,
@@ -185,7 +186,7 @@ impl Fracta {
             events: Vec::new(),
         };
         model.refresh();
-        model.restart();
+        model.initial_state();
         model
     }
 
@@ -295,13 +296,14 @@ impl Fracta {
         out
     }
 
-    /// Equation 2's initial state, x(i, 0) = diff(i, 0), and no irritation, for every working
-    /// unit: at the start and whenever a cut-off changes the structure the units form.
-    pub(super) fn restart(&mut self) {
+    /// Equation 2's initial state, x(i, 0) = diff(i, 0), and no irritation, for every unit at
+    /// the start.
+    fn initial_state(&mut self) {
         for &u in &self.working {
             let unit = &mut self.units[u as usize];
             unit.x = f64::from(self.diff[u as usize]);
             unit.irr = 0.0;
+            self.last_diff[u as usize] = self.diff[u as usize];
         }
     }
 }

@@ -63,7 +63,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
-    model_version: 5,
+    model_version: 6,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
@@ -159,6 +159,9 @@ pub struct Fracta {
     mask: Vec<u8>,
     class: Vec<u8>,
     diff: Vec<u32>,
+    /// Each working unit's difference when the diffusion phase last ran: irritation grows
+    /// only while it stays the same.
+    last_diff: Vec<u32>,
     closest: Vec<u16>,
     /// Working units with difference 0.
     zero: usize,
@@ -299,6 +302,9 @@ impl Model for Fracta {
             h.u8(u.status as u8);
             h.f64(u.x);
             h.f64(u.irr);
+        }
+        for &d in &self.last_diff {
+            h.u32(d);
         }
         h.u64(self.moves);
         h.u64(self.conflicts);

@@ -14,6 +14,7 @@ pub const PAPER: Paper = Paper {
     experiments: &[
         "fracta-assembly",
         "fracta-rings",
+        "fracta-start",
         "fracta-repair",
         "fracta-deadlock",
     ],
@@ -57,8 +58,11 @@ fn findings(r: &Results) -> Vec<Finding> {
 /// The depth the breadth-first search of the fewest repair motions goes to.
 const SEARCH_LIMIT: usize = 6;
 
-/// Steps after a cut-off within which a traced repair must finish.
-const HELD_BACK_LIMIT: u64 = 2000;
+/// Steps after a cut-off within which a traced repair must finish: the cap of `fracta-repair`.
+const TRACE_LIMIT: u64 = 5000;
+
+/// The seeds `fracta-repair` runs for each position, which the traces follow too.
+const REPAIR_SEEDS: u64 = 100;
 
 /// Steps after a cut-off within which [`start`] looks for the first motion.
 const FIRST_MOTION_LIMIT: u64 = 200;
@@ -97,7 +101,10 @@ fn start(unit: u64) -> (String, Begins) {
     let (who, them) = match first.improving.len() {
         0 => ("no unit has a motion".to_string(), ""),
         1 => (format!("only unit {units} has a motion"), "it"),
-        _ => (format!("units {units} have a motion"), "one of them"),
+        _ => (
+            format!("units {units} have a motion"),
+            "at least one of them",
+        ),
     };
     let activated = match (first.improving.is_empty(), first.improving_activated) {
         (true, _) => String::new(),
@@ -105,7 +112,11 @@ fn start(unit: u64) -> (String, Begins) {
         (false, false) if them == "it" => "; equation 3 does not activate it".into(),
         (false, false) => "; equation 3 activates none of them".into(),
     };
-    let plural = if first.wait == 1 { "" } else { "s" };
+    let when = match first.wait {
+        0 => "in the cut-off's own step".to_string(),
+        1 => "1 step after the cut-off".to_string(),
+        n => format!("{n} steps after the cut-off"),
+    };
     let how = if first.by_irritation {
         ", made by units whose irritation fired"
     } else {
@@ -119,16 +130,20 @@ fn start(unit: u64) -> (String, Begins) {
     (
         format!(
             "Right after the cut-off {who} that lowers the summed difference{activated}; the \
-             first motion comes {} step{plural} after the cut-off{how}.",
-            first.wait
+             first motion comes {when}{how}."
         ),
         begins,
     )
 }
 
-/// How every assembly from two lines begins (nothing is random before the first motion).
-fn assembly_start() -> String {
-    let Some(first) = search::first_motion_of_assembly(FIRST_MOTION_LIMIT) else {
+/// The activation threshold of `fracta-start`: just below 1, so that equation 2's initial
+/// state, x = diff, passes equation 3 for every unit with a difference.
+const START_G: f64 = 0.99;
+
+/// How every assembly from two lines begins (nothing is random before the first motion), and
+/// how it begins when equation 3 holds at the initial state (`fracta-start`).
+fn assembly_start(r: &Results) -> String {
+    let Some(first) = search::first_motion_of_assembly(1.0, FIRST_MOTION_LIMIT) else {
         return format!("No unit moves in the first {FIRST_MOTION_LIMIT} steps.");
     };
     let units = first
@@ -141,22 +156,53 @@ fn assembly_start() -> String {
     let activated = if first.improving_activated {
         "equation 3 activates one of them"
     } else {
-        "equation 3 activates none of them: their difference is below the mean, and x, the \
-         estimate of the difference around them, rises above it from the first step"
+        "equation 3 activates none of them: equation 2's initial state, x(i, 0) = diff(i, 0), \
+         makes it read G·diff < diff in the first step, which no unit passes with G = 1, and \
+         afterwards x, the estimate of the difference around them, rises above their own, fed \
+         by their neighbours' larger differences (\"this makes units having relatively large \
+         difference move\", section 3.2.4, and theirs are the smallest)"
     };
     let how = if first.by_irritation {
-        ", made by units whose irritation fired"
+        ", made by units whose irritation fired (section 3.2.5's way out of a deadlock)"
     } else {
         ""
     };
-    format!(
+    let mut text = format!(
         "At the start the units with a roll that lowers the summed difference are {units} \
          (unit (difference); the structure's mean is {}); {activated}. The first motion comes \
          {} steps in{how}, the same in every seed, so the shortest assembly is that wait plus \
          the motions.",
         fmt(first.mean_difference, 2),
         first.wait
-    )
+    );
+    let steps = r.values("fracta-start", &[], "convergence_steps");
+    if let Some(lowered) = search::first_motion_of_assembly(START_G, FIRST_MOTION_LIMIT) {
+        let s = Stats::of(&steps);
+        let here = Stats::of(&r.values("fracta-assembly", &[], "convergence_steps"));
+        text.push_str(&format!(
+            " With G = {START_G} (fracta-start, the same seeds), the initial state passes \
+             equation 3 for every unit with a difference, and the first motion comes {}{}: \
+             {} runs assembled, the shortest in {} steps ({} runs), median {} against {} \
+             with G = 1. The text gives no value of G (nor of K, L or I_th), so whether the \
+             paper's units began at once or waited for irritation cannot be recovered from it; \
+             G stays 1 (docs/models/fracta.md, interpretation 18).",
+            match lowered.wait {
+                0 => "in the first step".to_string(),
+                n => format!("{n} steps in"),
+            },
+            if lowered.by_irritation {
+                ", by irritation"
+            } else {
+                ", by equation 3"
+            },
+            ratio(&r.values("fracta-start", &[], "completed")),
+            fmt(s.min, 0),
+            steps.iter().filter(|&&v| v == s.min).count(),
+            fmt(s.median, 1),
+            fmt(here.median, 1)
+        ));
+    }
+    text
 }
 
 /// "k of n (p %)".
@@ -172,9 +218,8 @@ fn ratio(done: &[f64]) -> String {
 }
 
 /// What the runs that did not reach the goal ended in: how many with an enclosed hole (a ring
-/// of units round an empty cell, which no rule can open; the `no_holes` rule keeps motions from
-/// closing one, so only a ring of two or more empty cells could remain), the others at the
-/// step cap.
+/// of units round an empty cell, which no rule can open; the paper states no rule against
+/// closing one, so `no_holes` is off by default), the others at the step cap.
 fn failures(r: &Results, experiment: &str, filter: &[(&str, Value)]) -> String {
     let failed: Vec<_> = r
         .select(experiment, filter)
@@ -265,9 +310,21 @@ fn assembly(r: &Results) -> Vec<Finding> {
             ),
             runs: s.n,
             verdict: Verdict::NotStated,
-            note: format!("Completed runs of fracta-assembly. {}", assembly_start()),
+            note: format!("Completed runs of fracta-assembly. {}", assembly_start(r)),
         },
     ]
+}
+
+/// Where traced repairs spend their steps, in words.
+fn trace_text(t: &search::RepairTrace) -> String {
+    format!(
+        "the {} runs that rebuilt the triangle took {} steps: {} began with a unit able to \
+         lower the summed difference and none of those units activated, {} in a local minimum \
+         where no motion lowers it (only a unit whose irritation fired can move then); in {} \
+         two or more units rolled at once and the summed difference rose (each roll is chosen \
+         against the structure as it was); irritation made {} rolls, which take any change.",
+        t.runs, t.steps, t.held, t.stuck, t.together_worse, t.irritated_rolls
+    )
 }
 
 fn repair(r: &Results) -> Vec<Finding> {
@@ -283,24 +340,17 @@ fn repair(r: &Results) -> Vec<Finding> {
             )
         })
         .collect();
-    let held_back: Vec<Option<(u64, u64)>> = FAULTS
+    let traces: Vec<Option<search::RepairTrace>> = FAULTS
         .iter()
-        .map(|&(unit, _)| search::held_back_steps(unit, HELD_BACK_LIMIT))
+        .map(|&(unit, _)| search::trace_repairs(unit, 1..=REPAIR_SEEDS, TRACE_LIMIT))
         .collect();
-    let held_text = |h: &Option<(u64, u64)>| match *h {
-        Some((steps, held)) => format!(
-            "Traced step by step (the preset's seed), the repair takes {steps} steps after the \
-             cut-off; in {held} \
-             of them a unit had a motion that lowers the summed difference and no such unit \
-             was activated."
-        ),
-        None => format!(
-            "The traced repair (the preset's seed) did not finish in {HELD_BACK_LIMIT} steps."
-        ),
+    let held_text = |t: &Option<search::RepairTrace>| match t {
+        Some(t) => format!("Traced step by step (the same seeds), {}", trace_text(t)),
+        None => "The repair could not be traced (preset missing).".into(),
     };
     let mut out = Vec::new();
     for (((unit, role), (fewest, (begins, _))), held) in
-        FAULTS.into_iter().zip(&analysed).zip(&held_back)
+        FAULTS.into_iter().zip(&analysed).zip(&traces)
     {
         let filter: [(&str, Value); 1] = [("disturbances.0.unit", json!(unit))];
         let done = r.values(EXP, &filter, "completed");
@@ -368,19 +418,45 @@ fn repair(r: &Results) -> Vec<Finding> {
             none.join(", ")
         ));
     }
-    let (steps, idle) = held_back
+    let prompt = analysed
         .iter()
-        .flatten()
-        .fold((0, 0), |(s, h), &(steps, held)| (s + steps, h + held));
+        .filter(|(fewest, (_, begins))| {
+            matches!(begins, Begins::Prompt) && fewest.is_some_and(|n| n > 0)
+        })
+        .count();
+    let moving = analysed
+        .iter()
+        .filter(|(fewest, _)| fewest.is_some_and(|n| n > 0))
+        .count();
     waits.push(format!(
-        "Traced step by step at every position (the preset's seed), {idle} of the {steps} \
-         repair steps passed with a unit able to lower the summed difference and none of them \
-         activated. Equation 3 activates a unit only when its difference exceeds x, the \
-         estimate of the difference around it; a unit whose roll would help is held back while \
-         its neighbours' differences are larger than its own, which keeps its x above its \
-         difference (the corner fault's spare: difference 2 beside 4 and 5). Right after the \
-         cut-off x = diff for every unit (equation 2's initial state), so equation 3 \
-         activates no unit in that first step."
+        "At {prompt} of the {moving} positions where a unit must move, equation 3 activates a \
+         unit that can lower the summed difference in the cut-off's own step: the cut-off \
+         leaves x where the finished structure had it (0, as every difference was 0) and \
+         raises the differences of the units around the hole above it, so they pass equation \
+         3 first (docs/models/fracta.md, interpretation 8)."
+    ));
+    let fastest: Vec<f64> = FAULTS
+        .iter()
+        .map(|&(unit, _)| {
+            r.stats(EXP, &[("disturbances.0.unit", json!(unit))], "repair_steps")
+                .min
+        })
+        .collect();
+    if fastest.iter().all(|v| v.is_finite()) {
+        waits.push(format!(
+            "The fastest run at each position takes {} steps, a mean of {}.",
+            fastest
+                .iter()
+                .map(|&v| fmt(v, 0))
+                .collect::<Vec<_>>()
+                .join(", "),
+            fmt(fastest.iter().sum::<f64>() / fastest.len() as f64, 1)
+        ));
+    }
+    let total = search::RepairTrace::total(traces.iter().flatten());
+    waits.push(format!(
+        "Traced step by step over all positions, {}",
+        trace_text(&total)
     ));
     let held = waits.join(" ");
     let every = FAULTS.iter().all(|&(unit, _)| {

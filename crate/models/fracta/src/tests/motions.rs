@@ -108,63 +108,91 @@ fn only_irritation_moves_a_unit_that_no_direction_improves() {
 }
 
 #[test]
-fn after_a_corner_fault_equation_3_holds_back_the_only_unit_that_can_improve() {
-    // Fault on unit 7 (docs/models/fracta.md, "Speed"): the spare is the only unit with a roll
-    // that lowers the difference around it, but its difference is below its neighbours', so
-    // equation 3 never activates it; the units it does activate have no such roll and wait
-    // for irritation.
+fn after_a_corner_fault_the_spare_moves_at_once() {
+    // Fault on unit 7 (docs/models/fracta.md, "Beside the paper"): the spare is the only unit
+    // with a roll that lowers the difference around it. The cut-off leaves x at the finished
+    // triangle's 0 and raises the spare's difference, so equation 3 activates it in the
+    // cut-off's own step, and the two motions the search finds are the two the run makes.
     let mut s = presets::scenario("fracta-repair").unwrap();
     s.disturbances[0].action.insert("unit".into(), json!(7));
     let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
     m.cut_off_faulty();
-    let t = types();
-    let mut improving = BTreeSet::new();
-    for u in m.working.clone() {
-        if !t.info[m.class[u as usize] as usize].movable {
-            continue;
-        }
-        let cell = m.units[u as usize].cell;
-        for pivot in 0..6 {
-            for turn in Turn::BOTH {
-                if let Some(to) = m.legal(cell, m.mask[u as usize], pivot, turn) {
-                    if m.change_after(u, cell, to) < 0 {
-                        improving.insert(u);
-                    }
-                }
-            }
-        }
+    let improving = search::improving_units(&m);
+    assert_eq!(improving, vec![0]);
+    m.diffuse();
+    assert!(m.active.contains(&(0, false)), "{:?}", m.active);
+    m.plan();
+    assert_eq!(m.plans.iter().map(|p| p.unit).collect::<Vec<_>>(), vec![0]);
+    m.commit();
+    m.refresh();
+    m.steps += 1;
+    while !m.completed() && m.steps < 50 {
+        m.step();
     }
-    assert_eq!(improving, BTreeSet::from([0]));
-    for _ in 0..12 {
-        m.diffuse();
-        let active: Vec<u32> = m.active.iter().map(|a| a.0).collect();
-        assert!(!active.contains(&0), "{active:?}");
-        assert!(m.active.iter().all(|a| !a.1), "no irritation yet");
-        m.plan();
-        assert!(m.plans.is_empty());
-        m.steps += 1;
-    }
-    assert_eq!(m.moves, 0);
+    assert!(m.completed());
+    assert_eq!((m.steps, m.moves), (2, 2));
+    assert_eq!(search::fewest_repair_motions(7, 4), Some(2));
+}
+
+#[test]
+fn irritation_grows_only_while_a_units_difference_stays() {
+    // The fault on unit 4 leaves no motion that lowers the summed difference: only irritation
+    // can move a unit. In the cut-off's own step the differences around the hole change, so
+    // no unit's irritation grows; from the next step on, the units whose difference stays grow
+    // theirs while x is stable (equation 4), and irritation makes the first motion.
+    let mut s = presets::scenario("fracta-repair").unwrap();
+    s.disturbances[0].action.insert("unit".into(), json!(4));
+    let mut m = Fracta::of_scenario(&s).unwrap();
+    m.apply(&s.disturbances[0].action).unwrap();
+    m.decide();
+    assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
+    assert!(m.working.iter().all(|&u| m.units[u as usize].irr == 0.0));
+    m.act();
+    let before: Vec<u32> = m.diff.clone();
+    m.decide();
+    let grew: Vec<u32> = m
+        .working
+        .iter()
+        .copied()
+        .filter(|&u| m.units[u as usize].irr > 0.0)
+        .collect();
+    assert!(!grew.is_empty());
+    assert!(grew
+        .iter()
+        .all(|&u| m.diff[u as usize] == before[u as usize]));
+    let first = search::first_motion_after_fault(4, 50).unwrap();
+    assert!(
+        first.improving.is_empty() && first.by_irritation,
+        "{first:?}"
+    );
 }
 
 #[test]
 fn the_report_reads_what_a_repair_waits_for() {
-    // The apex fault: the spare beside it improves and equation 3 moves it as soon as x has
-    // diffused once.
-    let apex = search::first_motion_after_fault(1, 50).unwrap();
-    assert!(apex.improving.contains(&0), "{apex:?}");
-    assert!(apex.improving_activated && !apex.by_irritation, "{apex:?}");
-    assert!(apex.wait <= 1, "{apex:?}");
-    // The corner fault: only the spare could improve, equation 3 never activates it, and the
-    // first motion waits for irritation (the test above follows the same run step by step).
-    let corner = search::first_motion_after_fault(7, 50).unwrap();
-    assert_eq!(corner.improving, vec![0]);
-    assert!(
-        !corner.improving_activated && corner.by_irritation,
-        "{corner:?}"
-    );
-    assert!(corner.wait >= 12, "{corner:?}");
+    // The apex and the corner faults: the spare beside the hole improves, and equation 3 moves
+    // it in the cut-off's own step.
+    for unit in [1, 7] {
+        let first = search::first_motion_after_fault(unit, 50).unwrap();
+        assert!(first.improving.contains(&0), "{first:?}");
+        assert!(
+            first.improving_activated && !first.by_irritation && first.wait == 0,
+            "{first:?}"
+        );
+    }
+    // The traces count every step of every run, and the steps are the run's repair time.
+    let trace = search::trace_repairs(7, 1..=3, 5000).unwrap();
+    let mut steps = 0;
+    for seed in 1..=3 {
+        let mut s = presets::scenario("fracta-repair").unwrap();
+        s.seed = seed;
+        s.disturbances[0].action.insert("unit".into(), json!(7));
+        let mut run = Run::new(s).unwrap();
+        run.run_to_end();
+        steps += run.outcome().metrics["repair_steps"].as_u64().unwrap();
+    }
+    assert_eq!((trace.runs, trace.unfinished, trace.steps), (3, 0, steps));
+    assert_eq!((trace.held, trace.stuck, trace.together_worse), (0, 0, 0));
 }
 
 #[test]
@@ -173,7 +201,7 @@ fn the_assembly_from_two_lines_waits_for_irritation() {
     // line ends, whose difference is below the structure's mean; equation 3 activates none of
     // them (x, the estimate of the difference around them, rises above their own), so the
     // first motion waits for irritation, the same in every seed.
-    let start = search::first_motion_of_assembly(50).unwrap();
+    let start = search::first_motion_of_assembly(1.0, 50).unwrap();
     assert!(!start.improving.is_empty(), "{start:?}");
     assert!(
         start

@@ -93,9 +93,11 @@ fn every_completed_assembly_is_the_triangle_with_its_spare_beside_a_corner() {
     let goal = Fracta::of_scenario(&presets::scenario("fracta-repair").unwrap()).unwrap();
     let want = shape_up_to_symmetry(&goal);
     // Without the no-holes rule (the default, as the paper states none), a run that does not
-    // complete has closed a ring round an empty cell; with it, every run completes.
+    // complete has closed a ring round an empty cell (seeds 628 and 826 of fracta-assembly do);
+    // with it, every run completes.
     let mut stuck = 0;
-    for (no_holes, seeds) in [(false, 1..=300), (true, 1..=100)] {
+    let without: Vec<u64> = (1..=300).chain([628, 826]).collect();
+    for (no_holes, seeds) in [(false, without), (true, (1..=100).collect())] {
         for seed in seeds {
             let mut s = presets::scenario("fracta-triangle10")
                 .unwrap()
@@ -190,15 +192,21 @@ fn no_roll_ends_as_an_e_and_the_two_line_start_moves() {
 }
 
 #[test]
-fn a_cut_off_restarts_equation_2_from_the_differences() {
+fn a_cut_off_leaves_x_and_irritation_as_they_were() {
+    // Equation 2's initial state is the start's (interpretation 8): the cut-off changes the
+    // differences around the hole, not x or the irritation.
     let s = presets::scenario("fracta-repair").unwrap();
     let mut m = Fracta::of_scenario(&s).unwrap();
+    for _ in 0..10 {
+        m.step();
+    }
     m.apply(&s.disturbances[0].action).unwrap();
+    let before: Vec<(f64, f64)> = m.units.iter().map(|u| (u.x, u.irr)).collect();
     m.cut_off_faulty();
     assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
     for &u in &m.working {
-        assert_eq!(m.units[u as usize].x, f64::from(m.diff[u as usize]));
-        assert_eq!(m.units[u as usize].irr, 0.0);
+        let unit = &m.units[u as usize];
+        assert_eq!((unit.x, unit.irr), before[u as usize], "unit {u}");
     }
 }
 
