@@ -431,6 +431,18 @@ impl Chobie {
             .sum()
     }
 
+    /// Robots above the row of the robots resting on the terrain: the bridge's reserves (the
+    /// crawl's upper tier).
+    pub(super) fn reserves(&self) -> usize {
+        let body = &self.body;
+        let tier = (0..body.len() as u32)
+            .filter(|&r| body.grounded(r))
+            .map(|r| body.pos[r as usize].1)
+            .min()
+            .unwrap_or(i32::MIN);
+        body.pos.iter().filter(|p| p.1 < tier).count()
+    }
+
     pub(super) fn peak(&self) -> f64 {
         self.stress.iter().copied().fold(0.0, f64::max)
     }

@@ -38,7 +38,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "chobie",
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
-    model_version: 3,
+    model_version: 4,
     metrics: metrics::METRICS,
     parse: models::parse::<spec::Spec>,
     #[cfg(feature = "schema")]
