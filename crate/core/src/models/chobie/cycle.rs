@@ -390,7 +390,8 @@ impl Chobie {
                 [0.0, -(m.weight + self.loads[r] + tip_load), 0.0]
             })
             .collect();
-        match frame::solve_against(m, &body.pos, &elems, &fixed, &walls, &loads) {
+        let band = &mut self.band;
+        match frame::solve_against(m, &body.pos, &elems, &fixed, &walls, &loads, band) {
             Some(sol) => {
                 self.stress = sol.stress;
                 self.disp = sol.disp;

@@ -121,6 +121,7 @@ impl Chobie {
             worst: 0.0,
             failure: super::Failure::Standing,
             resumed: 0,
+            band: Vec::new(),
         };
         model.solve();
         model
