@@ -94,17 +94,26 @@ pub fn solve(
     fixed: &[bool],
     loads: &[[f64; 3]],
 ) -> Option<Solution> {
-    solve_against(m, pos, elems, fixed, &[], loads, &mut Vec::new())
+    solve_against(m, pos, elems, fixed, &[], loads, &mut Scratch::default())
+}
+
+/// The memory of the stiffness matrix's band, kept by the caller from one solve to the next: a
+/// thousand robots need megabytes, which allocated anew at each step would go back to the system
+/// and come again as page faults. It is no part of the state: a copy (a keyframe of the page's
+/// timeline) starts empty.
+#[derive(Debug, Default)]
+pub struct Scratch(Vec<f64>);
+
+impl Clone for Scratch {
+    fn clone(&self) -> Scratch {
+        Scratch::default()
+    }
 }
 
 /// [`solve`] with walls: a node marked in `walls` has terrain against its left face, which can
 /// push it right but not pull it (a unilateral contact, like a robot pressed against the cliff
 /// face under the bridge's root). The frame is solved with those nodes held in x; a wall that
 /// would have to pull lets go, and the frame is solved again until every wall pushes.
-///
-/// `band` is the memory of the stiffness matrix's band, kept by the caller from one solve to the
-/// next: a thousand robots need megabytes, which allocated anew at each step would go back to
-/// the system and come again as page faults.
 pub fn solve_against(
     m: &Mechanics,
     pos: &[(i32, i32)],
@@ -112,7 +121,7 @@ pub fn solve_against(
     fixed: &[bool],
     walls: &[bool],
     loads: &[[f64; 3]],
-    band: &mut Vec<f64>,
+    band: &mut Scratch,
 ) -> Option<Solution> {
     let mut held: Vec<bool> = (0..pos.len())
         .map(|i| walls.get(i).copied().unwrap_or(false) && !fixed[i])
@@ -141,7 +150,7 @@ fn solve_held(
     fixed: &[bool],
     held: &[bool],
     loads: &[[f64; 3]],
-    memory: &mut Vec<f64>,
+    memory: &mut Scratch,
 ) -> Option<(Solution, Vec<f64>)> {
     let n = pos.len();
     // Number the free nodes along the longer axis for a narrow band.
@@ -174,7 +183,7 @@ fn solve_held(
     let right = element_matrix(m, 1.0, 0.0);
     let down = element_matrix(m, 0.0, -1.0);
     let stiffness = |s: f64| if s == 0.0 { &right } else { &down };
-    let mut k = Banded::new(dofs, band, std::mem::take(memory));
+    let mut k = Banded::new(dofs, band, std::mem::take(&mut memory.0));
     let dir = |i: u32, j: u32| {
         let (xi, yi) = pos[i as usize];
         let (xj, yj) = pos[j as usize];
@@ -219,7 +228,7 @@ fn solve_held(
     if factored {
         k.solve(&mut f);
     }
-    *memory = k.a;
+    memory.0 = k.a;
     if !factored {
         return None;
     }

@@ -129,8 +129,8 @@ pub struct Chobie {
     failure: Failure,
     /// Times the robots went back from load adaptation to construction (the overload cleared).
     resumed: u64,
-    /// The stress solver's band, kept from one step to the next (see [`frame::solve_against`]).
-    band: Vec<f64>,
+    /// The stress solver's band, kept from one step to the next.
+    band: frame::Scratch,
 }
 
 /// A structure that broke or fell stays so.
