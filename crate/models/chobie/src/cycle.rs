@@ -390,7 +390,8 @@ impl Chobie {
                 [0.0, -(m.weight + self.loads[r] + tip_load), 0.0]
             })
             .collect();
-        match frame::solve_against(m, &body.pos, &elems, &fixed, &walls, &loads) {
+        let band = &mut self.band;
+        match frame::solve_against(m, &body.pos, &elems, &fixed, &walls, &loads, band) {
             Some(sol) => {
                 self.stress = sol.stress;
                 self.disp = sol.disp;
@@ -429,6 +430,18 @@ impl Chobie {
                 force * (self.body.pos[r].0 as f64 - pivot) * m.length
             })
             .sum()
+    }
+
+    /// Robots above the row of the robots resting on the terrain: the bridge's reserves (the
+    /// crawl's upper tier).
+    pub(super) fn reserves(&self) -> usize {
+        let body = &self.body;
+        let tier = (0..body.len() as u32)
+            .filter(|&r| body.grounded(r))
+            .map(|r| body.pos[r as usize].1)
+            .min()
+            .unwrap_or(i32::MIN);
+        body.pos.iter().filter(|p| p.1 < tier).count()
     }
 
     pub(super) fn peak(&self) -> f64 {

@@ -170,7 +170,8 @@ pub fn corner(body: &Body) -> Vec<Elected> {
 
 /// Steps 2-6 of the load-adaptation algorithm (step 1, the overload signal, is the mode slot):
 /// 2. a robot on the right edge (no robot to its right) sends a signal to bottom;
-/// 3. an overloaded robot that receives from top becomes leader 1;
+/// 3. an overloaded robot that receives from top becomes leader 1, unless a robot or the terrain
+///    is under it (it is thick there already);
 /// 4. otherwise it sends a signal to left;
 /// 5. a robot receiving from right that also receives from top becomes leader 2;
 /// 6. otherwise it passes the signal on to its left.
@@ -195,10 +196,15 @@ pub fn adaptation(body: &Body, overloaded: &[bool], comm: &mut Comm) -> Vec<Elec
             continue;
         }
         if from_top(r) {
-            out.push(Elected {
-                robot: r,
-                kind: Kind::Leader1,
-            });
+            // Step 7 takes the leader under the tier. A robot with a robot or the terrain
+            // under it is thick there already; its overload is at its joint with the single
+            // tier beside it, which the relay of its neighbour there brings the reserves to.
+            if !body.has(r, DOWN) && !body.grounded(r) {
+                out.push(Elected {
+                    robot: r,
+                    kind: Kind::Leader1,
+                });
+            }
             continue;
         }
         let mut cur = r;

@@ -94,7 +94,20 @@ pub fn solve(
     fixed: &[bool],
     loads: &[[f64; 3]],
 ) -> Option<Solution> {
-    solve_against(m, pos, elems, fixed, &[], loads)
+    solve_against(m, pos, elems, fixed, &[], loads, &mut Scratch::default())
+}
+
+/// The memory of the stiffness matrix's band, kept by the caller from one solve to the next: a
+/// thousand robots need megabytes, which allocated anew at each step would go back to the system
+/// and come again as page faults. It is no part of the state: a copy (a keyframe of the page's
+/// timeline) starts empty.
+#[derive(Debug, Default)]
+pub struct Scratch(Vec<f64>);
+
+impl Clone for Scratch {
+    fn clone(&self) -> Scratch {
+        Scratch::default()
+    }
 }
 
 /// [`solve`] with walls: a node marked in `walls` has terrain against its left face, which can
@@ -108,12 +121,13 @@ pub fn solve_against(
     fixed: &[bool],
     walls: &[bool],
     loads: &[[f64; 3]],
+    band: &mut Scratch,
 ) -> Option<Solution> {
     let mut held: Vec<bool> = (0..pos.len())
         .map(|i| walls.get(i).copied().unwrap_or(false) && !fixed[i])
         .collect();
     loop {
-        let (sol, reaction) = solve_held(m, pos, elems, fixed, &held, loads)?;
+        let (sol, reaction) = solve_held(m, pos, elems, fixed, &held, loads, band)?;
         let mut released = false;
         for (i, r) in reaction.iter().enumerate() {
             if held[i] && *r < 0.0 {
@@ -136,6 +150,7 @@ fn solve_held(
     fixed: &[bool],
     held: &[bool],
     loads: &[[f64; 3]],
+    memory: &mut Scratch,
 ) -> Option<(Solution, Vec<f64>)> {
     let n = pos.len();
     // Number the free nodes along the longer axis for a narrow band.
@@ -168,7 +183,7 @@ fn solve_held(
     let right = element_matrix(m, 1.0, 0.0);
     let down = element_matrix(m, 0.0, -1.0);
     let stiffness = |s: f64| if s == 0.0 { &right } else { &down };
-    let mut k = Banded::new(dofs, band);
+    let mut k = Banded::new(dofs, band, std::mem::take(&mut memory.0));
     let dir = |i: u32, j: u32| {
         let (xi, yi) = pos[i as usize];
         let (xj, yj) = pos[j as usize];
@@ -209,8 +224,14 @@ fn solve_held(
             any_held = true;
         }
     }
-    k.factor()?;
-    k.solve(&mut f);
+    let factored = k.factor().is_some();
+    if factored {
+        k.solve(&mut f);
+    }
+    memory.0 = k.a;
+    if !factored {
+        return None;
+    }
     let disp: Vec<[f64; 3]> = (0..n as u32)
         .map(|node| {
             let mut u = [0.0; 3];
@@ -267,13 +288,12 @@ struct Banded {
 }
 
 impl Banded {
-    fn new(n: usize, b: usize) -> Banded {
+    /// A zero matrix of `n` rows and half-bandwidth `b`, in `memory` (cleared and resized).
+    fn new(n: usize, b: usize, mut memory: Vec<f64>) -> Banded {
         let b = b.min(n.saturating_sub(1));
-        Banded {
-            n,
-            b,
-            a: vec![0.0; n * (b + 1)],
-        }
+        memory.clear();
+        memory.resize(n * (b + 1), 0.0);
+        Banded { n, b, a: memory }
     }
 
     fn at(&self, i: usize, j: usize) -> usize {

@@ -121,6 +121,7 @@ impl Chobie {
             worst: 0.0,
             failure: super::Failure::Standing,
             resumed: 0,
+            band: super::frame::Scratch::default(),
         };
         model.solve();
         model

@@ -40,7 +40,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "chobie",
     title: "CHOBIE II: temporary leaders, crawl and load-adaptive bridges",
     default_max_steps: 200,
-    model_version: 3,
+    model_version: 4,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<spec::Spec>,
@@ -129,6 +129,8 @@ pub struct Chobie {
     failure: Failure,
     /// Times the robots went back from load adaptation to construction (the overload cleared).
     resumed: u64,
+    /// The stress solver's band, kept from one step to the next.
+    band: frame::Scratch,
 }
 
 /// A structure that broke or fell stays so.

@@ -20,6 +20,7 @@ pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("peak_stress", "MPa", "The highest stress any robot carries now."),
     MetricInfo::new("reinforcements", "cycles", "Transformation cycles in which a leader 1 moved (section 3.4, step 7): its column down under the overloaded place, its right neighbour's up where it can."),
     MetricInfo::new("refused", "cycles", "Cycles whose commands could not be carried out."),
+    MetricInfo::new("reserves", "robots", "Robots above the row of those resting on the terrain: the bridge's reserves on the upper tier (the crawl's upper tier)."),
     MetricInfo::new("resumed", "count", "Times the group went back from load adaptation to construction because its overload cleared."),
     MetricInfo::new("robots", "robots", "The number of robots in the group."),
     MetricInfo::new("slot_us", "µs", "The communication slot length the structure needs: twice its diameter in hops times the hop time."),

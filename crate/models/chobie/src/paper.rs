@@ -3,7 +3,7 @@
 
 use serde_json::{json, Value};
 
-use kumiki_model::report::{Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::report::{Finding, Paper, Results, Row, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "chobie",
@@ -180,13 +180,43 @@ fn forms(r: &Results, out: &mut Vec<Finding>) {
         .iter()
         .flat_map(|f| pick(f, "trial_and_error", false, "distance"))
         .collect();
+    // Like with like, the work a move costs: robot-cells driven per robot and per cell the
+    // centre of mass moved (1 is the least any move can cost: every robot one cell).
+    let work = |row: &&Row| {
+        let v = |m: &str| kumiki_model::report::value(row, m).unwrap_or(f64::NAN);
+        v("energy") / v("robots") / v("distance")
+    };
+    let te_work: Vec<String> = ["b", "c"]
+        .iter()
+        .filter_map(|f| {
+            let rows = r.select(
+                e,
+                &[
+                    ("scenario", json!(format!("chobie-form-{f}"))),
+                    ("method", json!("trial_and_error")),
+                    ("priority", Value::Bool(false)),
+                ],
+            );
+            rows.first().map(|row| format!("({f}) {:.2}", work(row)))
+        })
+        .collect();
+    let crawl_work: Vec<f64> = r
+        .select("chobie-crawl", &[("leader", json!("temporary"))])
+        .iter()
+        .map(work)
+        .collect();
     out.push(Finding::new(
         "§IV, fig. 16",
         "The trial-and-error method, trying a second and a third algorithm when no leader is detected, makes forms (b) and (c) move.",
-        format!("cells moved in 20 cycles: {}", Stats::of(&te).describe(1)),
+        format!(
+            "cells moved in 20 cycles: {}; robot-cells driven per robot and cell moved: {}, the crawl {}",
+            Stats::of(&te).describe(1),
+            te_work.join(", "),
+            Stats::of(&crawl_work).describe(2)
+        ),
         te.len(),
         Verdict::from(!te.is_empty() && te.iter().all(|&d| d > 0.0)),
-        "",
+        "form (b)'s row slides whole on the base, the only move figure 3's constraints leave it (interpretation 7): a cell per cycle, at the least work a move can cost (1: every robot one cell)",
     ));
     let mut cheaper = 0;
     let mut worse = 0;
@@ -238,62 +268,127 @@ fn traced(row: &kumiki_model::row::Row, metric: &str) -> Vec<f64> {
         .unwrap_or_default()
 }
 
+/// The plain run (adaptation off) that matches an adaptive row: same reserves, tip load, goal.
+fn plain<'a>(r: &'a Results, row: &Row) -> Option<&'a Row> {
+    let mut filter = vec![
+        ("scenario", json!(row.scenario)),
+        ("adaptation", Value::Bool(false)),
+    ];
+    for key in ["tip_load", "goal"] {
+        if let Some(v) = row.params.get(key) {
+            filter.push((key, v.clone()));
+        }
+    }
+    r.select("chobie-bridge", &filter).first().copied()
+}
+
 fn bridge(r: &Results, out: &mut Vec<Finding>) {
     let e = "chobie-bridge";
     let rows = r.select(e, &[("adaptation", Value::Bool(true))]);
-    // Overload episodes: a switch to adaptation mode; cleared when the robots went back to
-    // construction (every robot under the threshold again).
-    let (mut episodes, mut cleared, mut resumed_runs, mut all_cleared) = (0, 0, 0, 0);
+    // Overload episodes: a switch to adaptation mode. One is cleared when the robots go back to
+    // construction, or when the run ends complete in it (a complete bridge has no robot over
+    // the threshold).
+    let (mut episodes, mut cleared, mut resumed_runs, mut complete) = (0, 0, 0, 0);
+    let (mut stuck, mut used_up) = (0, 0);
+    let mut by_goal: Vec<(i64, usize, usize)> = Vec::new();
     for row in &rows {
         let modes = traced(row, "mode");
-        let mut run_episodes = 0;
-        let mut run_cleared = 0;
+        let (mut run_episodes, mut run_resumed) = (0, 0);
         for w in modes.windows(2) {
             if w[0] != 2.0 && w[1] == 2.0 {
                 run_episodes += 1;
             }
             if w[0] == 2.0 && w[1] == 1.0 {
-                run_cleared += 1;
+                run_resumed += 1;
             }
         }
+        let ended_clear = row.completed && modes.last() == Some(&2.0);
         episodes += run_episodes;
-        cleared += run_cleared;
-        if run_cleared > 0 {
+        cleared += run_resumed + ended_clear as usize;
+        if run_resumed > 0 {
             resumed_runs += 1;
         }
-        if run_episodes > 0 && run_cleared == run_episodes {
-            all_cleared += 1;
+        let value = |m: &str| kumiki_model::report::value(row, m);
+        if row.completed {
+            complete += 1;
+        } else if value("mode") == Some(2.0) && value("stalled") == Some(1.0) {
+            stuck += 1;
+            if value("reserves") == Some(0.0) {
+                used_up += 1;
+            }
+        }
+        let goal = row.params.get("goal").and_then(Value::as_i64).unwrap_or(0);
+        match by_goal.iter_mut().find(|g| g.0 == goal) {
+            Some(g) => {
+                g.1 += row.completed as usize;
+                g.2 += 1;
+            }
+            None => by_goal.push((goal, row.completed as usize, 1)),
         }
     }
+    let goals: Vec<String> = by_goal
+        .iter()
+        .map(|(g, c, n)| format!("{c} of {n} to {g}"))
+        .collect();
     out.push(Finding::new(
         "§3.4, fig. 12",
         "When a robot's stress exceeds the threshold all robots switch to load-adaptation mode, and when the overload is done away with they switch back to bridge construction.",
         format!(
-            "{episodes} overloads in {} runs, {cleared} of them cleared with construction resumed; {resumed_runs} of {} runs resumed construction at least once; {all_cleared} cleared every overload (the others end in adaptation mode once their reserves are used up)",
+            "{episodes} overloads in {} runs, {cleared} of them cleared; {resumed_runs} of {} runs resumed construction at least once; {complete} cleared every overload and reached their goal span ({}); {stuck} stalled in adaptation mode, still overloaded, no leader elected: {used_up} with no reserve left, {} with reserves left, all of them right of the overloaded root",
             rows.len(),
-            rows.len()
+            rows.len(),
+            goals.join(", "),
+            stuck - used_up,
         ),
         rows.len(),
-        Verdict::from(cleared > 0 && resumed_runs == rows.len()),
-        "each reserve that step 7 puts into the tier pushes a tier robot down against the cliff face under the root (interpretation 13); with the reserves used up no leader is elected and the bridge stops, still overloaded",
+        Verdict::from(cleared > 0 && resumed_runs == rows.len() && complete > 0),
+        "1, 3, 5, 7 or 9 reserves × goal spans 13, 16, 19 × tip loads 0, 10, 20 N; each step 7 puts one reserve into the tier over the void and its tier robot under it, against the cliff face or the robot an earlier step 7 put there (interpretation 13); leader 2 drives the reserves only right",
     ));
-    // Equal span: each adaptive run at its final span against the plain run with the same
-    // reserves and tip load at that span (the last cycle it had that span).
+    // Enough reserves: for each goal and load, the fewest reserves with which the bridge got
+    // there (the reserves a run starts with are its first traced count).
+    let mut need = Vec::new();
+    for goal in [13, 16, 19] {
+        let mut per_load = Vec::new();
+        for load in [0, 10, 20] {
+            let fewest = r
+                .select(
+                    e,
+                    &[
+                        ("adaptation", Value::Bool(true)),
+                        ("goal", json!(goal)),
+                        ("tip_load", json!(load)),
+                    ],
+                )
+                .into_iter()
+                .filter(|row| row.completed)
+                .filter_map(|row| traced(row, "reserves").first().copied())
+                .fold(f64::INFINITY, f64::min);
+            per_load.push(if fewest.is_finite() {
+                format!("{fewest}")
+            } else {
+                "none".into()
+            });
+        }
+        need.push(format!("{goal} cells: {}", per_load.join(" / ")));
+    }
+    out.push(Finding::new(
+        "§3.4, fig. 11",
+        "The robots on the upper tier are used for load adaptation: when overload occurs, they move and reinforce the overloaded position.",
+        format!(
+            "fewest reserves (of 1, 3, 5, 7, 9) that took the bridge to its goal, at 0 / 10 / 20 N: {}",
+            need.join("; ")
+        ),
+        rows.len(),
+        Verdict::NotStated,
+        "a goal marked none is out of reach with up to 9 reserves: the tie of the root (the tier's last robot on the flat part and its first over the void) overloads before the goal, and the reserves, which leader 2 drives only right, cannot reach it (interpretation 13)",
+    ));
+    // Equal span: each adaptive run at its final span (its goal when complete) against the
+    // plain run with the same reserves, tip load and goal at that span (the last cycle it had
+    // that span).
     let (mut lower, mut pairs) = (0, 0);
     let (mut with, mut without, mut spans) = (Vec::new(), Vec::new(), Vec::new());
     for row in &rows {
-        let Some(tip) = row.params.get("tip_load") else {
-            continue;
-        };
-        let plain = r.select(
-            e,
-            &[
-                ("scenario", json!(row.scenario)),
-                ("adaptation", Value::Bool(false)),
-                ("tip_load", tip.clone()),
-            ],
-        );
-        let (Some(plain), Some(span)) = (plain.first(), kumiki_model::report::value(row, "span"))
+        let (Some(plain), Some(span)) = (plain(r, row), kumiki_model::report::value(row, "span"))
         else {
             continue;
         };
@@ -321,7 +416,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
         ),
         with.len() + without.len(),
         Verdict::from(pairs > 0 && lower == pairs),
-        "1, 3 and 5 reserves × tip loads 0, 10, 20 N; threshold 4 MPa; the plain run's peak is taken at the last cycle it had the same span",
+        "threshold 4 MPa; the plain run (same reserves, load and goal) taken at the last cycle it had the same span",
     ));
     let span_with = r.values(e, &[("adaptation", Value::Bool(true))], "span");
     let span_without = r.values(e, &[("adaptation", Value::Bool(false))], "span");
@@ -335,7 +430,7 @@ fn bridge(r: &Results, out: &mut Vec<Finding>) {
         ),
         span_with.len() + span_without.len(),
         Verdict::NotStated,
-        "without adaptation the tier runs out over the void whatever the stress (the base's guide holds it: no tipping, interpretation 18); with it construction stops while an overload is being removed, and for good once the reserves are used up",
+        "without adaptation the tier runs out to its goal whatever the stress (the base's guide holds it: no tipping, interpretation 18); with it construction stops while an overload is being removed, and for good where no reserve can remove it",
     ));
     let l = "chobie-load";
     let moved = r.values(l, &[("adaptation", Value::Bool(true))], "energy");

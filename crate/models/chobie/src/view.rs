@@ -128,7 +128,13 @@ impl Model for Chobie {
         match (self.p.goal, self.p.task) {
             (None, _) => false,
             (Some(g), super::spec::Task::Crawl) => self.distance() >= g as f64 - 1e-9,
-            (Some(g), super::spec::Task::Bridge) => self.span() >= g as i64,
+            // A bridge is done when it spans the goal and stands; with load adaptation, also
+            // when no robot is overloaded (the next load check would switch to adaptation).
+            (Some(g), super::spec::Task::Bridge) => {
+                self.span() >= g as i64
+                    && self.failure == super::Failure::Standing
+                    && !(self.p.adaptation && self.peak() > self.p.mech.threshold)
+            }
         }
     }
 
@@ -166,6 +172,7 @@ impl Model for Chobie {
         f("peak_stress", Metric::Real(self.peak() / 1e6));
         f("refused", Metric::Count(t.refused));
         f("reinforcements", Metric::Count(t.reinforcements));
+        f("reserves", Metric::Count(self.reserves() as u64));
         f("resumed", Metric::Count(self.resumed));
         f("robots", Metric::Count(self.body.len() as u64));
         f("slot_us", Metric::Real(self.slot_us()));

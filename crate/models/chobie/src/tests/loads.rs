@@ -101,30 +101,41 @@ fn the_slot_trace_names_every_slot_and_its_senders() {
 
 #[test]
 fn an_overload_switches_to_adaptation_and_back_once_the_reserves_thicken_the_root() {
+    // The preset: three reserves to a goal of 14 cells.
     let preset = kumiki_core::presets::scenario("chobie-bridge").unwrap();
     let mut m = Chobie::new(&preset).unwrap();
     let mut modes = Vec::new();
-    for _ in 0..30 {
+    while !m.completed() && m.steps < preset.max_steps {
         step_checked(&mut m);
         modes.push(m.mode);
     }
-    let first = modes
-        .iter()
-        .position(|&x| x == Mode::Adaptation)
-        .expect("an overload");
-    let back = modes[first..]
-        .iter()
-        .position(|&x| x == Mode::Construction)
-        .expect("back to construction");
-    // Between the two, the reserves moved right (leader 2) and the overload went away.
-    assert!(back > 1);
-    assert!(m.totals.adaptations >= 1);
+    assert!(m.completed(), "the bridge reaches 14 cells");
+    assert_eq!((m.span(), m.reserves()), (14, 0));
+    assert!(m.peak() < m.p.mech.threshold, "no robot overloaded");
+    // Three overloads (at 12, 13 and 14 cells), each cleared: two resumed construction, and the
+    // last one's clearing completed the bridge. The first was cleared by the reserves standing
+    // on the root, the two others by step 7, once and twice: each reserve went into the tier.
+    let switches = modes
+        .windows(2)
+        .filter(|w| w[0] == Mode::Construction && w[1] == Mode::Adaptation)
+        .count();
+    assert_eq!((switches, m.resumed), (3, 2));
+    assert_eq!(m.totals.reinforcements, 3);
     let mut without = Chobie::new(&preset).unwrap();
     without.p.adaptation = false;
-    for _ in 0..30 {
+    while !without.completed() {
         step_checked(&mut without);
     }
-    assert!(m.worst < without.worst);
+    assert_eq!(without.span(), 14);
+    assert!(m.worst < without.worst && without.peak() > without.p.mech.threshold);
+    // A goal of 15 cells is out of reach of three reserves.
+    let mut further = Chobie::new(&preset).unwrap();
+    further.p.goal = Some(15);
+    for _ in 0..preset.max_steps {
+        step_checked(&mut further);
+    }
+    assert!(!further.completed() && further.reserves() == 0);
+    assert_eq!((further.span(), further.mode), (15, Mode::Adaptation));
 }
 
 #[test]
@@ -239,7 +250,100 @@ fn figure_13_reserve_a_reaches_the_overloaded_root_and_step_7_makes_it_thick() {
     // A crossed the top from the left end (leader 2, step 8) before step 7.
     assert!(m.totals.adaptations >= 2 && at > 2);
     assert_eq!(m.resumed, 1, "construction resumes");
-    assert!(m.completed(), "the bridge reaches its span of 10");
+    // The next cell of span, the goal of 10, overloads the new root again with no reserve left:
+    // the bridge spans its goal but is not complete, and stalls in adaptation mode.
+    assert_eq!((m.span(), m.reserves(), m.mode), (10, 0, Mode::Adaptation));
+    assert!(m.peak() > m.p.mech.threshold && !m.last.moved);
+    assert!(!m.completed(), "an overloaded bridge is not complete");
+    // Without adaptation nobody checks the load: the same span completes it.
+    let mut plain = Chobie::new(&preset).unwrap();
+    plain.p.adaptation = false;
+    while !plain.completed() && plain.steps < 40 {
+        step_checked(&mut plain);
+    }
+    assert_eq!((plain.span(), plain.steps), (10, 6));
+    assert!(plain.peak() > plain.p.mech.threshold);
+}
+
+/// The bridge world of `chobie-bridge` with `reserves` robots on the upper tier's left and
+/// `depth` rows of terrain.
+fn bridge_world(reserves: usize, depth: usize) -> String {
+    let row = |robots: usize, terrain: char| {
+        let mut r = String::new();
+        for x in 0..48 {
+            r.push(if x < robots { terrain } else { '.' });
+        }
+        r.push('\n');
+        r
+    };
+    let mut w = row(0, '#') + &row(reserves, '#') + &row(20, '#');
+    for _ in 0..depth {
+        w += &row(20, '=');
+    }
+    w
+}
+
+#[test]
+fn a_robot_thick_already_is_not_leader_1_so_a_deep_cliff_costs_no_more_reserves() {
+    // Each step 7 puts one reserve into the tier and one tier robot under it; with the tier two
+    // deep there, the robot is not leader 1 again (its column would only push the robot under
+    // it deeper, to the bottom of the world), and the reserves go on to the next cell.
+    let mut runs = Vec::new();
+    for depth in [2, 6] {
+        let mut m = model(
+            &bridge_world(5, depth),
+            json!({"task": "bridge", "goal": 16, "max_steps": 120}),
+        );
+        while !m.completed() && m.steps < 120 {
+            step_checked(&mut m);
+            let tier = 2;
+            assert!(
+                m.body.pos.iter().all(|p| p.1 <= tier + 1),
+                "depth {depth}: nothing goes more than one row under the tier"
+            );
+        }
+        assert!(m.completed(), "depth {depth}: the bridge reaches 16 cells");
+        runs.push((m.steps, m.totals.reinforcements, m.reserves()));
+    }
+    assert_eq!(runs[0], runs[1], "the cliff's depth changes nothing");
+    assert_eq!(runs[0].1, 5, "one step 7 per reserve");
+}
+
+#[test]
+fn a_bridge_stalled_with_reserves_left_is_overloaded_at_its_root_left_of_every_reserve() {
+    // Nine reserves to a goal of 19 cells: the two-tier part grows under the tier, but the tie of
+    // the root (the last tier robot on the flat part and the first over the void) overloads
+    // before the goal, and leader 2 drives the reserves only right, away from it.
+    for load in [0.0, 10.0, 20.0] {
+        let mut m = model(
+            &bridge_world(9, 2),
+            json!({"task": "bridge", "goal": 19, "max_steps": 120, "tip_load": load}),
+        );
+        for _ in 0..120 {
+            step_checked(&mut m);
+        }
+        assert!(!m.completed() && !m.last.moved && m.last.leaders.is_empty());
+        assert_eq!(m.mode, Mode::Adaptation);
+        assert!(m.reserves() > 0, "{load} N: reserves left");
+        let tier = 2;
+        let reserve_x = (0..m.body.len())
+            .filter(|&r| m.body.pos[r].1 < tier)
+            .map(|r| m.body.pos[r].0);
+        let over: Vec<i32> = (0..m.body.len())
+            .filter(|&r| m.overloaded(m.stress[r]))
+            .map(|r| m.body.pos[r].0)
+            .collect();
+        assert_eq!(over, vec![m.edge, m.edge + 1], "{load} N: the root's tie");
+        assert!(reserve_x.min().unwrap() > m.edge + 1, "{load} N");
+    }
+}
+
+#[test]
+fn the_reserves_count_the_robots_above_the_tier() {
+    let m = model(&bridge_world(3, 2), json!({"task": "bridge"}));
+    assert_eq!(m.reserves(), 3);
+    let crawl = model(&crawl(7, 1), json!({}));
+    assert_eq!(crawl.reserves(), 3, "the crawl's upper tier");
 }
 
 #[test]
