@@ -91,10 +91,13 @@ impl Scratch {
 }
 
 impl Structure {
-    /// The reachable positions of the unit at `p` (rules 1 to 4 of the module documentation), in
+    /// The reachable positions of the unit at `p` (rules 1 to 5 of [`super::motion`]), in
     /// a fixed order: carriers by direction from p, then axes, then senses. Left in `s.moves`.
     pub fn reachable(&self, p: usize, s: &mut Scratch) {
         s.moves.clear();
+        if !self.plane_holds(p) {
+            return;
+        }
         let mut pending = [0u32; 2];
         for k in 0..6 {
             let q = self.nb(p, k);

@@ -53,7 +53,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
-    model_version: 3,
+    model_version: 4,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
@@ -143,6 +143,9 @@ pub struct Cubes {
     rng: Rng,
     steps: u64,
     moves: u64,
+    /// With a light: moves that ended nearer the light, and moves that ended farther from it.
+    moves_toward: u64,
+    moves_away: u64,
     /// Units whose D_0 is exactly 0.
     zero: usize,
     /// Centre of mass along the light at the start.

@@ -33,10 +33,11 @@ pub enum Ground {
     /// A plane under the lowest layer of the shape that units cannot pass.
     #[serde(rename = "floor")]
     Floor,
-    /// As `floor`, and units touching the plane are fixed to it (section 6).
+    /// As `floor`, and units touching the plane never move (a reading of section 6).
     #[serde(rename = "fixed")]
     Fixed,
-    /// As `floor`, and the plane holds the units touching it (a support), which may still move.
+    /// As `floor`, and the plane holds the units touching it (a support) and the structure: a
+    /// unit on it may be carried off while another still touches it (section 6).
     #[serde(rename = "anchor")]
     Anchor,
 }
