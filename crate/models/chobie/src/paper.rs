@@ -3,7 +3,8 @@
 
 use serde_json::{json, Value};
 
-use kumiki_model::report::{Finding, Paper, Results, Row, Stats, Verdict};
+use kumiki_model::report::{Finding, Paper, Results, Stats, Verdict};
+use kumiki_model::row::Row;
 
 pub const PAPER: Paper = Paper {
     model: "chobie",
