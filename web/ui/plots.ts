@@ -83,8 +83,8 @@ export function renderPlots(root: HTMLElement, experiment: string, name: string,
       box.append(el('figcaption', { class: 'hint', text: figure.described }));
     }
     const save = el('div', { class: 'row figure-export' });
-    const asSvg = el('button', { type: 'button', text: 'Save SVG', 'aria-label': `Save “${heading}” as SVG` });
-    const asPng = el('button', { type: 'button', text: 'Save PNG (2×)', 'aria-label': `Save “${heading}” as PNG at twice the size` });
+    const asSvg = el('button', { type: 'button', text: 'Save SVG', 'aria-label': `Save SVG of “${heading}”` });
+    const asPng = el('button', { type: 'button', text: 'Save PNG (2×)', 'aria-label': `Save PNG (2×) of “${heading}”, twice its size` });
     asSvg.addEventListener('click', () => download(figureFileName(name, i + 1, 'svg'), svg, 'image/svg+xml'));
     asPng.addEventListener('click', async () => download(figureFileName(name, i + 1, 'png'), await svgToPng(svg), 'image/png'));
     save.append(asSvg, asPng);
