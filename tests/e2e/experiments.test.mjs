@@ -56,7 +56,29 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   assert.equal(caption, 'median, interquartile range; n = 3 runs per point');
   assert.equal(await page.$$eval('#experiment-plots figure[data-kind="lines"] svg circle[data-band]', (c) => c.length), 2);
   assert.equal(await page.$$eval('#experiment-plots figure[data-kind="summary"] tbody tr', (r) => r.length), 2);
-  assert.match(await page.textContent('#experiment-plots figure[data-kind="summary"] thead'), /median.*IQR.*95% CI/);
+  // A column per condition path, named in words, then the statistics.
+  assert.deepEqual(await page.$$eval('#experiment-plots figure[data-kind="summary"] thead th', (ths) => ths.map((t) => t.textContent)), [
+    'robots',
+    'value',
+    'n',
+    'mean',
+    'sd',
+    'median',
+    'IQR',
+    '95% CI of the mean',
+  ]);
+  assert.deepEqual(
+    await page.$$eval('#experiment-plots figure[data-kind="summary"] tbody tr', (trs) => trs.map((t) => [...t.cells].slice(0, 3).map((c) => c.textContent))),
+    [
+      ['1', 'steps [steps]', '3'],
+      ['3', 'steps [steps]', '3'],
+    ],
+  );
+  // Two conditions are compared.
+  assert.match(
+    await page.textContent('#experiment-plots figure[data-kind="summary"] .comparisons'),
+    /robots: 1 against robots: 3: .*Cohen's d .*Mann-Whitney U = /,
+  );
 
   // SVG and PNG (twice the size) of the figure.
   const svg = await downloaded(page, '#experiment-plots figure[data-kind="lines"] button:has-text("Save SVG")');
