@@ -90,6 +90,8 @@ export interface Figure {
   kind: 'lines' | 'trace' | 'histogram' | 'bars' | 'summary';
   title: string;
   described: string;
+  /** The x axis's label; a summary's names its condition paths in words, joined by ', '. */
+  x_label: string;
   table: { condition: string[]; runs: number; completed: number; value: string; unit: string; stats: Stats | null }[];
   comparisons: {
     value: string;

@@ -17,7 +17,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 use kumiki_core::experiment::PROGRAM_VERSION;
 use kumiki_core::{lessons, link, presets, Limits};
 use serde_json::Value;
@@ -29,7 +29,12 @@ SCENARIO is a JSON file, a share link (or its #k1... part), a preset name or a l
 EXPERIMENT is an experiment JSON file or a built-in experiment name.
 Runs of many seeds and sweeps use every core (--jobs to choose). Output: one JSON object per run
 and line, or CSV with a header. --shard I/N runs part of them (see docs/cluster.md); kumiki merge
-puts the parts back together.";
+puts the parts back together.
+Every metric's unit and meaning: kumiki help metrics.";
+
+/// The note under `run` and `sweep`'s help: what their metrics mean is one command away.
+const METRICS_POINTER: &str =
+    "Each metric in the output is explained, with its unit, by kumiki help metrics.";
 
 #[derive(Parser)]
 #[command(
@@ -70,8 +75,10 @@ enum Command {
         size: Size,
     },
     /// Run a scenario for one seed or many
+    #[command(after_help = METRICS_POINTER)]
     Run(RunArgs),
     /// Run an experiment: scenarios x grid x seeds, one row per run
+    #[command(after_help = METRICS_POINTER)]
     Sweep(SweepArgs),
     /// Put the outputs of --shard runs back into one, in the unsharded order
     Merge {
@@ -234,8 +241,33 @@ fn usage_error(message: &str) -> ExitCode {
     ExitCode::from(2)
 }
 
+/// The long help of `kumiki metrics` (`kumiki help metrics`, `kumiki metrics --help`): every
+/// model's metrics with their units and meanings, from the same tables as the page's metric cards
+/// and docs/metrics.md.
+fn metrics_help() -> String {
+    let mut text = String::from("What each metric means, by model (unit in brackets):\n");
+    for m in kumiki_core::models::MODELS {
+        text.push_str(&format!("\n{}\n", m.name));
+        for info in m.metrics {
+            text.push_str(&format!(
+                "  {} [{}]\n      {}\n",
+                info.name, info.unit, info.about
+            ));
+        }
+    }
+    text
+}
+
+/// The command line's definition, with the help texts made from the core's tables.
+fn cli_definition() -> clap::Command {
+    Cli::command().mut_subcommand("metrics", |c| c.after_long_help(metrics_help()))
+}
+
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let parsed = cli_definition()
+        .try_get_matches()
+        .and_then(|matches| Cli::from_arg_matches(&matches));
+    let cli = match parsed {
         Ok(cli) => cli,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -271,7 +303,7 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     match command {
         None => {
-            write!(out, "{}", Cli::command().render_help())?;
+            write!(out, "{}", cli_definition().render_help())?;
         }
         Some(Command::Version) => writeln!(out, "{PROGRAM_VERSION}")?,
         Some(Command::Presets) => {
