@@ -267,7 +267,7 @@ fn traced_at(row: &Row, metric: &str, step: u64, carry: bool) -> f64 {
     if !carry && step > *t.step.last().unwrap() {
         return f64::NAN;
     }
-    super::figure::number(t.values[metric].as_array().unwrap().get(i))
+    super::values::number(t.values[metric].as_array().unwrap().get(i))
 }
 
 /// A trace draws at each step the statistic over the runs' values at that step.
@@ -353,7 +353,7 @@ fn check_histogram(at: &str, s: &super::Histogram, f: &Figure, rows: &[Row]) {
                     format!("{}: {}", name_of(sp), words(value_at(r, sp).as_deref())) == p.title
                 })
             })
-            .map(|r| super::figure::number(value_at(r, &s.value).as_deref()))
+            .map(|r| super::values::number(value_at(r, &s.value).as_deref()))
             .filter(|v| v.is_finite())
             .collect();
         let points = &p.series[0].points;
@@ -411,7 +411,7 @@ fn check_summary(at: &str, s: &super::Summary, f: &Figure, rows: &[Row]) {
         );
         let xs: Vec<f64> = runs
             .iter()
-            .map(|r| super::figure::number(value_at(r, &row.value).as_deref()))
+            .map(|r| super::values::number(value_at(r, &row.value).as_deref()))
             .collect();
         let stats = row.stats.unwrap();
         assert_eq!(stats.n, xs.iter().filter(|v| v.is_finite()).count(), "{at}");

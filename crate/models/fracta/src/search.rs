@@ -99,7 +99,10 @@ pub(super) fn improving_units(m: &Fracta) -> Vec<u32> {
 /// How the repair of a fault on `unit` of `fracta-repair` begins, run with the preset's seed for
 /// at most `limit` steps after the cut-off; `None` when no unit moved by then.
 pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
-    let seed = serde_json::from_str::<Value>(REPAIR).ok()?.get("seed")?.as_u64()?;
+    let seed = serde_json::from_str::<Value>(REPAIR)
+        .ok()?
+        .get("seed")?
+        .as_u64()?;
     first_motion(after_cut_off(unit, seed)?, limit)
 }
 
