@@ -72,8 +72,16 @@ for (const r of page.runs) {
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
   );
-  if (r.residentMb)
-    console.log(`  resident after playing: the page's renderer process ${fmt(r.residentMb.renderer)} MB, the GPU process ${fmt(r.residentMb.gpu)} MB`);
+  if (r.residentMb) {
+    // Bytes a lattice cell the page holds: the renderer process (page, worker, wasm memory) over
+    // the workload's cells (issue 27 asks at most 32 at 4096²).
+    const cells = rows.find((row) => row.spec.name === r.name)?.wasm.cells;
+    r.rendererBytesPerCell = cells ? (r.residentMb.renderer * 2 ** 20) / cells : undefined;
+    console.log(
+      `  resident after playing: the page's renderer process ${fmt(r.residentMb.renderer)} MB (${fmt(r.rendererBytesPerCell)} bytes a cell), ` +
+        `the GPU process ${fmt(r.residentMb.gpu)} MB`,
+    );
+  }
   const p = r.profile;
   if (p) {
     const cpu = Object.entries(p.cpuSecondsPerSecond)

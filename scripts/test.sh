@@ -4,7 +4,15 @@
 # a fresh build. The gates come first: they take seconds and fail on what a review would.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
+# Each step's header says how long the test has run so far and the CPU seconds its steps have
+# used (the finished commands' user and system time, from /proc: no command is started for it),
+# so the slow steps show even on a machine whose load makes wall time say little.
+cpu_seconds() {
+  local stat
+  read -r -a stat < /proc/$$/stat
+  echo $(((stat[15] + stat[16]) / $(getconf CLK_TCK)))
+}
+step() { printf '\n\033[1m== %s ==\033[0m (at %d s, %s CPU s)\n' "$*" "$SECONDS" "$(cpu_seconds)"; }
 
 step "gate: no merge-conflict markers in tracked files"
 if git grep -nE '^(<{7}|>{7})( |$)' -- . ':!package-lock.json'; then
@@ -62,3 +70,4 @@ for f in tests/e2e/*.test.mjs; do
 done
 node --test --test-concurrency=2 "${together[@]}"
 node --test --test-concurrency=1 "${alone[@]}"
+printf '\nnpm test: passed in %d s (%s CPU s)\n' "$SECONDS" "$(cpu_seconds)"

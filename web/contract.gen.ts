@@ -450,5 +450,5 @@ export interface Versions {
   made_with: number;
 }
 
-/** The envelope's keys, in the order a form shows them (kumiki_core::scenario::ENVELOPE). */
+/** The envelope's keys, in the order a form shows them (kumiki_model::entry::ENVELOPE). */
 export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"}];

@@ -1,14 +1,14 @@
-//! Registers every file in `presets/`, `lessons/` and `experiments/` by its name, the core's and
-//! each model crate's (`../models/<model>/presets/`, ...), so adding a preset or a lesson is adding
-//! one file; and records the commit the core is built from
-//! (`KUMIKI_COMMIT`, "unknown" outside a git checkout) for the provenance of exports.
+//! Registers every file in the `presets/`, `lessons/` and `experiments/` folders of each model
+//! crate (`../models/<model>/presets/`, ...) by its name, so adding a preset or a lesson is adding
+//! one file; and records the commit the core is built from (`KUMIKI_COMMIT`, "unknown" outside a
+//! git checkout) for the provenance of exports.
 
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
 
-/// The folders holding built-in files of `kind` (`presets`, `lessons`, `experiments`): the core's
-/// own, and the one of each model crate under `../models/` that has any.
+/// The folders holding built-in files of `kind` (`presets`, `lessons`, `experiments`): the one of
+/// each model crate under `../models/` that has any.
 fn folders(kind: &str) -> Vec<String> {
     println!("cargo::rerun-if-changed=../models");
     let mut models: Vec<String> = std::fs::read_dir("../models")
@@ -24,9 +24,7 @@ fn folders(kind: &str) -> Vec<String> {
         })
         .unwrap_or_default();
     models.sort();
-    let mut out = vec![kind.to_string()];
-    out.extend(models);
-    out
+    models
 }
 
 fn table(kind: &str, konst: &str, out: &mut String) {

@@ -2,13 +2,33 @@
 // magnitude is placed by clicking a robot, recorded for the link, and shows in the stress field
 // and the overload count; the exaggerated deflected shape; the last step's signals, slot by slot;
 // the view follows the growing bridge until the user zooms; overloaded and failed robots are
-// marked over the stress field; the lesson whose bridge stands only with load adaptation.
+// marked over the stress field; the lesson whose bridge stands only with load adaptation; figure
+// 13's step 7 and a bridge that stops overloaded; a bridge that tips over the edge. Each of the
+// new states passes the accessibility audit (axe-core: no serious or critical violation).
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { test } from 'node:test';
 import { loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
 
 const wasm = loadWasm();
 const s = session('/');
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+/** Serious and critical axe-core violations on the page as it stands, one line each. */
+async function audit(page, where) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
+  const violations = await page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
+      resultTypes: ['violations'],
+    });
+    return result.violations
+      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+      .map((v) => `${v.id} (${v.impact}) at ${v.nodes.map((n) => n.target.join(' ')).slice(0, 5)}`);
+  });
+  return violations.map((v) => `${where}: ${v}`);
+}
 
 const PRESETS = [
   'chobie-crawl3',
@@ -268,8 +288,8 @@ test('stepping slowly shows each slot of the last step: its meaning and its send
 });
 
 test('the view follows the growing bridge until the user zooms, and Fit brings it back', async () => {
-  // Without adaptation the lower tier slides on to a span of 19, far past the terrain the view first framed.
-  const { page, context, problems } = await open('chobie-bridge', (doc) => ({ ...doc, adaptation: false, max_steps: 24 }));
+  // Without adaptation or a goal the lower tier slides on to a span of 19, far past the terrain the view first framed.
+  const { page, context, problems } = await open('chobie-bridge', (doc) => ({ ...doc, adaptation: false, goal: undefined, max_steps: 24 }));
   await settle(page);
   assert.equal(await cutOff(page), 0, 'the first frame shows the whole structure');
   await fullSpeed(page);
@@ -321,6 +341,7 @@ test('a bridge that stands only with load adaptation: the plain one breaks, its 
   // Over the heat map, the rings of the overloaded robots (#db3737) and the crosses of the broken ones (#8e5cd9).
   assert.ok((await inked(page, [0xdb, 0x37, 0x37])) > 0, 'overloaded robots ringed');
   assert.ok((await inked(page, [0x8e, 0x5c, 0xd9])) > 0, 'broken robots crossed');
+  assert.deepEqual(await audit(page, 'a broken bridge in the stress view'), []);
   await page.selectOption('#overlay', '');
   await settle(page);
   await settle(page);
@@ -336,6 +357,61 @@ test('a bridge that stands only with load adaptation: the plain one breaks, its 
   assert.ok((await metric(page, 'resumed')) >= 1);
   await settle(page);
   assert.equal(await inked(page, [0x8e, 0x5c, 0xd9]), 0, 'nothing crossed');
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('figure 13 in the page: step 7 puts reserve A into the tier and B under it, construction resumes, and the bridge stops overloaded with no reserve left', async () => {
+  const { page, context, problems } = await open('chobie-fig13');
+  await page.selectOption('#overlay', 'stress');
+  await fullSpeed(page);
+  await page.click('#play');
+  // The step of the first reinforcement: the run pauses nowhere, so watch the metric.
+  await page.waitForFunction(
+    () =>
+      [...document.querySelectorAll('#metrics .metric')].some(
+        (m) => m.firstChild.textContent === 'reinforcements' && Number(m.querySelector('strong').textContent) === 1,
+      ),
+    null,
+    { timeout: 30000 },
+  );
+  await waitForSteps(page, 20);
+  await settle(page);
+  assert.equal(await metric(page, 'reinforcements'), 1, 'step 7 fired once');
+  assert.equal(await metric(page, 'resumed'), 1, 'construction resumed');
+  assert.equal(await metric(page, 'span'), 10, 'the goal span');
+  assert.equal(await metric(page, 'reserves'), 0, 'no reserve left');
+  assert.equal(await metric(page, 'mode'), 2, 'adaptation mode');
+  assert.ok((await metric(page, 'overloads')) > 0, 'still overloaded');
+  // It spans its goal but is not complete: the run ends at its step limit.
+  assert.equal(await page.textContent('#run-status'), 'step limit reached');
+  // B is under the tier, against the cliff face: cell (10, 3) of a world 26 wide.
+  const b = await findCell(page, 3 * 26 + 10);
+  await page.mouse.click(b.x, b.y);
+  await page.waitForFunction(() => document.querySelector('#inspector').textContent.includes('stress mpa'));
+  assert.ok((await inked(page, [0xdb, 0x37, 0x37])) > 0, 'the overloaded root ringed');
+  assert.deepEqual(await audit(page, 'figure 13 stopped overloaded, stress view'), []);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a bridge on a base that does not hold it tips over the cliff edge: failed 2, every robot crossed', async () => {
+  const { page, context, problems } = await open('chobie-bridge', (doc) => ({ ...doc, adaptation: false, anchored: false, goal: undefined, max_steps: 20 }));
+  await page.selectOption('#overlay', 'stress');
+  await fullSpeed(page);
+  await page.click('#play');
+  await waitForSteps(page, 20);
+  await settle(page);
+  assert.equal(await metric(page, 'failed'), 2, 'tipped');
+  assert.ok((await metric(page, 'overturning')) > 0, 'the moment about the edge turns it over');
+  const span = await metric(page, 'span');
+  assert.ok(span > 0 && span < 19, 'it stopped where it tipped');
+  assert.ok((await inked(page, [0x8e, 0x5c, 0xd9])) > 0, 'crossed over the stress field');
+  assert.deepEqual(await audit(page, 'a tipped bridge, stress view'), []);
+  await page.selectOption('#overlay', '');
+  await settle(page);
+  await settle(page);
+  assert.ok((await inked(page, [0x8e, 0x5c, 0xd9])) > 0, 'and in the default view');
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -188,4 +188,53 @@ describe('compare two runs', () => {
     assert.deepEqual(problems, []);
     await context.close();
   });
+
+  test('the lesson works by keyboard alone: the student changes the rule of the first run and meets the goal beside the tokens run', async () => {
+    const { second } = scenarios();
+    const { page, context, problems } = await openPage(s.browser, s.server.url, { keepWelcome: true });
+    await page.waitForSelector('#welcome[open]');
+    await tabTo(page, 'way-compare');
+    await page.keyboard.press('Enter');
+    await page.waitForSelector('body.comparing #compare-wrap:not([hidden])');
+    await page.waitForSelector('#exercise:not([hidden])');
+    await bothAt(page, 0);
+
+    // The tabs are one stop: the arrows choose among them.
+    await page.evaluate(() => document.activeElement?.blur());
+    await tabTo(page, 'tab-run');
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('Enter');
+    await page.waitForSelector('#panel-scenario:not([hidden])');
+    await tabTo(page, 'param-collision');
+    while (!(await page.$eval('#param-collision', (e) => e.value)).includes('blackboard')) await page.keyboard.press('ArrowDown');
+    await page.waitForFunction(() => document.querySelector('#run-label-first').textContent === 'collision blackboard');
+    assert.equal(await page.textContent('#run-label-second'), 'tokens only');
+    const doc = JSON.parse(await page.inputValue('#scenario-json'));
+    assert.equal(doc.collision, 'blackboard');
+    assert.deepEqual(doc.compare, JSON.parse(wasm.lesson_json(LESSON)).compare);
+
+    await page.evaluate(() => document.activeElement?.blur());
+    await tabTo(page, 'tab-scenario');
+    await page.keyboard.press('ArrowLeft');
+    await page.keyboard.press('Enter');
+    await page.waitForSelector('#panel-run:not([hidden])');
+    await tabTo(page, 'speed');
+    await page.keyboard.press('End');
+    await page.evaluate(() => document.activeElement?.blur());
+    await page.keyboard.press('Space');
+    await page.waitForSelector('#run-status:text("completed")', { timeout: 60000 });
+    await page.waitForFunction(() => document.querySelector('#exercise-result').textContent.startsWith('Goal met'), null, { timeout: 30000 });
+    assert.match(await page.textContent('#exercise-result'), /metrics\.collisions is 0/);
+    // The second run is still the lesson's tokens run, and collides.
+    await page.waitForSelector('#run-status-second:text("completed")', { timeout: 60000 });
+    const sim = new wasm.Sim(second);
+    while (!sim.finished()) sim.advance(1000);
+    assert.equal(await page.getAttribute('#compare-wrap', 'data-hash'), sim.hash());
+    sim.free();
+    const [blackboard, tokens] = await metric(page, 'collisions');
+    assert.equal(blackboard, 0);
+    assert.ok(tokens > 0, `tokens only collides (${tokens})`);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
 });

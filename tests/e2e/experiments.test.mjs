@@ -56,7 +56,29 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   assert.equal(caption, 'median, interquartile range; n = 3 runs per point');
   assert.equal(await page.$$eval('#experiment-plots figure[data-kind="lines"] svg circle[data-band]', (c) => c.length), 2);
   assert.equal(await page.$$eval('#experiment-plots figure[data-kind="summary"] tbody tr', (r) => r.length), 2);
-  assert.match(await page.textContent('#experiment-plots figure[data-kind="summary"] thead'), /median.*IQR.*95% CI/);
+  // A column per condition path, named in words, then the statistics.
+  assert.deepEqual(await page.$$eval('#experiment-plots figure[data-kind="summary"] thead th', (ths) => ths.map((t) => t.textContent)), [
+    'robots',
+    'value',
+    'n',
+    'mean',
+    'sd',
+    'median',
+    'IQR',
+    '95% CI of the mean',
+  ]);
+  assert.deepEqual(
+    await page.$$eval('#experiment-plots figure[data-kind="summary"] tbody tr', (trs) => trs.map((t) => [...t.cells].slice(0, 3).map((c) => c.textContent))),
+    [
+      ['1', 'steps [steps]', '3'],
+      ['3', 'steps [steps]', '3'],
+    ],
+  );
+  // Two conditions are compared.
+  assert.match(
+    await page.textContent('#experiment-plots figure[data-kind="summary"] .comparisons'),
+    /robots: 1 against robots: 3: .*Cohen's d .*Mann-Whitney U = /,
+  );
 
   // SVG and PNG (twice the size) of the figure.
   const svg = await downloaded(page, '#experiment-plots figure[data-kind="lines"] button:has-text("Save SVG")');
@@ -97,7 +119,25 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   await context.close();
 });
 
-test('an edited experiment travels by link and by file, and survives a reload', async () => {
+/** Runs the experiment in view on two workers and returns its CSV export. */
+async function runToCsv(page) {
+  await page.fill('#experiment-workers', '2');
+  await page.dispatchEvent('#experiment-workers', 'change');
+  await page.click('#experiment-run');
+  await page.waitForFunction(() => document.querySelector('#experiment-status').textContent.startsWith('Done'), null, { timeout: 60000 });
+  return (await downloaded(page, '#export-csv')).bytes.toString('utf8');
+}
+
+/** What `kumiki sweep FILE --format csv` writes, at the time the page's CSV says it ran. */
+function cliCsv(file, pageCsv) {
+  const epoch = String(Date.parse(pageCsv.match(/^# time: (.+)$/m)[1]) / 1000);
+  return execFileSync('cargo', ['run', '--release', '--quiet', '-p', 'kumiki-cli', '--', 'sweep', file, '--format', 'csv'], {
+    encoding: 'utf8',
+    env: { ...process.env, SOURCE_DATE_EPOCH: epoch },
+  });
+}
+
+test('an edited experiment travels by link and by file, survives a reload, and each copy exports what the CLI writes', async () => {
   const { page, context, problems } = await openPage(s.browser, s.server.url);
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await page.click('#tab-experiments');
@@ -105,21 +145,37 @@ test('an edited experiment travels by link and by file, and survives a reload', 
   const text = JSON.stringify(edited, null, 2);
   await edit(page, text);
 
+  // The file the page saves is the experiment as edited; the CLI runs it.
+  const saved = await downloaded(page, '#experiment-save');
+  assert.equal(saved.name, 'e2e-travel.json');
+  assert.equal(saved.bytes.toString('utf8'), text);
+  const file = join(mkdtempSync(join(tmpdir(), 'kumiki-e2e-')), saved.name);
+  writeFileSync(file, saved.bytes);
+
+  // By link: another page opens it in the Experiments tab, runs it and exports the CLI's bytes.
   await page.click('#experiment-link');
   const link = await page.getAttribute('#experiment-link', 'data-link');
   assert.match(link, /#x1\./);
   const other = await openPage(s.browser, link);
   await other.page.waitForFunction(() => document.querySelector('#tab-experiments').getAttribute('aria-selected') === 'true');
   assert.deepEqual(JSON.parse(await other.page.inputValue('#experiment-json')), edited);
+  const linked = await runToCsv(other.page);
+  assert.match(
+    linked,
+    /^# kumiki \S+ \(commit [0-9a-f]{12}\)\n# models: amas behaviour version \d+\n# seeds: 4 9\n# time: .+\n# experiment: \{.*"name":"e2e-travel".*\}\n/,
+  );
+  assert.equal(linked, cliCsv(file, linked));
   assert.deepEqual(other.problems, []);
   await other.context.close();
 
-  const saved = await downloaded(page, '#experiment-save');
-  assert.equal(saved.name, 'e2e-travel.json');
-  assert.equal(saved.bytes.toString('utf8'), text);
+  // By file: opened over a built-in experiment, it is the same text, and runs to the CLI's bytes.
   await page.selectOption('#experiment-select', 'amas-fig23');
   await page.setInputFiles('#experiment-open', { name: 'mine.json', mimeType: 'application/json', buffer: saved.bytes });
+  // The file is read asynchronously: wait for its text to arrive before comparing.
+  await page.waitForFunction(() => document.querySelector('#experiment-json').value.includes('e2e-travel'));
   assert.equal(await page.inputValue('#experiment-json'), text);
+  const opened = await runToCsv(page);
+  assert.equal(opened, cliCsv(file, opened));
 
   await page.reload();
   await page.waitForFunction(() => document.querySelector('#experiment-json').value.includes('e2e-travel'));

@@ -122,6 +122,38 @@ describe('the first screen', () => {
     await context.close();
   });
 
+  test('on a laptop and on a tablet the header is read in the order the keyboard goes, with the scenario named in full', async () => {
+    for (const [width, height] of [
+      [1366, 768],
+      [768, 1024],
+    ]) {
+      const { page, context } = await openPage(s.browser, s.server.url, { width, height });
+      await page.evaluate(() => document.activeElement?.blur());
+      const stops = [];
+      for (let i = 0; i < 7; i++) {
+        await page.keyboard.press('Tab');
+        stops.push(
+          await page.evaluate(() => {
+            const e = document.activeElement;
+            const r = e.getBoundingClientRect();
+            return { id: e.id || e.tagName, x: r.x, y: r.y, h: r.height };
+          }),
+        );
+      }
+      const ids = stops.map((s) => s.id);
+      assert.deepEqual(ids, ['A', 'open-gallery', 'open-lessons', 'open-scenarios', 'open-welcome', 'open-record', 'copy-link'], `${width} px`);
+      // Each stop is right of the one before on its row, or on a row below it.
+      for (let i = 1; i < stops.length; i++) {
+        const [a, b] = [stops[i - 1], stops[i]];
+        const sameRow = Math.abs(a.y + a.h / 2 - (b.y + b.h / 2)) < 4;
+        assert.ok(sameRow ? b.x > a.x : b.y >= a.y + a.h - 4, `${width} px: ${b.id} comes after ${a.id} on the screen`);
+      }
+      const [shown, whole] = await page.$eval('#scenario-name', (e) => [e.clientWidth, e.scrollWidth]);
+      assert.ok(whole <= shown, `${width} px: the scenario's name is not cut (${whole} > ${shown})`);
+      await context.close();
+    }
+  });
+
   test('at 1366 × 768 the lesson with the longest instructions keeps Check and its verdict in view', async () => {
     const longest = wasm
       .lessons()

@@ -4,7 +4,7 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
-import { openPage, session } from './harness.mjs';
+import { loadWasm, openPage, session } from './harness.mjs';
 
 const s = session('/');
 const report = JSON.parse(readFileSync(new URL('../../docs/reproduction.json', import.meta.url), 'utf8'));
@@ -91,4 +91,37 @@ test('a long re-run shows its progress and stops on Cancel; a row with no experi
   assert.match(await page.textContent('#paper-report [role="alert"]'), /amas-no-such-claim/);
   assert.deepEqual(problems, []);
   await context.close();
+});
+
+test("every model's rows fit the About panel, on a laptop (1366 × 768) and on a tablet: no sideways scrolling", async () => {
+  const wasm = loadWasm();
+  const models = new Map();
+  for (const p of wasm.presets()) if (!models.has(p.model)) models.set(p.model, p.name);
+  assert.deepEqual([...models.keys()].sort(), Object.keys(report.models).sort());
+  for (const [model, preset] of models) {
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`, {
+      width: 1366,
+      height: 768,
+    });
+    await page.click('#tab-about');
+    await page.waitForSelector('#paper-report table.findings');
+    assert.equal(await page.locator('#paper-report table.findings tbody tr').count(), report.models[model].findings.length, model);
+    for (const [width, height] of [
+      [1366, 768],
+      [768, 1024],
+    ]) {
+      await page.setViewportSize({ width, height });
+      const [table, tableRoom, panel, panelRoom, doc] = await page.evaluate(() => {
+        const t = document.querySelector('#paper-report .table-scroll');
+        const p = document.querySelector('#panel-about');
+        return [t.scrollWidth, t.clientWidth, p.scrollWidth, p.clientWidth, document.documentElement.scrollWidth];
+      });
+      assert.ok(
+        table <= tableRoom && panel <= panelRoom && doc <= width,
+        `${model} at ${width} px: table ${table}/${tableRoom}, panel ${panel}/${panelRoom}, page ${doc}`,
+      );
+    }
+    assert.deepEqual(problems, []);
+    await context.close();
+  }
 });

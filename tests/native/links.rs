@@ -229,3 +229,62 @@ fn canonical_scenarios_state_every_default() {
     let again = kumiki_core::Scenario::from_json(&s.to_json()).unwrap();
     assert_eq!(again, s);
 }
+
+const EXPERIMENT_FIXTURE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../tests/fixtures/experiment-links.json"
+);
+
+/// Experiment links (`#x1.…`) never rot either: each link in `tests/fixtures/experiment-links.json`
+/// opens, as the page opens it (unpacked, then read and checked like a file), to the experiment it
+/// was made from, with the same runs. `KUMIKI_BLESS=1 cargo test -p kumiki-core --test links` adds
+/// a link for each built-in experiment the fixture lacks, and never rewrites an entry.
+#[test]
+fn experiment_links_of_earlier_releases_open() {
+    use kumiki_core::experiment::Experiment;
+    let mut stored: Vec<Value> = match std::fs::read_to_string(EXPERIMENT_FIXTURE) {
+        Ok(text) => serde_json::from_str(&text).unwrap(),
+        Err(_) => Vec::new(),
+    };
+    let has = |stored: &[Value], name: &str| stored.iter().any(|e| e["experiment"] == name);
+    let names: Vec<&str> = presets::experiment_names().collect();
+    if std::env::var_os("KUMIKI_BLESS").is_some() {
+        for name in &names {
+            if has(&stored, name) {
+                continue;
+            }
+            let e = Experiment::named_or_json(name).unwrap();
+            stored.push(json!({
+                "experiment": name,
+                "made_by": PROGRAM_VERSION,
+                "link": format!("#{}", link::pack_experiment(&e.definition)),
+                "runs": e.jobs().len(),
+            }));
+        }
+        let text = serde_json::to_string_pretty(&stored).unwrap() + "\n";
+        std::fs::write(EXPERIMENT_FIXTURE, text).unwrap();
+        return;
+    }
+    for name in &names {
+        assert!(
+            has(&stored, name),
+            "{name} has no link in tests/fixtures/experiment-links.json; add one with KUMIKI_BLESS=1 cargo test -p kumiki-core --test links"
+        );
+    }
+    for entry in &stored {
+        let name = entry["experiment"].as_str().unwrap();
+        let made_by = entry["made_by"].as_str().unwrap();
+        let json = link::unpack_experiment(entry["link"].as_str().unwrap()).unwrap_or_else(|e| {
+            panic!("the {name} experiment link made by {made_by} no longer opens: {e}")
+        });
+        let e = Experiment::from_json(&json).unwrap_or_else(|e| {
+            panic!("the {name} experiment link made by {made_by} is no longer read: {e}")
+        });
+        assert_eq!(e.name, name);
+        assert_eq!(
+            e.jobs().len() as u64,
+            entry["runs"].as_u64().unwrap(),
+            "the {name} experiment link made by {made_by} holds other runs than it did"
+        );
+    }
+}

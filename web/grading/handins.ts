@@ -80,7 +80,7 @@ export function parseHandins(text: string): Handin[] {
 function csvCell(v: unknown): string {
   const raw = v === undefined || v === null ? '' : String(v);
   // Text a spreadsheet would read as a formula (a student's name can be anything) gets a leading
-  // `'`, as the core's CSV does (experiment::csv_text); numbers are written as they are.
+  // `'`, as the core's CSV does (export::csv_text); numbers are written as they are.
   const s = typeof v === 'string' && /^[=+\-@\t\r]/.test(raw) ? `'${raw}` : raw;
   return /[",\n\r]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
 }

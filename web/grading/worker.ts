@@ -1,5 +1,5 @@
 // A grading worker: replays the hand-ins it is handed and judges each as `kumiki check` does
-// (the core's exercise::grade, through grade_handin). It runs the page's compiled wasm module,
+// (the core's grading::grade, through grade_handin). It runs the page's compiled wasm module,
 // handed over at setup: nothing is downloaded, and no hand-in leaves the machine.
 import type { Graded } from '../contract.gen';
 import init, { grade_handin, panic_message } from '../pkg/kumiki_wasm.js';

@@ -9,7 +9,7 @@ type Part = { key: 'target' | 'initial'; label: string } | { key: 'stages'; inde
 
 const MAX_PAINTED = 200;
 
-export const amasEditor: ModelEditor = {
+export const editor: ModelEditor = {
   title: 'Target shape',
   owns: ['target', 'stages', 'initial'],
   mount(root, ctx) {

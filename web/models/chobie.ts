@@ -13,7 +13,7 @@ const MAX_PAINTED = 200;
 /** The world text's robots and its terrain, each as a square shape. */
 const layers = (world: string) => query<{ robots: string; terrain: string }>('chobie', 'layers', { world });
 
-export const chobieEditor: ModelEditor = {
+export const editor: ModelEditor = {
   title: 'World: robots and terrain',
   owns: ['world'],
   mount(root, ctx) {

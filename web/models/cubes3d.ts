@@ -6,7 +6,7 @@ import type { ModelEditor } from './editor';
 import { TargetsEditor, type TargetSpec } from './typelist-editor';
 import { VoxelEditor, type VoxelSubject } from './voxel-editor';
 
-export const cubes3dEditor: ModelEditor = {
+export const editor: ModelEditor = {
   title: 'Shapes and targets',
   owns: ['shape', 'targets'],
   mount(root, ctx) {

@@ -5,7 +5,7 @@ import { message, query } from '../wasm';
 import type { ModelEditor } from './editor';
 import { GridEditor } from './grid-editor';
 
-export const fractaEditor: ModelEditor = {
+export const editor: ModelEditor = {
   title: 'Start and goal',
   owns: ['start', 'goal'],
   mount(root, ctx) {

@@ -1,15 +1,13 @@
-// Model-specific editors by model name, one file each.
-import { amasEditor } from './amas';
-import { chobieEditor } from './chobie';
-import { cubes3dEditor } from './cubes3d';
+// Model-specific editors: one plugin per model, web/models/<model>.ts, which exports its `editor`.
+// They are found by their file names, so a new model's plugin is its file alone; a model without
+// one gets the generic parameter form.
 import type { ModelEditor } from './editor';
-import { fractaEditor } from './fracta';
 
 export type { EditorContext, ModelEditor, MountedEditor } from './editor';
 
-export const modelEditors: Record<string, ModelEditor> = {
-  amas: amasEditor,
-  chobie: chobieEditor,
-  cubes3d: cubes3dEditor,
-  fracta: fractaEditor,
-};
+const modules = import.meta.glob<{ editor?: ModelEditor }>(['./*.ts', '!./index.ts'], { eager: true });
+
+/** Each model's editor, by model name (its plugin's file name). */
+export const modelEditors: Record<string, ModelEditor> = Object.fromEntries(
+  Object.entries(modules).flatMap(([path, module]) => (module.editor ? [[path.slice('./'.length, -'.ts'.length), module.editor]] : [])),
+);

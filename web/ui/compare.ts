@@ -12,7 +12,7 @@ import { type Comparison, ENVELOPE } from '../contract.gen';
 import type { Frame } from '../types';
 import * as core from '../wasm';
 import { byId, clear, el } from './dom';
-import { choices, resolve } from './params';
+import { choices, otherNumber, resolve } from './params';
 
 /**
  * Keys the page does not offer to vary: those of the envelope a comparison cannot vary (all but its
@@ -25,6 +25,8 @@ interface Setting {
   key: string;
   /** The other values of a choice or a switch; null for a number, typed in. */
   options: unknown[] | null;
+  /** A number's bounds and whether it is whole, from the model's schema. */
+  bounds?: { min: number; max: number; integer: boolean };
 }
 
 export interface Compare {
@@ -140,7 +142,11 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
       const options = choices(resolve(schema?.properties[key], schema));
       if (options) settings.push({ key, options: options.filter((o) => JSON.stringify(o) !== JSON.stringify(value)) });
       else if (typeof value === 'boolean') settings.push({ key, options: [!value] });
-      else if (typeof value === 'number') settings.push({ key, options: null });
+      else if (typeof value === 'number') {
+        const node = resolve(schema?.properties[key], schema);
+        const integer = node?.type === 'integer' || (Array.isArray(node?.type) && node.type.includes('integer'));
+        settings.push({ key, options: null, bounds: { min: node?.minimum ?? -Infinity, max: node?.maximum ?? Infinity, integer } });
+      }
     }
     settings = settings.filter((s) => s.options === null || s.options.length > 0);
     const current = (doc.compare as { path?: string; value?: unknown } | undefined) ?? null;
@@ -165,7 +171,13 @@ export function setupCompare(page: Page, run: RunPanel): Compare {
       if (chosen !== undefined && setting.options.some((o) => JSON.stringify(o) === JSON.stringify(chosen))) valueSelect.value = JSON.stringify(chosen);
     } else if (setting) {
       const own = Number(doc[setting.key]);
-      valueNumber.value = String(typeof chosen === 'number' ? chosen : setting.key === 'seed' ? own + 1 : own);
+      const bounds = setting.bounds ?? { min: -Infinity, max: Infinity, integer: false };
+      valueNumber.step = bounds.integer ? '1' : 'any';
+      if (Number.isFinite(bounds.min)) valueNumber.min = String(bounds.min);
+      else valueNumber.removeAttribute('min');
+      if (Number.isFinite(bounds.max)) valueNumber.max = String(bounds.max);
+      else valueNumber.removeAttribute('max');
+      valueNumber.value = String(typeof chosen === 'number' ? chosen : otherNumber(own, bounds));
     }
   }
 

@@ -26,6 +26,15 @@ export function choices(node: SchemaNode | undefined): unknown[] | undefined {
   return consts?.length && consts.every((c) => c !== undefined) ? consts : undefined;
 }
 
+/**
+ * A number other than `own` within `bounds`, to start the second run's value from: one more (or
+ * less) for a whole number, twice (or half) for another. The same value would compare nothing.
+ */
+export function otherNumber(own: number, bounds: { min: number; max: number; integer: boolean }): number {
+  const candidates = bounds.integer ? [own + 1, own - 1] : own === 0 ? [1, -1, 0.5, -0.5] : [own * 2, own / 2, own + 1, own - 1];
+  return candidates.find((v) => v !== own && v >= bounds.min && v <= bounds.max) ?? own;
+}
+
 /** Help text: the key's description and each choice's. */
 function help(node: SchemaNode | undefined): string {
   const lines = [node?.description ?? ''];

@@ -28,16 +28,30 @@ export async function svgToPng(svg: string): Promise<Blob> {
 
 const words = (path: string) => path.replace(/^(params|metrics)\./, '').replace(/[_.]/g, ' ');
 
+/**
+ * The names of a summary's condition columns: the figure's axis label names its `group` paths,
+ * one a column ("scenario, tip load, adaptation"); one "condition" column if they do not match.
+ */
+export function conditionNames(f: Figure): string[] {
+  const width = f.table[0]?.condition.length ?? 1;
+  const names = f.x_label.split(', ');
+  return names.length === width ? names : ['condition'];
+}
+
 function summaryTable(f: Figure): HTMLElement {
   const table = el('table', { class: 'summary' });
   const head = el('tr');
-  for (const h of ['condition', 'value', 'n', 'mean', 'sd', 'median', 'IQR', '95% CI of the mean']) head.append(el('th', { scope: 'col', text: h }));
+  const names = conditionNames(f);
+  const text = [...names, 'value'];
+  for (const h of [...text, 'n', 'mean', 'sd', 'median', 'IQR', '95% CI of the mean'])
+    head.append(el('th', { scope: 'col', class: text.includes(h) ? '' : 'num', text: h }));
   table.append(el('caption', { text: f.described }), el('thead', {}, head));
   const body = el('tbody');
   for (const r of f.table) {
     const s = r.stats;
+    const conditions = names.length === r.condition.length ? r.condition : [r.condition.join(', ')];
     const cells = [
-      r.condition.join(', '),
+      ...conditions,
       r.unit ? `${words(r.value)} [${r.unit}]` : words(r.value),
       s ? String(s.n) : '0',
       s ? formatNumber(s.mean) : '–',
@@ -46,7 +60,7 @@ function summaryTable(f: Figure): HTMLElement {
       s ? `${formatNumber(s.q1)}–${formatNumber(s.q3)}` : '–',
       s ? `${formatNumber(s.ci95[0])}–${formatNumber(s.ci95[1])}` : '–',
     ];
-    body.append(el('tr', {}, ...cells.map((c, i) => el('td', { class: i >= 2 ? 'num' : '', text: c }))));
+    body.append(el('tr', {}, ...cells.map((c, i) => el('td', { class: i > conditions.length ? 'num' : '', text: c }))));
   }
   table.append(body);
   const box = el('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `${f.title || 'Summary'}: statistics per condition` }, table);
@@ -82,9 +96,9 @@ export function renderPlots(root: HTMLElement, experiment: string, name: string,
       box.append(document.importNode(doc, true));
       box.append(el('figcaption', { class: 'hint', text: figure.described }));
     }
-    const save = el('div', { class: 'row figure-export' });
-    const asSvg = el('button', { type: 'button', text: 'Save SVG', 'aria-label': `Save “${heading}” as SVG` });
-    const asPng = el('button', { type: 'button', text: 'Save PNG (2×)', 'aria-label': `Save “${heading}” as PNG at twice the size` });
+    const save = el('div', { class: 'row-buttons' });
+    const asSvg = el('button', { type: 'button', text: 'Save SVG', 'aria-label': `Save SVG of “${heading}”` });
+    const asPng = el('button', { type: 'button', text: 'Save PNG (2×)', 'aria-label': `Save PNG (2×) of “${heading}”, twice its size` });
     asSvg.addEventListener('click', () => download(figureFileName(name, i + 1, 'svg'), svg, 'image/svg+xml'));
     asPng.addEventListener('click', async () => download(figureFileName(name, i + 1, 'png'), await svgToPng(svg), 'image/png'));
     save.append(asSvg, asPng);

@@ -1,11 +1,11 @@
 //! `kumiki check`: grades classroom hand-ins. Each hand-in link is replayed to its end and judged
-//! by its exercise's goal (the core's `exercise::grade`); one row per hand-in, in input order.
+//! by its exercise's goal (the core's `grading::grade`); one row per hand-in, in input order.
 
 use std::io::Write;
 use std::path::Path;
 
-use kumiki_core::exercise::{self, Grade};
-use kumiki_core::experiment::csv_text;
+use kumiki_core::export::csv_text;
+use kumiki_core::grading::{self, Grade};
 use kumiki_core::Scenario;
 use serde::Serialize;
 
@@ -102,7 +102,7 @@ pub fn run(
                 .map_err(|e| match e {
                     Failure::Usage(m) | Failure::Run(m) => m,
                 })
-                .and_then(|s| exercise::grade(&s, original).map_err(|e| e.to_string()));
+                .and_then(|s| grading::grade(&s, original).map_err(|e| e.to_string()));
             match graded {
                 Ok(grade) => Row {
                     handin: i + 1,

@@ -37,7 +37,7 @@ pub fn sections(papers: &[&Paper], threads: usize) -> Result<Vec<Section>, Failu
         .enumerate()
         .flat_map(|(e, x)| x.jobs().into_iter().map(move |j| (e, j)))
         .collect();
-    let bar = crate::progress_bar("reproduce", jobs.len());
+    let bar = crate::runs::progress_bar("reproduce", jobs.len());
     let mut rows: Vec<Vec<Row>> = vec![Vec::new(); experiments.len()];
     pool::run_ordered(
         jobs.len(),

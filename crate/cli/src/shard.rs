@@ -12,7 +12,7 @@
 use std::collections::BTreeMap;
 use std::str::FromStr;
 
-use kumiki_core::experiment::{self, Row};
+use kumiki_core::experiment::Row;
 use kumiki_core::export::{self, Provenance};
 use kumiki_core::Outcome;
 use serde::{Deserialize, Serialize};
@@ -222,7 +222,7 @@ pub fn merge(
 pub fn write(command: Command, provenance: Option<&Provenance>, rows: &[Row], csv: bool) -> String {
     match (csv, provenance) {
         (true, Some(p)) => export::csv(p, rows),
-        (true, None) => experiment::to_csv(rows),
+        (true, None) => export::to_csv(rows),
         (false, Some(p)) if command == Command::Sweep => export::json_lines(p, rows),
         (false, _) => rows.iter().map(|r| json_line(command, r) + "\n").collect(),
     }

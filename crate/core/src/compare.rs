@@ -63,7 +63,12 @@ impl Compare {
         }
         let base = lookup(doc, &compare.path)
             .ok_or_else(|| Error::field("path", format!("no setting '{}'", compare.path)))?;
-        if *base == compare.value {
+        // A number is the same number however it is written: the page writes a float 2.0 as 2.
+        let same = match (base.as_f64(), compare.value.as_f64()) {
+            (Some(a), Some(b)) => a == b,
+            _ => *base == compare.value,
+        };
+        if same {
             return Err(Error::field(
                 "value",
                 "is the scenario's own value; the second run would be the same",
@@ -171,6 +176,14 @@ mod tests {
         let err = |section: Value| with_compare(section).unwrap_err().to_string();
         assert_eq!(
             err(json!({"path": "field", "value": "continuous"})),
+            "compare.value: is the scenario's own value; the second run would be the same"
+        );
+        // The same number written as an integer: the page's JavaScript writes 2.0 as 2.
+        let mut fracta = presets::scenario("fracta-deadlock").unwrap().to_value();
+        assert_eq!(fracta["irritation_gain"], json!(2.0));
+        fracta["compare"] = json!({"path": "irritation_gain", "value": 2});
+        assert_eq!(
+            Scenario::from_value(fracta).unwrap_err().to_string(),
             "compare.value: is the scenario's own value; the second run would be the same"
         );
         assert_eq!(

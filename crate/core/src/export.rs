@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
-use crate::experiment::{csv_text, csv_value, to_csv, Experiment, Row, PROGRAM_VERSION};
+use crate::experiment::{Experiment, Row, PROGRAM_VERSION};
 use crate::models;
 
 /// The commit this program was built from (see build.rs).
@@ -129,4 +129,124 @@ pub fn trace_csv(p: &Provenance, rows: &[Row]) -> String {
         }
     }
     out
+}
+
+/// Rows as CSV: fixed columns, then `params.*` and `metrics.*` columns in sorted order; a
+/// column of a quantity with a unit names it in brackets (`metrics.total_steps [robot steps]`).
+pub fn to_csv(rows: &[Row]) -> String {
+    let mut params: Vec<&String> = rows.iter().flat_map(|r| r.params.keys()).collect();
+    params.sort();
+    params.dedup();
+    let mut metrics: Vec<&String> = rows.iter().flat_map(|r| r.metrics.keys()).collect();
+    metrics.sort();
+    metrics.dedup();
+    let mut out = String::from("scenario,seed,completed,steps [steps],hash,scenario_hash,version");
+    for p in &params {
+        out.push_str(&format!(",{}", csv_field(&format!("params.{p}"))));
+    }
+    for m in &metrics {
+        let column = match metric_unit(m) {
+            Some(unit) => format!("metrics.{m} [{unit}]"),
+            None => format!("metrics.{m}"),
+        };
+        out.push_str(&format!(",{}", csv_field(&column)));
+    }
+    out.push('\n');
+    for r in rows {
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{}",
+            csv_text(&r.scenario),
+            r.seed,
+            r.completed,
+            r.steps,
+            r.hash,
+            r.scenario_hash,
+            csv_field(&r.version)
+        ));
+        for p in &params {
+            out.push(',');
+            out.push_str(&csv_value(r.params.get(*p)));
+        }
+        for m in &metrics {
+            out.push(',');
+            out.push_str(&csv_value(r.metrics.get(*m)));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// A parameter's or metric's value as a CSV cell: empty when missing, text guarded, numbers as
+/// JSON writes them.
+pub(crate) fn csv_value(v: Option<&Value>) -> String {
+    match v {
+        None | Some(Value::Null) => String::new(),
+        Some(Value::String(s)) => csv_text(s),
+        Some(other) => csv_field(&other.to_string()),
+    }
+}
+
+/// Text from a scenario (a name, a parameter's text value) as a CSV cell. A cell that starts
+/// with `=`, `+`, `-`, `@`, a tab or a carriage return is read as a formula by spreadsheets, so
+/// such text gets a leading `'` (OWASP's advice); numbers never pass through here.
+pub fn csv_text(s: &str) -> String {
+    match s.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        true => csv_field(&format!("'{s}")),
+        false => csv_field(s),
+    }
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::run::Outcome;
+
+    fn row(scenario: &str, param: Value, metric: Value) -> Row {
+        Row {
+            outcome: Outcome {
+                scenario: scenario.into(),
+                seed: 1,
+                completed: true,
+                steps: 5,
+                hash: "00".into(),
+                metrics: [("m".to_string(), metric)].into_iter().collect(),
+            },
+            params: [("p".to_string(), param)].into_iter().collect(),
+            scenario_hash: "11".into(),
+            version: "kumiki 0".into(),
+            trace: None,
+        }
+    }
+
+    #[test]
+    fn csv_text_that_a_spreadsheet_would_run_is_neutralised_but_numbers_are_not() {
+        let csv = to_csv(&[
+            row(
+                "=HYPERLINK(\"x\")",
+                Value::from("@SUM(A1)"),
+                Value::from(-1.5),
+            ),
+            row("+1", Value::from("-2"), Value::from(3)),
+            row("plain, name", Value::from("ok"), Value::from(-7)),
+        ]);
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(
+            lines[0],
+            "scenario,seed,completed,steps [steps],hash,scenario_hash,version,params.p,metrics.m"
+        );
+        assert_eq!(
+            lines[1],
+            "\"'=HYPERLINK(\"\"x\"\")\",1,true,5,00,11,kumiki 0,'@SUM(A1),-1.5"
+        );
+        assert_eq!(lines[2], "'+1,1,true,5,00,11,kumiki 0,'-2,3");
+        assert_eq!(lines[3], "\"plain, name\",1,true,5,00,11,kumiki 0,ok,-7");
+    }
 }

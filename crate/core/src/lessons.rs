@@ -1,16 +1,22 @@
-//! Built-in lessons: classroom exercises tied to the papers, one JSON file each under `lessons/`
-//! (the core's, or a model crate's), registered by file name like the presets.
+//! Built-in lessons: classroom exercises tied to the papers, one JSON file each in a model crate's
+//! `lessons/`, registered by file name like the presets.
 //!
 //! A lesson is a scenario with an `exercise` section. Its description starts with
 //! `Lesson (SECTION): ` where SECTION names the paper's section and figures it is about, so the
-//! gallery and `kumiki lessons` can show it; a test holds every lesson to that form.
+//! gallery and `kumiki lessons` can show it; a test holds every lesson to that form. Beside the
+//! scenario, its file holds the edit the lesson is designed to be solved by (`solution`), which a
+//! test makes and grades; the scenario, its links and the page leave it out.
 
 use serde::Serialize;
+use serde_json::{Map, Value};
 
 use crate::error::{Error, Result};
 use crate::models;
-use crate::presets::{lookup, LESSON_FILES};
+use crate::presets::{in_file, lookup, LESSON_FILES};
 use crate::scenario::Scenario;
+
+/// The key of a lesson file that holds its solution, beside the scenario's keys.
+const SOLUTION: &str = "solution";
 
 /// Names of the built-in lessons, sorted.
 pub fn names() -> impl Iterator<Item = &'static str> {
@@ -23,7 +29,35 @@ pub fn json(name: &str) -> Result<&'static str> {
 }
 
 pub fn scenario(name: &str) -> Result<Scenario> {
-    crate::presets::scenario_in(LESSON_FILES, "lesson", name)
+    let (doc, _) = file(name)?;
+    in_file("lesson", name, Scenario::from_value(Value::Object(doc)))
+}
+
+/// The edit lesson `name` is designed to be solved by, as dotted paths and their values (its
+/// file's `solution`): a student who makes it meets the goal.
+pub fn solution(name: &str) -> Result<Vec<(String, Value)>> {
+    match file(name)?.1 {
+        Some(Value::Object(edits)) if !edits.is_empty() => Ok(edits.into_iter().collect()),
+        _ => Err(Error::field(
+            SOLUTION,
+            format!(
+                "lesson '{name}' gives no solution: the edits, by dotted path, that meet its goal"
+            ),
+        )),
+    }
+}
+
+/// A lesson file: the scenario's keys, and its solution apart.
+fn file(name: &str) -> Result<(Map<String, Value>, Option<Value>)> {
+    let doc: Value = serde_json::from_str(json(name)?).map_err(|e| Error::json(&e))?;
+    let Value::Object(mut doc) = doc else {
+        return Err(Error::field(
+            "",
+            format!("lesson '{name}' is not a JSON object"),
+        ));
+    };
+    let solution = doc.remove(SOLUTION);
+    Ok((doc, solution))
 }
 
 /// What a list of lessons shows of one.
@@ -74,37 +108,7 @@ fn section(description: &str) -> Option<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exercise::grade;
-    use serde_json::{json, Value};
-
-    /// The edit each lesson is designed to be solved by: a student who makes it meets the goal.
-    fn solution(name: &str) -> Vec<(&'static str, Value)> {
-        match name {
-            "lesson-amas-robots" => vec![("robots", json!(5))],
-            "lesson-amas-collisions" => vec![("collision", json!("relay"))],
-            "lesson-amas-compare" => vec![("collision", json!("blackboard"))],
-            // The T on its stem: two corners share the traffic of the L's one.
-            "lesson-amas-heatmap" => vec![(
-                "target",
-                json!("##############\n##############\n##############\n##############\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n.....####.....\n"),
-            )],
-            "lesson-fracta-irritation" => vec![("I_th", json!(10.0))],
-            // The triangle with its spare, as fracta-repair starts.
-            "lesson-fracta-spare" => {
-                vec![("start", json!(". # # .\n . # # .\n. # # #\n # # # #\n"))]
-            }
-            "lesson-cubes-selection" => vec![("selection", json!("mrf"))],
-            "lesson-cubes-movable" => vec![("movable", json!(["C1", "C21", "C31"]))],
-            "lesson-cubes-cooling" => vec![("c", json!(10.0))],
-            "lesson-chobie-forms" => vec![("method", json!("cautious"))],
-            "lesson-chobie-bridge" => vec![("adaptation", json!(true))],
-            "lesson-chobie-survive" => vec![("adaptation", json!(true))],
-            "lesson-chobie-leader" => vec![("leader", json!("temporary"))],
-            other => {
-                panic!("lesson {other} has no solution in this test: add the edit that solves it")
-            }
-        }
-    }
+    use crate::grading::grade;
 
     #[test]
     fn every_lesson_is_an_exercise_named_after_its_file_and_citing_its_section() {
@@ -172,10 +176,9 @@ mod tests {
                 "{name}: the unedited lesson breaks its own locks: {:?}",
                 given.locked_edited
             );
-            let edits: Vec<(String, Value)> = solution(name)
-                .into_iter()
-                .map(|(p, v)| (p.to_string(), v))
-                .collect();
+            let edits = solution(name).unwrap_or_else(|e| {
+                panic!("{e}: add the edit that solves it to the lesson's file")
+            });
             let solved = lesson.with_overrides(&edits).unwrap();
             let graded = grade(&solved, Some(&lesson)).unwrap();
             assert!(

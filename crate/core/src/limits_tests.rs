@@ -1,5 +1,6 @@
-//! The limits ([`kumiki_model::limits`], re-exported as [`crate::limits`]) at work on whole
-//! scenarios, read under the page's and the large limits.
+//! The limits ([`kumiki_model::limits`], re-exported as [`crate::limits`], and each model's own,
+//! found through the registry) at work on whole scenarios, read under the page's and the large
+//! limits, and as the table the documentation gives.
 
 use crate::limits::Limits;
 use crate::presets;
@@ -78,4 +79,55 @@ fn a_scenario_keeps_its_limits_through_overrides() {
     assert!(large.with_override("target", wide.clone()).is_ok());
     let page = presets::scenario("amas-L").unwrap();
     assert!(page.with_override("target", wide).is_err());
+}
+
+#[test]
+fn the_table_has_a_row_for_every_limit() {
+    // Each model's test checks that its rows read every field of its limits (every_limit_has_a_row);
+    // the table holds the shared bound and every row of every registered model, in registry order.
+    let table = crate::models::limits_markdown();
+    let mut want = vec!["every".to_string()];
+    for m in crate::models::MODELS {
+        assert!(
+            !m.limits.lines().is_empty(),
+            "{} declares no limits",
+            m.name
+        );
+        want.extend(m.limits.lines().iter().map(|_| format!("`{}`", m.name)));
+    }
+    let models: Vec<String> = table
+        .lines()
+        .skip(2)
+        .map(|l| {
+            l.split(" | ")
+                .next()
+                .unwrap()
+                .trim_start_matches("| ")
+                .to_string()
+        })
+        .collect();
+    assert_eq!(models, want);
+}
+
+#[test]
+fn the_table_writes_powers_of_two_and_groups_thousands() {
+    let table = crate::models::limits_markdown();
+    assert!(table.contains("| every | cells a shape text spans (width × height × layers; rows padded to the widest) | 2^24 | 2^28 |"), "{table}");
+    assert!(
+        table.contains("| `chobie` | robots | 5000 | 50 000 |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| `cubes3d` | units | 100 000 | 1 000 000 |"),
+        "{table}"
+    );
+}
+
+#[test]
+fn large_allows_at_least_what_the_page_allows() {
+    let shared = crate::limits::TableLine::shape_cells();
+    let lines = crate::models::MODELS.iter().flat_map(|m| m.limits.lines());
+    for line in std::iter::once(shared).chain(lines) {
+        assert!(line.large >= line.page, "{}", line.what);
+    }
 }

@@ -13,41 +13,66 @@ use crate::scenario::Disturbance;
 use crate::series::{self, Series};
 use crate::timeline::Timeline;
 
-/// Memory the keyframes of one run may take, in bytes (estimated from the cell count).
+/// Memory the keyframes of one run may take, in bytes, estimated from the cell count at
+/// [`KEYFRAME_CELL_BYTES`] a cell: a lattice whose one copy is over it keeps no keyframe, and goes
+/// back by rebuilding its start from the scenario.
 pub const KEYFRAME_BYTES: usize = 96 << 20;
+/// Bytes a keyframe is estimated to take per lattice cell: above what any model's state takes a
+/// cell (AMAS, the largest, about 10; docs/benchmarks.md), so the estimate stays on the safe side.
+pub const KEYFRAME_CELL_BYTES: usize = 16;
+/// Most keyframes a run keeps, however small its lattice.
+pub const KEYFRAME_COUNT: usize = 256;
 /// Steps between the first keyframes; the interval doubles as the run grows.
 pub const KEYFRAME_EVERY: u64 = 16;
 /// The share of stepping time keyframes may take. A small model in a large lattice copies more
-/// bytes per keyframe than its steps touch, so its interval doubles until copies cost at most this.
+/// bytes per keyframe than its steps touch, so its interval grows (by powers of two) until copies
+/// cost at most this.
 pub const KEYFRAME_TIME_SHARE: f64 = 0.05;
 /// Keyframes are judged too costly only once this much time (ms) has been measured, so that one
 /// slow copy among fast steps (or a coarse clock: browsers round `performance.now()` to 0.1 ms)
-/// does not double the interval.
-const COST_WINDOW_MS: f64 = 5.0;
+/// does not widen the interval. Short, so that a fast model (a few microseconds a step, a copy
+/// costing 40 steps) stops copying at every 16th step within its first hundred steps.
+const COST_WINDOW_MS: f64 = 1.0;
 
-/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds.
+/// Time spent stepping and copying keyframes since the interval last changed, in milliseconds,
+/// and the steps and copies it covers.
 #[derive(Default)]
 struct KeyframeCost {
     total: f64,
     copying: f64,
+    steps: u64,
+    copies: u64,
 }
 
 impl KeyframeCost {
-    /// Whether keyframes took more than their share of the time measured; starts a new measure
-    /// when they did.
-    fn too_costly(&mut self) -> bool {
-        let costly = self.copying > KEYFRAME_TIME_SHARE * (self.total - self.copying).max(0.0)
-            && self.total > COST_WINDOW_MS;
-        if costly {
-            *self = KeyframeCost::default();
+    /// The interval at which keyframes would take at most their share of the time measured, when
+    /// `every` is too short for that; starts a new measure when it is. Judged once
+    /// [`COST_WINDOW_MS`] have been measured, and then straight to the interval needed (a power
+    /// of two times `every`), so a fast model does not copy at the first interval for long.
+    fn needs_interval(&mut self, every: u64) -> Option<u64> {
+        let stepping = (self.total - self.copying).max(0.0);
+        let costly = self.copying > KEYFRAME_TIME_SHARE * stepping && self.total > COST_WINDOW_MS;
+        if !costly {
+            return None;
         }
-        costly
+        let per_copy = self.copying / self.copies.max(1) as f64;
+        let per_step = stepping / self.steps.max(1) as f64;
+        let mut interval = every * 2;
+        while (interval as f64) * per_step * KEYFRAME_TIME_SHARE < per_copy
+            && interval < u64::MAX / 2
+        {
+            interval *= 2;
+        }
+        *self = KeyframeCost::default();
+        Some(interval)
     }
 }
 
 /// One run with the keyframes that let it go back and the record of its metrics.
 pub struct Playback {
-    run: Run,
+    /// `None` only within [`Playback::seek`], between freeing the state at hand and building the
+    /// one sought, so a large lattice never holds two states at once.
+    run: Option<Run>,
     timeline: Timeline,
     /// The furthest step reached since the last fork: the end of the timeline.
     furthest: u64,
@@ -59,12 +84,9 @@ pub struct Playback {
 }
 
 impl Playback {
-    /// Plays `run` from where it stands, keeping keyframes within [`KEYFRAME_BYTES`] (about 16
-    /// bytes of state a cell, and at least a few keyframes however large the lattice).
+    /// Plays `run` from where it stands, keeping keyframes within [`KEYFRAME_BYTES`].
     pub fn new(run: Run) -> Playback {
-        let [w, h, d] = run.model().layout().dims;
-        let per_frame = 16 * (w as usize) * (h as usize) * (d.max(1) as usize) + 4096;
-        let capacity = (KEYFRAME_BYTES / per_frame).clamp(4, 256);
+        let capacity = keyframe_capacity(run.model().layout().dims);
         let metrics = run.model().metrics();
         let mut series = Series::new(&metrics, series::DEFAULT_CAPACITY);
         series.record(run.steps(), &metrics);
@@ -74,12 +96,16 @@ impl Playback {
             authored: run.scenario().disturbances.clone(),
             series,
             cost: KeyframeCost::default(),
-            run,
+            run: Some(run),
         }
     }
 
     pub fn run(&self) -> &Run {
-        &self.run
+        self.run.as_ref().expect("a playback always holds its run")
+    }
+
+    fn run_mut(&mut self) -> &mut Run {
+        self.run.as_mut().expect("a playback always holds its run")
     }
 
     /// Every step's metrics since the start (or the last fork).
@@ -105,35 +131,48 @@ impl Playback {
     pub fn advance(&mut self, n: u64, now: &mut dyn FnMut() -> f64) -> u64 {
         let mut taken = 0;
         let mut mark = now();
-        while taken < n && self.run.step() {
-            if self.run.steps() % self.timeline.keyframes().1 == 0 {
+        let run = self.run.as_mut().expect("a playback always holds its run");
+        while taken < n && run.step() {
+            if run.steps() % self.timeline.keyframes().1 == 0 {
                 let t = now();
                 self.cost.total += t - mark;
                 mark = t;
-                if self.timeline.record(&self.run) {
+                if self.timeline.record(run) {
                     mark = now();
                     self.cost.copying += mark - t;
                     self.cost.total += mark - t;
-                    if self.cost.too_costly() {
-                        self.timeline.coarsen();
+                    self.cost.copies += 1;
+                    if let Some(every) = self.cost.needs_interval(self.timeline.keyframes().1) {
+                        while self.timeline.keyframes().1 < every {
+                            self.timeline.coarsen();
+                        }
                     }
                 }
             }
+            self.cost.steps += 1;
             // Steps passed through again after going back are already recorded: the series
             // skips them before reading a metric.
-            self.series.record_model(self.run.steps(), self.run.model());
+            self.series.record_model(run.steps(), run.model());
             taken += 1;
         }
         self.cost.total += now() - mark;
-        self.furthest = self.furthest.max(self.run.steps());
+        self.furthest = self.furthest.max(run.steps());
         taken
     }
 
     /// Goes to `step` (at most the furthest step reached) by replaying from the keyframe before
-    /// it: the state is bit-identical to the one passed through.
+    /// it, or on from the step at hand when that is nearer: the state is bit-identical to the one
+    /// passed through. Going back frees the state at hand before building the one sought.
     pub fn seek(&mut self, step: u64) {
         let step = step.min(self.furthest);
-        self.run = self.timeline.seek(step, self.run.scenario());
+        let at = self.run().steps();
+        if at <= step && self.timeline.replay_from(step) <= at {
+            self.run_mut().advance(step - at);
+            return;
+        }
+        let scenario = self.run().scenario().clone();
+        self.run = None;
+        self.run = Some(self.timeline.seek(step, &scenario));
     }
 
     /// Applies an action now (a click tool) and records it in the scenario. A click in the past
@@ -141,25 +180,33 @@ impl Playback {
     /// and the timeline and the series end at the click. Tried on a copy, so a refused click
     /// changes nothing.
     pub fn apply(&mut self, action: Action) -> Result<()> {
-        let now = self.run.steps();
+        let now = self.run().steps();
         if now >= self.furthest {
-            self.run.apply_now(action)?;
+            self.run_mut().apply_now(action)?;
         } else {
-            let mut scenario = self.run.scenario().clone();
+            let mut scenario = self.run().scenario().clone();
             let authored = &self.authored;
             scenario
                 .disturbances
                 .retain(|d| d.at <= now || authored.contains(d));
-            let mut fork = self.run.snapshot();
+            let mut fork = self.run().snapshot();
             fork.reschedule(&scenario);
             fork.apply_now(action)?;
-            self.run = fork;
+            self.run = Some(fork);
         }
         self.timeline.truncate(now);
         self.series.truncate(now);
         self.furthest = now;
         Ok(())
     }
+}
+
+/// Keyframes a run on a lattice of `dims` may keep within [`KEYFRAME_BYTES`]: 0 when one copy of
+/// its state is estimated over the budget, at most [`KEYFRAME_COUNT`].
+pub fn keyframe_capacity(dims: [u32; 3]) -> usize {
+    let [w, h, d] = dims.map(|n| n.max(1) as usize);
+    let per_frame = KEYFRAME_CELL_BYTES * w * h * d + 4096;
+    (KEYFRAME_BYTES / per_frame).min(KEYFRAME_COUNT)
 }
 
 #[cfg(test)]
@@ -277,6 +324,44 @@ mod tests {
         let mut q = amas_l();
         q.advance(4 * KEYFRAME_EVERY, &mut no_clock());
         assert_eq!(q.keyframes().1, every);
+    }
+
+    #[test]
+    fn keyframes_stay_within_their_memory_budget() {
+        let per_cell = |dims: [u32; 3]| {
+            let cells: usize = dims.iter().map(|&n| n.max(1) as usize).product();
+            keyframe_capacity(dims) * KEYFRAME_CELL_BYTES * cells
+        };
+        assert_eq!(keyframe_capacity([28, 28, 0]), KEYFRAME_COUNT);
+        for dims in [
+            [512, 512, 0],
+            [1024, 1024, 0],
+            [2048, 2048, 0],
+            [64, 64, 64],
+        ] {
+            assert!(per_cell(dims) <= KEYFRAME_BYTES, "{dims:?}");
+            assert!(keyframe_capacity(dims) >= 1, "{dims:?} keeps its start");
+        }
+        assert_eq!(
+            keyframe_capacity([4096, 4096, 0]),
+            0,
+            "one copy of 16 M cells is over the budget: no keyframe at all"
+        );
+    }
+
+    #[test]
+    fn going_forward_steps_on_from_the_state_at_hand() {
+        let mut p = amas_l();
+        p.advance(100, &mut no_clock());
+        p.seek(40);
+        let hash = {
+            let mut q = amas_l();
+            q.advance(70, &mut no_clock());
+            q.run().state_hash()
+        };
+        p.seek(70);
+        assert_eq!(p.run().steps(), 70);
+        assert_eq!(p.run().state_hash(), hash);
     }
 
     #[test]

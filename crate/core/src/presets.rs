@@ -1,5 +1,6 @@
-//! Built-in scenarios and experiments: one JSON file each under `presets/` and `experiments/` (the
-//! core's, or a model crate's: `crate/models/<model>/presets/`), registered by file name (the lessons under `lessons/` too: see [`crate::lessons`]).
+//! Built-in scenarios and experiments: one JSON file each in a model crate's `presets/` and
+//! `experiments/` (`crate/models/<model>/presets/`, ...), registered by file name (the lessons in
+//! its `lessons/` too: see [`crate::lessons`]).
 
 use crate::error::{Error, Result};
 use crate::scenario::Scenario;
@@ -53,7 +54,12 @@ pub(crate) fn scenario_in(
     kind: &'static str,
     name: &str,
 ) -> Result<Scenario> {
-    Scenario::from_json(lookup(table, kind, name)?).map_err(|e| match e {
+    in_file(kind, name, Scenario::from_json(lookup(table, kind, name)?))
+}
+
+/// A built-in file's scenario, its errors naming the file: which `kind` it is, and its `name`.
+pub(crate) fn in_file(kind: &str, name: &str, read: Result<Scenario>) -> Result<Scenario> {
+    read.map_err(|e| match e {
         Error::Field { path, reason } => {
             Error::field(path, format!("{reason} (in {kind} '{name}')"))
         }
@@ -90,6 +96,7 @@ pub(crate) fn lookup(
 mod tests {
     use super::*;
     use crate::models;
+    use serde_json::Value;
 
     #[test]
     fn every_preset_is_valid_and_named_after_its_file() {
@@ -136,6 +143,31 @@ mod tests {
             assert_eq!(e.name, name);
             assert!(!e.jobs().is_empty());
         }
+    }
+
+    /// What the scenario reader takes as the envelope is the contract's list, which a model
+    /// crate leaves out when it reads one of its own preset files: over the built-in scenarios
+    /// (one with disturbances, exercises, a comparison), the keys written beside the model's own
+    /// are exactly [`models::ENVELOPE`].
+    #[test]
+    fn the_envelope_is_the_contracts_list() {
+        let mut beside = std::collections::BTreeSet::new();
+        for s in names()
+            .map(scenario)
+            .chain(crate::lessons::names().map(crate::lessons::scenario))
+        {
+            let s = s.unwrap();
+            let Value::Object(doc) = s.to_value() else {
+                unreachable!("a scenario is an object")
+            };
+            let body = s.body();
+            beside.extend(doc.keys().filter(|k| !body.contains_key(*k)).cloned());
+            assert!(body.keys().all(|k| models::envelope_role(k).is_none()));
+        }
+        let mut envelope: Vec<String> =
+            models::ENVELOPE.iter().map(|k| k.key.to_string()).collect();
+        envelope.sort();
+        assert_eq!(beside.into_iter().collect::<Vec<_>>(), envelope);
     }
 
     #[test]

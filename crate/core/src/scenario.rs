@@ -27,6 +27,7 @@ use crate::error::{Error, Result};
 use crate::exercise::Exercise;
 use crate::limits::Limits;
 use crate::models::{self, Action, Model, ModelSpec};
+pub use kumiki_model::entry::{envelope_role, EnvelopeKey, Role, ENVELOPE};
 
 /// The scenario format version this build reads and writes.
 pub const FORMAT_VERSION: u64 = 1;
@@ -37,52 +38,6 @@ pub const MAX_STEPS: u64 = 100_000_000;
 /// The longest name and description, in characters: a link's title stays a title.
 pub const MAX_NAME_CHARS: usize = 100;
 pub const MAX_DESCRIPTION_CHARS: usize = 4000;
-
-/// What a key of the envelope is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
-#[serde(rename_all = "lowercase")]
-pub enum Role {
-    /// The format's version and the model: what kind of scenario it is.
-    Format,
-    /// The name and the description: they describe the scenario and change no run.
-    Text,
-    /// A setting of the run: a second run may vary it.
-    Setting,
-    /// A section of its own: the scheduled disturbances, an exercise, a comparison.
-    Section,
-}
-
-/// One key of the envelope, the keys every model's scenario has beside its own.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
-pub struct EnvelopeKey {
-    pub key: &'static str,
-    pub role: Role,
-}
-
-/// The envelope's keys, in the order a form shows them: the one list the comparison's check and
-/// the page (`ENVELOPE` in web/contract.gen.ts) go by, and a test holds the schema's envelope to.
-pub const ENVELOPE: &[EnvelopeKey] = &[
-    EnvelopeKey::new("version", Role::Format),
-    EnvelopeKey::new("model", Role::Format),
-    EnvelopeKey::new("name", Role::Text),
-    EnvelopeKey::new("description", Role::Text),
-    EnvelopeKey::new("max_steps", Role::Setting),
-    EnvelopeKey::new("seed", Role::Setting),
-    EnvelopeKey::new("disturbances", Role::Section),
-    EnvelopeKey::new("exercise", Role::Section),
-    EnvelopeKey::new("compare", Role::Section),
-];
-
-impl EnvelopeKey {
-    const fn new(key: &'static str, role: Role) -> EnvelopeKey {
-        EnvelopeKey { key, role }
-    }
-}
-
-/// The role of `key` when it is an envelope key.
-pub fn envelope_role(key: &str) -> Option<Role> {
-    ENVELOPE.iter().find(|k| k.key == key).map(|k| k.role)
-}
 
 /// A model action scheduled at a step.
 #[derive(Clone, Debug, PartialEq)]

@@ -276,7 +276,7 @@ pub fn contract() -> Value {
     generator.subschema_for::<MetricInfo>();
     generator.subschema_for::<Facts>();
     generator.subschema_for::<crate::exercise::Check>();
-    generator.subschema_for::<crate::exercise::Graded>();
+    generator.subschema_for::<crate::grading::Graded>();
     generator.subschema_for::<crate::scenario::EnvelopeKey>();
     generator.subschema_for::<crate::draft::Proposal>();
     generator.subschema_for::<crate::draft::Comparison>();
@@ -302,7 +302,7 @@ pub fn contract_typescript() -> String {
     out.push_str(&declarations(&contract()));
     let envelope = serde_json::to_string(crate::scenario::ENVELOPE).expect("a table serialises");
     out.push_str(&format!(
-        "\n/** The envelope's keys, in the order a form shows them (kumiki_core::scenario::ENVELOPE). */\nexport const ENVELOPE: EnvelopeKey[] = {envelope};\n"
+        "\n/** The envelope's keys, in the order a form shows them (kumiki_model::entry::ENVELOPE). */\nexport const ENVELOPE: EnvelopeKey[] = {envelope};\n"
     ));
     out
 }
@@ -313,7 +313,7 @@ pub fn spliced() -> Vec<(&'static str, &'static str, String)> {
     vec![(
         "docs/scenario-format.md",
         "limits",
-        crate::limits::markdown_table(),
+        crate::models::limits_markdown(),
     )]
 }
 
@@ -643,7 +643,7 @@ mod tests {
         let amas = &schema["$defs"]["AmasScenario"]["properties"];
         assert_eq!(
             amas["supply_rows"]["maximum"],
-            crate::Limits::PAGE.amas.supply_rows
+            kumiki_amas::limits::LIMITS.page.supply_rows
         );
         assert_eq!(amas["name"]["maxLength"], MAX_NAME_CHARS);
         assert_eq!(amas["max_steps"]["default"], 100_000);

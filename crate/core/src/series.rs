@@ -31,6 +31,8 @@ pub struct Series {
     maxs: Vec<f64>,
     /// The last step recorded.
     last: Option<u64>,
+    /// The metrics in the order [`Series::record_model`] was last given them, with their slots.
+    order: Vec<(&'static str, Option<usize>)>,
 }
 
 /// A metric's values drawn as a band: per point, the first step of its range and the least and
@@ -58,6 +60,7 @@ impl Series {
             mins: Vec::new(),
             maxs: Vec::new(),
             last: None,
+            order: Vec::new(),
         }
     }
 
@@ -87,30 +90,55 @@ impl Series {
     /// Records the metrics at `step`. A step at or before the last one recorded is ignored: after
     /// going back, a run passes through the very same states again.
     pub fn record(&mut self, step: u64, metrics: &Metrics) {
-        self.record_each(step, |f| {
-            for (name, value) in metrics {
-                f(
-                    name,
-                    value
-                        .as_f64()
-                        .or_else(|| value.as_bool().map(|b| f64::from(u8::from(b)))),
-                );
-            }
-        });
+        let Some(at) = self.open(step) else {
+            return;
+        };
+        for (name, value) in metrics {
+            let value = value
+                .as_f64()
+                .or_else(|| value.as_bool().map(|b| f64::from(u8::from(b))));
+            let slot = self.slot_of(name);
+            self.put(at, slot, value);
+        }
+        self.close();
     }
 
     /// [`Series::record`] of the model's metrics as it stands, read one by one
-    /// ([`Model::each_metric`]) without building a map: the page records every step.
+    /// ([`Model::each_metric`]) without building a map: the page records every step. A model
+    /// gives its metrics in the same order each step, so each one's place is looked up by name
+    /// once and then known by its position (checked by the name's address, not its letters).
     pub fn record_model(&mut self, step: u64, model: &dyn Model) {
-        self.record_each(step, |f| {
-            model.each_metric(&mut |name, value| f(name, value.plotted()))
+        let Some(at) = self.open(step) else {
+            return;
+        };
+        let mut position = 0;
+        model.each_metric(&mut |name, value| {
+            let slot = match self.order.get(position) {
+                Some(&(known, slot)) if std::ptr::eq(known, name) => slot,
+                _ => {
+                    let slot = self.slot_of(name);
+                    self.order.truncate(position);
+                    self.order.push((name, slot));
+                    slot
+                }
+            };
+            position += 1;
+            self.put(at, slot, value.plotted());
         });
+        self.close();
     }
 
-    /// Records at `step` the values `feed` gives by name (none for a value with no number).
-    fn record_each(&mut self, step: u64, feed: impl FnOnce(&mut dyn FnMut(&str, Option<f64>))) {
+    /// Where the values of the metric `name` go in a bucket, if it is recorded.
+    fn slot_of(&self, name: &str) -> Option<usize> {
+        // The names are sorted (see `new`).
+        self.names.binary_search_by(|n| n.as_str().cmp(name)).ok()
+    }
+
+    /// Starts recording `step`: the first value of its bucket's slots, opening the bucket when it
+    /// is new; none when the step was recorded already.
+    fn open(&mut self, step: u64) -> Option<usize> {
         if self.last.is_some_and(|last| step <= last) {
-            return;
+            return None;
         }
         self.last = Some(step);
         let key = step / self.span;
@@ -120,16 +148,20 @@ impl Series {
             self.mins.extend(std::iter::repeat_n(f64::NAN, k));
             self.maxs.extend(std::iter::repeat_n(f64::NAN, k));
         }
-        let at = (self.keys.len() - 1) * k;
-        let (names, mins, maxs) = (&self.names, &mut self.mins, &mut self.maxs);
-        feed(&mut |name, value| {
-            // The names are sorted (see `new`).
-            if let (Ok(i), Some(v)) = (names.binary_search_by(|n| n.as_str().cmp(name)), value) {
-                // f64::min and max keep the number when the other side is NaN.
-                mins[at + i] = mins[at + i].min(v);
-                maxs[at + i] = maxs[at + i].max(v);
-            }
-        });
+        Some((self.keys.len() - 1) * k)
+    }
+
+    /// Widens the slot's range in the bucket starting at `at` to hold `value`.
+    fn put(&mut self, at: usize, slot: Option<usize>, value: Option<f64>) {
+        if let (Some(i), Some(v)) = (slot, value) {
+            // f64::min and max keep the number when the other side is NaN.
+            self.mins[at + i] = self.mins[at + i].min(v);
+            self.maxs[at + i] = self.maxs[at + i].max(v);
+        }
+    }
+
+    /// Ends recording a step: merges buckets when more than the capacity are held.
+    fn close(&mut self) {
         if self.keys.len() > self.capacity {
             self.merge_pairs();
         }

@@ -1,38 +1,44 @@
 //! Going back in a run: keyframes, and deterministic replay from the nearest one.
 //!
-//! A [`Timeline`] keeps a copy of the run every `every` steps, at most `capacity` copies. When it
-//! is full it drops every other keyframe and doubles the interval, so the copies cover the whole
-//! run evenly and memory stays at `capacity` model states however long the run grows. Seeking to a
-//! step replays at most `every` steps from the keyframe before it; because runs are deterministic
-//! the state reached is bit-identical to the one first passed through.
+//! A [`Timeline`] keeps a copy of the run every `every` steps, at most `capacity` copies, the
+//! first of them the run's start. When it is full it drops every other keyframe and doubles the
+//! interval, so the copies cover the whole run evenly and memory stays at `capacity` model states
+//! however long the run grows. Seeking to a step replays from the keyframe before it; because runs
+//! are deterministic the state reached is bit-identical to the one first passed through. With a
+//! capacity of 0 (a lattice so large that one copy of its state is over the keyframes' memory
+//! budget) nothing is copied: the start is rebuilt from the scenario and replayed from there.
 
 use crate::run::Run;
 use crate::scenario::Scenario;
 
 pub struct Timeline {
-    /// Keyframes in step order; the first is the run's start.
+    /// Keyframes in step order; the first, when there is one, is the run's start.
     frames: Vec<Run>,
     every: u64,
     capacity: usize,
 }
 
 impl Timeline {
-    /// A timeline whose first keyframe is `start`, keeping at most `capacity` keyframes (at least
-    /// 2), the first `every` steps apart.
+    /// A timeline from `start`, keeping at most `capacity` keyframes (0: none, 1: the start only),
+    /// the first `every` steps apart.
     pub fn new(start: &Run, every: u64, capacity: usize) -> Timeline {
         Timeline {
-            frames: vec![start.snapshot()],
+            frames: if capacity > 0 {
+                vec![start.snapshot()]
+            } else {
+                Vec::new()
+            },
             every: every.max(1),
-            capacity: capacity.max(2),
+            capacity,
         }
     }
 
     /// Call after each step: keeps a keyframe when the run stands on a multiple of the interval
-    /// past the last keyframe, and says whether it did.
+    /// past the last keyframe and there is room for more than the start, and says whether it did.
     pub fn record(&mut self, run: &Run) -> bool {
         let step = run.steps();
         let last = self.frames.last().map_or(0, Run::steps);
-        if step <= last || step % self.every != 0 {
+        if self.capacity < 2 || step <= last || step % self.every != 0 {
             return false;
         }
         self.frames.push(run.snapshot());
@@ -50,13 +56,28 @@ impl Timeline {
         self.frames.retain(|f| f.steps() % every == 0);
     }
 
+    /// The step replaying to `step` starts from: the latest keyframe at or before it, or 0 (the
+    /// start rebuilt from the scenario).
+    pub fn replay_from(&self, step: u64) -> u64 {
+        let i = self.frames.partition_point(|f| f.steps() <= step);
+        i.checked_sub(1).map_or(0, |i| self.frames[i].steps())
+    }
+
     /// The run at `step`, replayed from the latest keyframe at or before it under `scenario`
-    /// (the run's present scenario, with every disturbance clicked since the keyframe). A step
-    /// past the run's end gives its end.
+    /// (the run's present scenario, with every disturbance clicked since the keyframe), or from
+    /// the start rebuilt from `scenario` when there is none. A step past the run's end gives its
+    /// end.
     pub fn seek(&self, step: u64, scenario: &Scenario) -> Run {
-        let i = self.frames.partition_point(|f| f.steps() <= step).max(1) - 1;
-        let mut run = self.frames[i].snapshot();
-        run.reschedule(scenario);
+        let i = self.frames.partition_point(|f| f.steps() <= step);
+        let mut run = match i.checked_sub(1) {
+            Some(i) => {
+                let mut run = self.frames[i].snapshot();
+                run.reschedule(scenario);
+                run
+            }
+            // The scenario built this run once; it builds the same start again.
+            None => Run::new(scenario.clone()).expect("a scenario that was run builds again"),
+        };
         run.advance(step - run.steps());
         run
     }
@@ -114,6 +135,28 @@ mod tests {
                     r.state_hash(),
                     end.state_hash(),
                     "{preset} forward from {back}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn with_no_room_for_a_keyframe_going_back_rebuilds_the_start() {
+        for capacity in [0, 1] {
+            let (end, timeline, hashes) = recorded("amas-L", 120, capacity);
+            assert_eq!(
+                timeline.keyframes().0,
+                capacity,
+                "nothing past the start is kept"
+            );
+            for back in [0, 1, 37, 119, 120] {
+                assert_eq!(timeline.replay_from(back), 0);
+                let r = timeline.seek(back, end.scenario());
+                assert_eq!(r.steps(), back);
+                assert_eq!(
+                    r.state_hash(),
+                    hashes[back as usize],
+                    "capacity {capacity}, step {back}"
                 );
             }
         }

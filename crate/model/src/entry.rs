@@ -1,7 +1,7 @@
-//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, the reader of
-//! its keys, their schemas, its helper calls and its paper), and the object-safe face of its
-//! description ([`AnySpec`]) that a scenario holds whatever the model, with what checking it
-//! learnt ([`Learnt`]).
+//! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, limits, the
+//! reader of its keys, their schemas, its helper calls and its paper), and the object-safe face
+//! of its description ([`AnySpec`]) that a scenario holds whatever the model, with what checking
+//! it learnt ([`Learnt`]).
 
 use std::any::Any;
 use std::sync::Arc;
@@ -9,7 +9,7 @@ use std::sync::Arc;
 use serde_json::{Map, Value};
 
 use crate::error::Result;
-use crate::limits::Limits;
+use crate::limits::{LimitTable, Limits};
 use crate::model::{Action, MetricInfo, Model, Spec};
 
 /// Reads and checks a model's keys within the limits, with the scenario's scheduled actions; see
@@ -29,22 +29,85 @@ pub struct ModelEntry {
     pub model_version: u32,
     /// Every metric the model reports, with unit and meaning; see [`MetricInfo`].
     pub metrics: &'static [MetricInfo],
+    /// Its own sizes under the page's and the large limits, each described once: its
+    /// [`ModelLimits`](crate::limits::ModelLimits).
+    pub limits: &'static dyn LimitTable,
     /// Reads the model's keys of a scenario into its typed description and checks it: [`parse`]
     /// of its [`Spec`].
     pub parse: Parse,
     /// The JSON Schema of those keys ([`schema_of`] its [`Spec`]).
-    #[cfg(feature = "schema")]
-    pub schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub schema: SchemaOf,
     /// The JSON Schema of one of its actions (a disturbance without its `at`).
-    #[cfg(feature = "schema")]
-    pub disturbance: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+    pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
-    /// Its paper's claims for the reproduction report. Left out of builds without the `report`
-    /// feature (the page's wasm, which shows the report's published JSON), so the findings'
-    /// code is not linked there.
-    #[cfg(feature = "report")]
-    pub paper: &'static crate::report::Paper,
+    /// Its paper's claims for the reproduction report ([`paper_of`] its `Paper`).
+    pub paper: PaperOf,
+}
+
+/// A JSON Schema as a [`ModelEntry`] names it: [`schema_of`] a type. A function of the schema
+/// generator in builds with the `schema` feature; nothing in the others (the page's wasm), so the
+/// generator is not linked there. A model crate writes the same entry either way.
+#[cfg(feature = "schema")]
+pub type SchemaOf = fn(&mut schemars::SchemaGenerator) -> schemars::Schema;
+#[cfg(not(feature = "schema"))]
+pub type SchemaOf = ();
+
+/// A paper as a [`ModelEntry`] names it: [`paper_of`] it. The paper in builds with the `report`
+/// feature; nothing in the others, so the findings' code is not linked there.
+#[cfg(feature = "report")]
+pub type PaperOf = &'static crate::report::Paper;
+#[cfg(not(feature = "report"))]
+pub type PaperOf = ();
+
+/// What a key of the envelope is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Role {
+    /// The format's version and the model: what kind of scenario it is.
+    Format,
+    /// The name and the description: they describe the scenario and change no run.
+    Text,
+    /// A setting of the run: a second run may vary it.
+    Setting,
+    /// A section of its own: the scheduled disturbances, an exercise, a comparison.
+    Section,
+}
+
+/// One key of the envelope, the keys every model's scenario has beside its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
+pub struct EnvelopeKey {
+    pub key: &'static str,
+    pub role: Role,
+}
+
+/// The keys of a scenario document that belong to its envelope, common to every model, in the
+/// order a form shows them: the others are the model's own, read by its entry's `parse`. The one
+/// list the core's scenario reader, the comparison's check and the page (`ENVELOPE` in
+/// web/contract.gen.ts) go by; tests in the core hold the scenarios' and the schema's envelope to
+/// it. A model crate that reads one of its own preset files leaves them out to have the model's
+/// keys.
+pub const ENVELOPE: &[EnvelopeKey] = &[
+    EnvelopeKey::new("version", Role::Format),
+    EnvelopeKey::new("model", Role::Format),
+    EnvelopeKey::new("name", Role::Text),
+    EnvelopeKey::new("description", Role::Text),
+    EnvelopeKey::new("max_steps", Role::Setting),
+    EnvelopeKey::new("seed", Role::Setting),
+    EnvelopeKey::new("disturbances", Role::Section),
+    EnvelopeKey::new("exercise", Role::Section),
+    EnvelopeKey::new("compare", Role::Section),
+];
+
+impl EnvelopeKey {
+    const fn new(key: &'static str, role: Role) -> EnvelopeKey {
+        EnvelopeKey { key, role }
+    }
+}
+
+/// The role of `key` when it is an envelope key.
+pub fn envelope_role(key: &str) -> Option<Role> {
+    ENVELOPE.iter().find(|k| k.key == key).map(|k| k.role)
 }
 
 /// A helper call a model offers beside its runs, for editors and the CLI: deriving a target
@@ -121,11 +184,26 @@ pub fn parse<S: Spec + Send + Sync + 'static>(
     Ok((Arc::new(spec), Learnt(Arc::new(checked))))
 }
 
-/// The JSON Schema of `T` as a subschema of `generator`: the `schema` and `disturbance` of a
-/// [`ModelEntry`].
+/// The JSON Schema of `T`, as a subschema of the generator it is given: the `schema` and
+/// `disturbance` of a [`ModelEntry`].
 #[cfg(feature = "schema")]
-pub fn schema_of<T: schemars::JsonSchema>(
-    generator: &mut schemars::SchemaGenerator,
-) -> schemars::Schema {
-    generator.subschema_for::<T>()
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {
+    fn of<T: schemars::JsonSchema>(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        generator.subschema_for::<T>()
+    }
+    of::<T>
 }
+
+/// Without the `schema` feature, nothing.
+#[cfg(not(feature = "schema"))]
+pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {}
+
+/// A model's paper: the `paper` of its [`ModelEntry`].
+#[cfg(feature = "report")]
+pub const fn paper_of(paper: &'static crate::report::Paper) -> PaperOf {
+    paper
+}
+
+/// Without the `report` feature, nothing.
+#[cfg(not(feature = "report"))]
+pub const fn paper_of(_: &'static crate::report::Paper) -> PaperOf {}

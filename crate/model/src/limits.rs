@@ -1,11 +1,14 @@
-//! Every size a scenario may ask for, in one place, per model and lattice.
+//! Every size a scenario may ask for: one bound every model shares (the cells a shape text may
+//! span) and each model's own, declared in its crate ([`ModelLimits`]) and found through its
+//! registry entry.
 //!
 //! Scenarios arrive from links anyone can send, so each size is computed from the text in checked
 //! 64-bit arithmetic and compared with these limits before anything of that size is allocated.
 //! [`Limits::PAGE`] fits what the page can draw and run responsively, and is what every
 //! scenario is read under unless a caller asks otherwise; [`Limits::LARGE`] is for the command
-//! line (`--allow-large`), where a run may take minutes and gigabytes. [`ROWS`] describes each
-//! limit once; `kumiki schema` writes them as the table in `docs/scenario-format.md`.
+//! line (`--allow-large`), where a run may take minutes and gigabytes. A model's sizes come in the
+//! same two scales, and each is described once by a [`LimitRow`]; `kumiki schema` writes them all
+//! as the table in `docs/scenario-format.md`.
 
 /// Limits on what a scenario may ask for. A scenario read under one set of limits keeps them, so
 /// its overrides and its run are checked the same way.
@@ -13,60 +16,15 @@
 pub struct Limits {
     /// The cells a shape text may span (rows padded to the widest), on any lattice.
     pub shape_cells: u64,
-    pub amas: AmasLimits,
-    pub chobie: ChobieLimits,
-    pub cubes3d: Cubes3dLimits,
-    pub fracta: FractaLimits,
+    /// Which of each model's own limits apply ([`ModelLimits::of`]).
+    pub scale: Scale,
 }
 
-/// The square lattice of `amas`.
+/// The two scales of limits: the page's, and the command line's larger ones.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct AmasLimits {
-    /// The largest lattice side, in cells, supply rows included.
-    pub side: u32,
-    /// The most supply rows.
-    pub supply_rows: u32,
-    /// The most stage targets before the final one.
-    pub stages: usize,
-    /// The most cells of all stage targets together (lattice cells × targets).
-    pub stage_cells: u64,
-}
-
-/// The side view of `chobie`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ChobieLimits {
-    /// The largest world side, in cells (the world text plus `extend`).
-    pub side: u32,
-    /// The most robots a world may hold. The stress solve of every step costs about
-    /// robots × (3 × robots across the short side)² operations, so a square block of the page's
-    /// limit takes a fraction of a second per step.
-    pub robots: usize,
-    /// The largest goal, in cells.
-    pub goal: u32,
-}
-
-/// The cubic lattice of `cubes3d`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Cubes3dLimits {
-    /// The largest side of the space, in cells (margin and padding included).
-    pub side: u32,
-    /// The most cells the space may have.
-    pub cells: u64,
-    /// The most units a structure may have.
-    pub units: usize,
-    /// The most targets a scenario may switch between.
-    pub targets: usize,
-}
-
-/// The hex lattice of `fracta`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct FractaLimits {
-    /// The largest lattice side, in cells, margin included.
-    pub side: u32,
-    /// The most units.
-    pub units: usize,
-    /// The widest margin around the start shape.
-    pub margin: u32,
+pub enum Scale {
+    Page,
+    Large,
 }
 
 impl Limits {
@@ -75,131 +33,131 @@ impl Limits {
     /// gives what the page holds and draws at that size).
     pub const PAGE: Limits = Limits {
         shape_cells: 1 << 24,
-        amas: AmasLimits {
-            side: 4096,
-            supply_rows: 64,
-            stages: 64,
-            stage_cells: 1 << 26,
-        },
-        chobie: ChobieLimits {
-            side: 2048,
-            robots: 5_000,
-            goal: 100_000,
-        },
-        cubes3d: Cubes3dLimits {
-            side: 512,
-            cells: 1 << 22,
-            units: 100_000,
-            targets: 16,
-        },
-        fracta: FractaLimits {
-            side: 1024,
-            units: 20_000,
-            margin: 256,
-        },
+        scale: Scale::Page,
     };
 
     /// For the command line (`--allow-large`): sixteen times the page's cells or more, still
     /// within what one machine holds (a few gigabytes at most).
     pub const LARGE: Limits = Limits {
         shape_cells: 1 << 28,
-        amas: AmasLimits {
-            side: 8192,
-            supply_rows: 256,
-            stages: 256,
-            stage_cells: 1 << 28,
-        },
-        chobie: ChobieLimits {
-            side: 8192,
-            robots: 50_000,
-            goal: 1_000_000,
-        },
-        cubes3d: Cubes3dLimits {
-            side: 1024,
-            cells: 1 << 26,
-            units: 1_000_000,
-            targets: 64,
-        },
-        fracta: FractaLimits {
-            side: 4096,
-            units: 200_000,
-            margin: 1024,
-        },
+        scale: Scale::Large,
     };
 }
 
-/// One limit as the documentation tables it: the model (or `every`), what it bounds, and how to
-/// read it from a set of limits.
-pub struct LimitRow {
-    pub model: &'static str,
+/// A model's own limits: its sizes `L` under the page's limits and under the large ones, and one
+/// row per size for the documentation. A model crate declares one and names it in its entry.
+pub struct ModelLimits<L: 'static> {
+    pub page: L,
+    pub large: L,
+    /// Every field of `L`, described once (the model's test checks, with
+    /// [`ModelLimits::reads_each_field_once`], that none is left out).
+    pub rows: &'static [LimitRow<L>],
+}
+
+impl<L> ModelLimits<L> {
+    /// The model's sizes under `limits`.
+    #[inline]
+    pub const fn of(&self, limits: &Limits) -> &L {
+        match limits.scale {
+            Scale::Page => &self.page,
+            Scale::Large => &self.large,
+        }
+    }
+
+    /// Whether the rows read each field of `distinct` exactly once, when its `fields` fields hold
+    /// 1, 2, …, `fields`: written as a struct literal in the model's test, it stops compiling
+    /// when a field is added, and this then fails until the field has its row.
+    pub fn reads_each_field_once(&self, distinct: &L, fields: u64) -> bool {
+        let mut read: Vec<u64> = self.rows.iter().map(|r| (r.read)(distinct)).collect();
+        read.sort_unstable();
+        read == (1..=fields).collect::<Vec<u64>>()
+    }
+}
+
+/// One limit as the documentation tables it: what it bounds, and how to read it from a model's
+/// sizes.
+pub struct LimitRow<L> {
     pub what: &'static str,
-    pub read: fn(&Limits) -> u64,
+    pub read: fn(&L) -> u64,
     /// Written as a power of two (`2^24`) rather than in digits.
     pub power_of_two: bool,
 }
 
-const fn row(model: &'static str, what: &'static str, read: fn(&Limits) -> u64) -> LimitRow {
-    LimitRow {
-        model,
-        what,
-        read,
-        power_of_two: false,
+impl<L> LimitRow<L> {
+    /// A limit written in digits.
+    pub const fn new(what: &'static str, read: fn(&L) -> u64) -> LimitRow<L> {
+        LimitRow {
+            what,
+            read,
+            power_of_two: false,
+        }
+    }
+
+    /// A limit written as a power of two.
+    pub const fn pow2(what: &'static str, read: fn(&L) -> u64) -> LimitRow<L> {
+        LimitRow {
+            what,
+            read,
+            power_of_two: true,
+        }
     }
 }
 
-const fn row_pow2(model: &'static str, what: &'static str, read: fn(&Limits) -> u64) -> LimitRow {
-    LimitRow {
-        model,
-        what,
-        read,
-        power_of_two: true,
+/// A model's limits as the table shows them, whatever the type of its sizes: what a
+/// [`ModelEntry`](crate::entry::ModelEntry) holds.
+pub trait LimitTable: Sync {
+    /// One line per row: what it bounds, the page's value and the large one.
+    fn lines(&self) -> Vec<TableLine>;
+}
+
+impl<L: Sync> LimitTable for ModelLimits<L> {
+    fn lines(&self) -> Vec<TableLine> {
+        self.rows
+            .iter()
+            .map(|r| TableLine {
+                what: r.what,
+                page: (r.read)(&self.page),
+                large: (r.read)(&self.large),
+                power_of_two: r.power_of_two,
+            })
+            .collect()
     }
 }
 
-/// Every field of [`Limits`], described once (a test checks that none is left out).
-pub const ROWS: &[LimitRow] = &[
-    row_pow2(
-        "every",
-        "cells a shape text spans (width × height × layers; rows padded to the widest)",
-        |l| l.shape_cells,
-    ),
-    row("`amas`", "lattice side, supply rows included", |l| {
-        l.amas.side.into()
-    }),
-    row("`amas`", "supply rows", |l| l.amas.supply_rows.into()),
-    row("`amas`", "stage targets before the final one", |l| {
-        l.amas.stages as u64
-    }),
-    row_pow2(
-        "`amas`",
-        "cells of all stage targets together (lattice cells × targets)",
-        |l| l.amas.stage_cells,
-    ),
-    row("`chobie`", "world side (text plus `extend`)", |l| {
-        l.chobie.side.into()
-    }),
-    row("`chobie`", "robots", |l| l.chobie.robots as u64),
-    row("`chobie`", "`goal`, cells", |l| l.chobie.goal.into()),
-    row(
-        "`cubes3d`",
-        "side of the space (shapes, margin and padding)",
-        |l| l.cubes3d.side.into(),
-    ),
-    row_pow2("`cubes3d`", "cells of the space", |l| l.cubes3d.cells),
-    row("`cubes3d`", "units", |l| l.cubes3d.units as u64),
-    row("`cubes3d`", "targets", |l| l.cubes3d.targets as u64),
-    row("`fracta`", "lattice side, margin included", |l| {
-        l.fracta.side.into()
-    }),
-    row("`fracta`", "units", |l| l.fracta.units as u64),
-    row("`fracta`", "`margin`", |l| l.fracta.margin.into()),
-];
+/// One line of the limits table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TableLine {
+    pub what: &'static str,
+    pub page: u64,
+    pub large: u64,
+    /// Written as a power of two (`2^24`) rather than in digits.
+    pub power_of_two: bool,
+}
 
-impl LimitRow {
-    /// The limit under `limits` as the table writes it: `2^k`, or digits with a space between
-    /// thousands from 10 000 on.
-    fn show(&self, limits: &Limits) -> String {
-        let n = (self.read)(limits);
+impl TableLine {
+    /// The line of the bound every model shares.
+    pub fn shape_cells() -> TableLine {
+        TableLine {
+            what: "cells a shape text spans (width × height × layers; rows padded to the widest)",
+            page: Limits::PAGE.shape_cells,
+            large: Limits::LARGE.shape_cells,
+            power_of_two: true,
+        }
+    }
+
+    /// The line as the table writes it, for `model` (`every` or a model's name in backticks).
+    pub fn markdown(&self, model: &str) -> String {
+        format!(
+            "| {model} | {} | {} | {} |\n",
+            self.what,
+            self.show(self.page),
+            self.show(self.large)
+        )
+    }
+
+    /// A value as the table writes it: `2^k`, or digits with a space between thousands from
+    /// 10 000 on.
+    fn show(&self, n: u64) -> String {
         if self.power_of_two && n.is_power_of_two() {
             return format!("2^{}", n.trailing_zeros());
         }
@@ -218,21 +176,6 @@ impl LimitRow {
     }
 }
 
-/// The limits as a Markdown table: one row of [`ROWS`] a line, page and large side by side.
-pub fn markdown_table() -> String {
-    let mut out = String::from("| model | what | page | large |\n| --- | --- | ---: | ---: |\n");
-    for row in ROWS {
-        out.push_str(&format!(
-            "| {} | {} | {} | {} |\n",
-            row.model,
-            row.what,
-            row.show(&Limits::PAGE),
-            row.show(&Limits::LARGE)
-        ));
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -249,66 +192,43 @@ mod tests {
         assert!(crate::shape::parse_square_within(&text, &Limits::LARGE).is_ok());
     }
 
+    #[derive(Clone, Copy)]
+    struct Sizes {
+        side: u32,
+        cells: u64,
+    }
+
+    const SIZES: ModelLimits<Sizes> = ModelLimits {
+        page: Sizes {
+            side: 512,
+            cells: 1 << 22,
+        },
+        large: Sizes {
+            side: 12_345,
+            cells: 1 << 26,
+        },
+        rows: &[
+            LimitRow::new("side", |l| l.side.into()),
+            LimitRow::pow2("cells", |l| l.cells),
+        ],
+    };
+
     #[test]
-    fn the_table_has_a_row_for_every_limit() {
-        // Every field set to its own value: the struct literal fails to compile when a field is
-        // added, and the rows must then read each value exactly once.
-        let distinct = Limits {
-            shape_cells: 1,
-            amas: AmasLimits {
-                side: 2,
-                supply_rows: 3,
-                stages: 4,
-                stage_cells: 5,
-            },
-            chobie: ChobieLimits {
-                side: 6,
-                robots: 7,
-                goal: 8,
-            },
-            cubes3d: Cubes3dLimits {
-                side: 9,
-                cells: 10,
-                units: 11,
-                targets: 12,
-            },
-            fracta: FractaLimits {
-                side: 13,
-                units: 14,
-                margin: 15,
-            },
-        };
-        let mut read: Vec<u64> = ROWS.iter().map(|r| (r.read)(&distinct)).collect();
-        read.sort_unstable();
-        assert_eq!(read, (1..=15).collect::<Vec<u64>>());
+    fn a_model_reads_its_sizes_of_the_scale_in_force() {
+        assert_eq!(SIZES.of(&Limits::PAGE).side, 512);
+        assert_eq!(SIZES.of(&Limits::LARGE).side, 12_345);
+        assert!(SIZES.reads_each_field_once(&Sizes { side: 1, cells: 2 }, 2));
+        assert!(!SIZES.reads_each_field_once(&Sizes { side: 1, cells: 2 }, 3));
     }
 
     #[test]
-    fn the_table_writes_powers_of_two_and_groups_thousands() {
-        let table = markdown_table();
-        assert!(table.contains("| every | cells a shape text spans (width × height × layers; rows padded to the widest) | 2^24 | 2^28 |"), "{table}");
-        assert!(
-            table.contains("| `chobie` | robots | 5000 | 50 000 |"),
-            "{table}"
+    fn a_table_line_writes_powers_of_two_and_groups_thousands() {
+        let lines: Vec<String> = SIZES.lines().iter().map(|l| l.markdown("`m`")).collect();
+        assert_eq!(lines[0], "| `m` | side | 512 | 12 345 |\n");
+        assert_eq!(lines[1], "| `m` | cells | 2^22 | 2^26 |\n");
+        assert_eq!(
+            TableLine::shape_cells().markdown("every"),
+            "| every | cells a shape text spans (width × height × layers; rows padded to the widest) | 2^24 | 2^28 |\n"
         );
-        assert!(
-            table.contains("| `cubes3d` | units | 100 000 | 1 000 000 |"),
-            "{table}"
-        );
-        assert_eq!(table.lines().count(), ROWS.len() + 2);
-    }
-
-    #[test]
-    fn large_allows_at_least_what_the_page_allows() {
-        let (p, l) = (Limits::PAGE, Limits::LARGE);
-        assert!(l.shape_cells >= p.shape_cells);
-        assert!(l.amas.side >= p.amas.side && l.amas.stage_cells >= p.amas.stage_cells);
-        assert!(l.amas.supply_rows >= p.amas.supply_rows && l.amas.stages >= p.amas.stages);
-        assert!(l.chobie.side >= p.chobie.side && l.chobie.robots >= p.chobie.robots);
-        assert!(l.chobie.goal >= p.chobie.goal);
-        assert!(l.cubes3d.side >= p.cubes3d.side && l.cubes3d.cells >= p.cubes3d.cells);
-        assert!(l.cubes3d.units >= p.cubes3d.units && l.cubes3d.targets >= p.cubes3d.targets);
-        assert!(l.fracta.side >= p.fracta.side && l.fracta.units >= p.fracta.units);
-        assert!(l.fracta.margin >= p.fracta.margin);
     }
 }

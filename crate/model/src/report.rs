@@ -13,7 +13,7 @@ use crate::row::Row;
 pub struct Paper {
     pub model: &'static str,
     pub citation: &'static str,
-    /// Built-in experiments (`experiments/<name>.json` of the core or of the model's crate) whose
+    /// Built-in experiments (`experiments/<name>.json` of the model's crate) whose
     /// rows the findings read.
     pub experiments: &'static [&'static str],
     pub findings: fn(&Results) -> Vec<Finding>,

@@ -1,6 +1,6 @@
 //! Classroom exercises: a scenario's `exercise` section (what a teacher asks, the fields students
-//! may not change, the goal a run must meet) and the grading of a hand-in against it. The goal
-//! language is in [`goal`].
+//! may not change, the goal a run must meet). The goal language is in [`goal`]; the grading of a
+//! hand-in against an exercise is in [`crate::grading`].
 
 mod goal;
 
@@ -138,125 +138,6 @@ pub(crate) fn same(a: &Value, b: &Value) -> bool {
     }
 }
 
-/// A graded hand-in: the student's scenario replayed to its end and judged by its exercise.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
-pub struct Grade {
-    pub name: String,
-    pub met: bool,
-    pub because: String,
-    pub completed: bool,
-    pub steps: u64,
-    pub hash: String,
-    /// Locked fields the hand-in changed: "robots: 5 → 7".
-    pub locked_edited: Vec<String>,
-    /// Every field that differs from the teacher's exercise, when it is known (the name, which
-    /// Hand in sets, left out).
-    pub changed: Vec<String>,
-    /// The hand-in's exercise section is not the teacher's (its goal or locks were edited).
-    pub exercise_edited: bool,
-    /// The metrics the goal reads, at the end of the replayed run (the page's Grade view shows
-    /// them; `kumiki check` leaves them out).
-    #[serde(skip)]
-    pub goal_metrics: BTreeMap<String, Value>,
-}
-
-/// A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
-/// it could not be graded.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
-#[serde(untagged)]
-pub enum Graded {
-    Graded {
-        #[serde(flatten)]
-        grade: Grade,
-        /// The metrics the goal reads, at the end of the replayed run.
-        goal_metrics: BTreeMap<String, Value>,
-    },
-    Failed {
-        /// Why the hand-in could not be graded (a bad link, no exercise).
-        error: String,
-    },
-}
-
-impl Graded {
-    pub fn of(graded: Result<Grade>) -> Graded {
-        match graded {
-            Ok(mut grade) => Graded::Graded {
-                goal_metrics: std::mem::take(&mut grade.goal_metrics),
-                grade,
-            },
-            Err(e) => Graded::Failed {
-                error: e.to_string(),
-            },
-        }
-    }
-}
-
-/// Replays a hand-in and judges it by the exercise it carries, or by `original`'s when the
-/// teacher's exercise is given: the hand-in then may not have edited the exercise itself, and
-/// every field that differs from the original is listed. A hand-in with no exercise is an error.
-pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Result<Grade> {
-    let exercise = match original {
-        Some(o) => o.exercise.as_ref().ok_or_else(|| {
-            Error::field("exercise", "the teacher's scenario has no exercise section")
-        })?,
-        None => handin
-            .exercise
-            .as_ref()
-            .ok_or_else(|| Error::field("exercise", "this scenario is not an exercise hand-in"))?,
-    };
-    let mut run = crate::Run::new(handin.clone())?;
-    run.run_to_end();
-    let outcome = run.outcome();
-    let doc = handin.to_value();
-    let check = exercise.goal().check(&Outcome {
-        completed: outcome.completed,
-        steps: outcome.steps,
-        metrics: &outcome.metrics,
-        scenario: &doc,
-    });
-    let locked_edited = crate::grading::locked_edits(exercise, &doc);
-    let (changed, exercise_edited) = match original {
-        // The name is left out: Hand in writes the student's name into it.
-        Some(o) => (
-            differences(&o.to_value(), &doc)
-                .into_iter()
-                .filter(|p| !p.starts_with("exercise") && p != "name")
-                .collect(),
-            handin.exercise.as_ref() != Some(exercise),
-        ),
-        None => (Vec::new(), false),
-    };
-    let mut because = check.because;
-    if !locked_edited.is_empty() {
-        because = format!(
-            "the hand-in changed locked fields ({}); {because}",
-            locked_edited.join(", ")
-        );
-    }
-    if exercise_edited {
-        because = format!("the hand-in edited the exercise itself; {because}");
-    }
-    let goal_metrics = exercise
-        .goal()
-        .names()
-        .iter()
-        .filter_map(|n| n.strip_prefix("metrics."))
-        .filter_map(|m| Some((m.to_string(), outcome.metrics.get(m)?.clone())))
-        .collect();
-    Ok(Grade {
-        goal_metrics,
-        name: handin.name.clone(),
-        met: check.met && !exercise_edited && locked_edited.is_empty(),
-        because,
-        completed: outcome.completed,
-        steps: outcome.steps,
-        hash: outcome.hash,
-        locked_edited,
-        changed,
-        exercise_edited,
-    })
-}
-
 /// The value at a dotted path (`stages.0.robots`) of a JSON document.
 pub fn lookup_path<'a>(doc: &'a Value, path: &str) -> Option<&'a Value> {
     path.split('.').try_fold(doc, |here, seg| match here {
@@ -339,51 +220,6 @@ mod tests {
             differences(&s.to_value(), &edited.to_value()),
             vec!["robots"]
         );
-    }
-
-    #[test]
-    fn grading_replays_the_hand_in_and_reports_what_changed() {
-        let doc = exercise_doc(json!({
-            "title": "Build it",
-            "locked": {"robots": 5},
-            "goal": "completed and steps <= 100000"
-        }));
-        let teacher = crate::Scenario::from_value(doc).unwrap();
-        let fair = teacher.with_override("collision", json!("relay")).unwrap();
-        let g = grade(&fair, Some(&teacher)).unwrap();
-        assert!(g.met, "{}", g.because);
-        assert!(g.completed && g.steps > 0 && g.hash.len() == 16);
-        assert_eq!(g.changed, vec!["collision"]);
-        assert!(g.locked_edited.is_empty() && !g.exercise_edited);
-        // The same run as replaying the link by hand.
-        let mut run = crate::Run::new(fair.clone()).unwrap();
-        run.run_to_end();
-        assert_eq!(g.hash, run.outcome().hash);
-
-        let tampered = teacher.with_override("robots", json!(9)).unwrap();
-        let g = grade(&tampered, None).unwrap();
-        assert_eq!(g.locked_edited, vec!["robots: 5 → 9"]);
-        assert!(!g.met);
-        assert!(
-            g.because
-                .starts_with("the hand-in changed locked fields (robots: 5 → 9); "),
-            "{}",
-            g.because
-        );
-
-        let mut cheat = fair.clone();
-        cheat.exercise.as_mut().unwrap().goal = "true".into();
-        let g = grade(&cheat, Some(&teacher)).unwrap();
-        assert!(g.exercise_edited && !g.met);
-        assert!(g
-            .because
-            .starts_with("the hand-in edited the exercise itself"));
-
-        let plain = crate::presets::scenario("amas-L").unwrap();
-        assert!(grade(&plain, None)
-            .unwrap_err()
-            .to_string()
-            .contains("not an exercise"));
     }
 
     #[test]

@@ -1,5 +1,6 @@
-//! The registry of models, one module per model, and a scenario's description whatever its
-//! model ([`ModelSpec`]).
+//! The registry of models ([`MODELS`], one line a model, each a crate of its own under
+//! `crate/models/`), what is found through it, and a scenario's description whatever its model
+//! ([`ModelSpec`]).
 //!
 //! The interface a model implements ([`Model`], [`Spec`], [`Layout`], ...) and its registry entry
 //! ([`ModelEntry`]) are the contract crate's, [`kumiki_model::model`] and [`kumiki_model::entry`],
@@ -13,12 +14,10 @@ pub use kumiki_model::entry::*;
 pub use kumiki_model::model::*;
 
 use crate::error::{Error, Result};
-use crate::limits::Limits;
+use crate::limits::{Limits, TableLine};
 
-pub mod amas;
-pub mod chobie;
-pub mod fracta;
-
+#[cfg(test)]
+mod docs_tests;
 #[cfg(test)]
 mod metrics_tests;
 mod registry;
@@ -56,6 +55,19 @@ pub fn metrics_markdown() -> String {
                 i.unit,
                 i.about.replace('|', "\\|")
             ));
+        }
+    }
+    out
+}
+
+/// The limits as a Markdown table (docs/scenario-format.md, written by `kumiki schema`): the bound
+/// every model shares, then each model's own in registry order, page and large side by side.
+pub fn limits_markdown() -> String {
+    let mut out = String::from("| model | what | page | large |\n| --- | --- | ---: | ---: |\n");
+    out.push_str(&TableLine::shape_cells().markdown("every"));
+    for m in MODELS {
+        for line in m.limits.lines() {
+            out.push_str(&line.markdown(&format!("`{}`", m.name)));
         }
     }
     out

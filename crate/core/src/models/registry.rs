@@ -2,11 +2,11 @@
 //! its [`ModelEntry`] here; the scenario reader, the schemas, the metrics table, the helper calls,
 //! the reproduction report and the gallery's titles all find it through this list.
 
-use super::{amas, chobie, fracta, ModelEntry};
+use super::ModelEntry;
 
 pub const MODELS: &[ModelEntry] = &[
-    amas::ENTRY,
-    chobie::ENTRY,
+    kumiki_amas::ENTRY,
+    kumiki_chobie::ENTRY,
     kumiki_cubes3d::ENTRY,
-    fracta::ENTRY,
+    kumiki_fracta::ENTRY,
 ];

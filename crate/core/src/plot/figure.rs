@@ -1,15 +1,19 @@
 //! What a plot draws, computed from the rows: panels of series of points (the statistic, its
 //! spread and n at each x), axis labels with units, legends in words, and the statistic and
-//! spread named in words from the spec. The SVG ([`super::svg`]) draws exactly this, and the
-//! tests check that each point is the statistic the figure names.
+//! spread named in words from the spec (the rows' values are read by `values.rs`, the words
+//! come from `labels.rs`). The SVG ([`super::svg`]) draws exactly this, and the tests check that
+//! each point is the statistic the figure names.
 
 use std::collections::BTreeMap;
 
 use schemars::JsonSchema;
 use serde::Serialize;
-use serde_json::Value;
 
+use super::labels::{
+    axis_label, condition_words, facet_title, name_of, spread_words, statistic_words, unit_of,
+};
 use super::stats::{Comparison, Stats};
+use super::values::{group_by, num_at, sampled, value_at, words};
 use super::{statistic_of, Carry, PlotSpec, Spread, Statistic, Where};
 use crate::experiment::Row;
 
@@ -92,95 +96,6 @@ pub struct ComparisonRow {
     pub comparison: Comparison,
 }
 
-/// A value of a row by path: `steps`, `params.robots`, `metrics.total_steps`.
-pub fn value_at<'a>(row: &'a Row, path: &str) -> Option<std::borrow::Cow<'a, Value>> {
-    use std::borrow::Cow;
-    if let Some(k) = path.strip_prefix("params.") {
-        return row.params.get(k).map(Cow::Borrowed);
-    }
-    if let Some(k) = path.strip_prefix("metrics.") {
-        return row.metrics.get(k).map(Cow::Borrowed);
-    }
-    Some(Cow::Owned(match path {
-        "scenario" => row.scenario.clone().into(),
-        "seed" => row.seed.into(),
-        "completed" => row.completed.into(),
-        "steps" => row.steps.into(),
-        "hash" => row.hash.clone().into(),
-        _ => return None,
-    }))
-}
-
-/// The number a value plots as: a flag as 0 or 1, anything else not a number as NaN.
-pub fn number(v: Option<&Value>) -> f64 {
-    match v {
-        Some(Value::Number(n)) => n.as_f64().unwrap_or(f64::NAN),
-        Some(Value::Bool(b)) => f64::from(u8::from(*b)),
-        _ => f64::NAN,
-    }
-}
-
-fn num_at(row: &Row, path: &str) -> f64 {
-    number(value_at(row, path).as_deref())
-}
-
-/// A value in words: a flag as on/off, text as itself, a number as written.
-pub fn words(v: Option<&Value>) -> String {
-    match v {
-        None | Some(Value::Null) => "none".into(),
-        Some(Value::Bool(true)) => "on".into(),
-        Some(Value::Bool(false)) => "off".into(),
-        Some(Value::String(s)) => s.clone(),
-        Some(other) => other.to_string(),
-    }
-}
-
-/// A path's name in words: `params.tip_load` is "tip load", `params.disturbances.0.count`
-/// "disturbances 0 count".
-pub fn name_of(path: &str) -> String {
-    let short = path
-        .strip_prefix("params.")
-        .or_else(|| path.strip_prefix("metrics."))
-        .unwrap_or(path);
-    short.replace(['_', '.'], " ")
-}
-
-/// The unit of a path, from the models' metric tables (the first model that has the metric).
-pub fn unit_of(path: &str, models: &[&str]) -> Option<&'static str> {
-    if path == "steps" {
-        return Some("steps");
-    }
-    let name = path.strip_prefix("metrics.")?;
-    models
-        .iter()
-        .find_map(|m| crate::models::metric_info(m, name))
-        .map(|i| i.unit)
-}
-
-/// An axis label: the spec's, or the path's name; with the unit in brackets unless it says it.
-fn axis_label(given: Option<&str>, path: &str, models: &[&str]) -> String {
-    let label = given.map_or_else(|| name_of(path), str::to_string);
-    match unit_of(path, models) {
-        Some(unit) if !label.contains(unit) => format!("{label} [{unit}]"),
-        _ => label,
-    }
-}
-
-fn group_by<'a>(rows: &[&'a Row], path: Option<&str>) -> Vec<(String, Vec<&'a Row>)> {
-    let Some(path) = path else {
-        return vec![(String::new(), rows.to_vec())];
-    };
-    let mut order: Vec<(String, Vec<&Row>)> = Vec::new();
-    for r in rows {
-        let k = words(value_at(r, path).as_deref());
-        match order.iter_mut().find(|(key, _)| *key == k) {
-            Some((_, list)) => list.push(r),
-            None => order.push((k, vec![r])),
-        }
-    }
-    order
-}
-
 /// The statistic and band of `values` as the figure draws them.
 pub fn point_of(
     values: &[f64],
@@ -200,25 +115,6 @@ pub fn point_of(
         Spread::Iqr => Some([s.q1, s.q3]),
     };
     Some((y, band, s.n))
-}
-
-/// "mean", "median".
-pub fn statistic_words(s: Statistic) -> &'static str {
-    match s {
-        Statistic::Mean => "mean",
-        Statistic::Median => "median",
-    }
-}
-
-/// The spread in words, as the figure names it.
-pub fn spread_words(s: Spread) -> &'static str {
-    match s {
-        Spread::None => "",
-        Spread::Minmax => "min to max",
-        Spread::Sd => "± one standard deviation (clipped to the runs' range)",
-        Spread::Ci95 => "95% confidence interval",
-        Spread::Iqr => "interquartile range",
-    }
 }
 
 /// "3 runs", "3 to 10 runs", from the points' n.
@@ -565,20 +461,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
     f
 }
 
-/// A condition in words: "adaptation: on, tip load: 2".
-pub fn condition_words(group: &[String], key: &[String]) -> String {
-    group
-        .iter()
-        .zip(key)
-        .map(|(g, v)| format!("{}: {v}", name_of(g)))
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-fn facet_title(path: Option<&str>, value: &str) -> String {
-    path.map_or(String::new(), |p| format!("{}: {value}", name_of(p)))
-}
-
 fn described(statistic: Statistic, spread: Spread, panels: &[Panel], per: &str) -> String {
     let spread = match spread {
         Spread::None => String::new(),
@@ -589,27 +471,6 @@ fn described(statistic: Statistic, spread: Spread, panels: &[Panel], per: &str) 
         statistic_words(statistic),
         runs_words(panels)
     )
-}
-
-/// A run's traced value at each of `steps`: its last sample at or before the step; after its
-/// last sample, that sample with `carry`, else NaN.
-fn sampled(row: &Row, metric: &str, steps: &[u64], carry: bool) -> Vec<f64> {
-    let t = row.trace.as_ref().expect("traced rows only");
-    let values = t.values.get(metric).and_then(Value::as_array);
-    let mut out = Vec::with_capacity(steps.len());
-    let mut j = 0;
-    for &step in steps {
-        while j + 1 < t.step.len() && t.step[j + 1] <= step {
-            j += 1;
-        }
-        let beyond = t.step.last().is_some_and(|&l| step > l);
-        let v = match (t.step.get(j), values) {
-            (Some(&at), Some(vs)) if at <= step && (carry || !beyond) => number(vs.get(j)),
-            _ => f64::NAN,
-        };
-        out.push(v);
-    }
-    out
 }
 
 /// An f64 key in x order (NaN never enters).

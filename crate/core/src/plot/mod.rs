@@ -6,10 +6,12 @@
 //! same figures from the same code.
 
 pub mod figure;
+mod labels;
 pub mod stats;
 pub mod svg;
 #[cfg(test)]
 mod tests;
+mod values;
 
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};

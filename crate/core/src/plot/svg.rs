@@ -5,7 +5,8 @@
 
 use std::fmt::Write;
 
-use super::figure::{spread_words, statistic_words, Figure, FigureKind, Panel};
+use super::figure::{Figure, FigureKind, Panel};
+use super::labels::{name_of, spread_words, statistic_words};
 use super::Spread;
 
 pub const COLORS: [&str; 10] = [
@@ -398,8 +399,8 @@ fn summary(out: &mut String, f: &Figure, mut y: f64) -> f64 {
         y += 16.0;
         let cond = r.condition.join(", ");
         let value = match r.unit.as_str() {
-            "" => super::figure::name_of(&r.value),
-            u => format!("{} [{u}]", super::figure::name_of(&r.value)),
+            "" => name_of(&r.value),
+            u => format!("{} [{u}]", name_of(&r.value)),
         };
         let cells = match &r.stats {
             Some(s) => vec![
@@ -421,7 +422,7 @@ fn summary(out: &mut String, f: &Figure, mut y: f64) -> f64 {
         let k = &c.comparison;
         let text = format!(
             "{}: {} vs {}: difference {}, Cohen's d {}, rank-biserial {}, Mann-Whitney U {} (p = {}, {})",
-            super::figure::name_of(&c.value),
+            name_of(&c.value),
             c.conditions[0],
             c.conditions[1],
             short_number(k.difference),

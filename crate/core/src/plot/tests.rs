@@ -3,7 +3,9 @@
 
 use serde_json::{json, Map, Value};
 
-use super::figure::{figures, name_of, value_at, words, Figure};
+use super::figure::{figures, Figure};
+use super::labels::name_of;
+use super::values::{value_at, words};
 use super::{statistic_of, PlotSpec, Spread, Statistic};
 use crate::experiment::{Experiment, Row, Trace};
 use crate::presets;
@@ -164,32 +166,23 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
                 None,
             )
         }
-        PlotSpec::Trace(s) => {
-            let sp = s.spread.unwrap_or(Spread::Sd);
-            let st = statistic_of(s.statistic, sp);
-            assert_eq!((f.statistic, f.spread), (Some(st), Some(sp)), "{at}");
-            assert!(
-                f.described.starts_with(super::figure::statistic_words(st)),
-                "{at}: {}",
-                f.described
-            );
-            return;
-        }
-        _ => return,
+        PlotSpec::Trace(s) => return check_trace(&at, s, f, rows),
+        PlotSpec::Histogram(s) => return check_histogram(&at, s, f, rows),
+        PlotSpec::Summary(s) => return check_summary(&at, s, f, rows),
     };
     assert_eq!(
         (f.statistic, f.spread),
         (Some(statistic), Some(spread)),
         "{at}"
     );
-    let words_of = super::figure::statistic_words(statistic);
+    let words_of = super::labels::statistic_words(statistic);
     assert!(
         f.described.starts_with(words_of),
         "{at}: '{}' does not start with {words_of}",
         f.described
     );
     assert!(
-        f.described.contains(super::figure::spread_words(spread)),
+        f.described.contains(super::labels::spread_words(spread)),
         "{at}: '{}'",
         f.described
     );
@@ -219,9 +212,9 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
                         PlotSpec::Bars(_) => {
                             words(value_at(r, x).as_deref()) == p.categories[pt.x as usize]
                         }
-                        _ => super::figure::number(value_at(r, x).as_deref()) == pt.x,
+                        _ => super::values::number(value_at(r, x).as_deref()) == pt.x,
                     })
-                    .map(|r| super::figure::number(value_at(r, y).as_deref()))
+                    .map(|r| super::values::number(value_at(r, y).as_deref()))
                     .collect();
                 let n = values.iter().filter(|v| v.is_finite()).count();
                 assert_eq!(pt.n, n, "{at}: n at x = {}", pt.x);
@@ -250,15 +243,209 @@ fn check(e: &Experiment, spec: &PlotSpec, f: &Figure, rows: &[Row]) {
         }
     }
     assert!(drawn > 0, "{at}: nothing drawn");
-    let (lo, hi) = (ns.iter().min().unwrap(), ns.iter().max().unwrap());
-    let said = match lo == hi {
-        true => format!("n = {lo} run"),
-        false => format!("n = {lo} to {hi} runs"),
-    };
+    let said = runs_said(&ns);
     assert!(
         f.described.contains(&said),
         "{at}: '{}' should say {said}",
         f.described
+    );
+}
+
+/// "n = 10 runs", "n = 3 to 10 runs": what a figure says of the points' n.
+fn runs_said(ns: &[usize]) -> String {
+    let (lo, hi) = (ns.iter().min().unwrap(), ns.iter().max().unwrap());
+    match lo == hi {
+        true => format!("n = {lo} run"),
+        false => format!("n = {lo} to {hi} runs"),
+    }
+}
+
+/// A run's traced value at `step`, worked out plainly: its last sample at or before the step;
+/// past its last sample, that sample when the spec carries it, else none.
+fn traced_at(row: &Row, metric: &str, step: u64, carry: bool) -> f64 {
+    let t = row.trace.as_ref().unwrap();
+    let Some(i) = t.step.iter().rposition(|&s| s <= step) else {
+        return f64::NAN;
+    };
+    if !carry && step > *t.step.last().unwrap() {
+        return f64::NAN;
+    }
+    super::values::number(t.values[metric].as_array().unwrap().get(i))
+}
+
+/// A trace draws at each step the statistic over the runs' values at that step.
+fn check_trace(at: &str, s: &super::Trace, f: &Figure, rows: &[Row]) {
+    let spread = s.spread.unwrap_or(Spread::Sd);
+    let statistic = statistic_of(s.statistic, spread);
+    let carry = s.carry.unwrap_or(super::Carry::Last) == super::Carry::Last;
+    assert_eq!(
+        (f.statistic, f.spread),
+        (Some(statistic), Some(spread)),
+        "{at}"
+    );
+    let words_of = super::labels::statistic_words(statistic);
+    assert!(
+        f.described.starts_with(words_of)
+            && f.described.contains(super::labels::spread_words(spread)),
+        "{at}: '{}'",
+        f.described
+    );
+    let mut ns = Vec::new();
+    for p in &f.panels {
+        for series in &p.series {
+            let runs: Vec<&Row> = rows
+                .iter()
+                .filter(|r| {
+                    s.facet.as_deref().is_none_or(|fp| {
+                        format!("{}: {}", name_of(fp), words(value_at(r, fp).as_deref())) == p.title
+                    })
+                })
+                .filter(|r| matches(r, s.series.as_deref(), &series.label))
+                .collect();
+            assert!(
+                !series.points.is_empty(),
+                "{at}: {} draws nothing",
+                series.label
+            );
+            for pt in &series.points {
+                let values: Vec<f64> = runs
+                    .iter()
+                    .map(|r| traced_at(r, &s.y, pt.x as u64, carry))
+                    .collect();
+                let n = values.iter().filter(|v| v.is_finite()).count();
+                assert_eq!(pt.n, n, "{at}: n at step {}", pt.x);
+                let (want, band) = expected(&values, statistic, spread);
+                assert!(
+                    close(pt.y, want),
+                    "{at}: {} at step {} is {} but the {words_of} is {want}",
+                    series.label,
+                    pt.x,
+                    pt.y
+                );
+                let (a, b) = (pt.band.unwrap(), band.unwrap());
+                assert!(
+                    close(a[0], b[0]) && close(a[1], b[1]),
+                    "{at}: band {a:?} is not {b:?} at step {}",
+                    pt.x
+                );
+                ns.push(n);
+            }
+        }
+    }
+    let said = runs_said(&ns);
+    assert!(
+        f.described.contains(&said),
+        "{at}: '{}' should say {said}",
+        f.described
+    );
+}
+
+/// A histogram counts every run it says it counts, each in the bin that holds its value.
+fn check_histogram(at: &str, s: &super::Histogram, f: &Figure, rows: &[Row]) {
+    let bins = s.bins.unwrap_or(20) as usize;
+    let counted: Vec<&Row> = rows
+        .iter()
+        .filter(|r| s.only != Some(super::Where::Completed) || r.completed)
+        .collect();
+    let mut total = 0;
+    for p in &f.panels {
+        let values: Vec<f64> = counted
+            .iter()
+            .filter(|r| {
+                s.series.as_deref().is_none_or(|sp| {
+                    format!("{}: {}", name_of(sp), words(value_at(r, sp).as_deref())) == p.title
+                })
+            })
+            .map(|r| super::values::number(value_at(r, &s.value).as_deref()))
+            .filter(|v| v.is_finite())
+            .collect();
+        let points = &p.series[0].points;
+        assert_eq!(points.len(), bins, "{at}: {bins} bins");
+        let width = p.bin_width.unwrap();
+        assert_eq!(
+            points.iter().map(|pt| pt.n).sum::<usize>(),
+            values.len(),
+            "{at}: every run in {} is in a bin",
+            p.title
+        );
+        for (i, pt) in points.iter().enumerate() {
+            let (lo, hi) = (pt.x - width / 2.0, pt.x + width / 2.0);
+            let last = i + 1 == points.len();
+            let inside = values
+                .iter()
+                .filter(|&&v| {
+                    v >= lo - 1e-9 * lo.abs() && (v < hi || last && v <= hi + 1e-9 * hi.abs())
+                })
+                .count();
+            assert_eq!(pt.n, inside, "{at}: the bin at {} counts its runs", pt.x);
+            assert_eq!(pt.y, pt.n as f64, "{at}: a bar's height is its count");
+        }
+        total += values.len();
+    }
+    assert!(
+        f.described
+            .contains(&format!("{bins} bins; n = {total} runs")),
+        "{at}: '{}' should say {bins} bins and n = {total}",
+        f.described
+    );
+}
+
+/// A summary's row is the statistics of its condition's runs.
+fn check_summary(at: &str, s: &super::Summary, f: &Figure, rows: &[Row]) {
+    let group = s.group.clone().unwrap_or_else(|| vec!["scenario".into()]);
+    let values = s.values.clone().unwrap_or_else(|| vec!["steps".into()]);
+    assert!(!f.table.is_empty(), "{at}: an empty table");
+    let mut seen = 0;
+    for row in &f.table {
+        let runs: Vec<&Row> = rows
+            .iter()
+            .filter(|r| {
+                group
+                    .iter()
+                    .zip(&row.condition)
+                    .all(|(g, v)| words(value_at(r, g).as_deref()) == *v)
+            })
+            .collect();
+        assert_eq!(row.runs, runs.len(), "{at}: runs of {:?}", row.condition);
+        assert_eq!(
+            row.completed,
+            runs.iter().filter(|r| r.completed).count(),
+            "{at}"
+        );
+        let xs: Vec<f64> = runs
+            .iter()
+            .map(|r| super::values::number(value_at(r, &row.value).as_deref()))
+            .collect();
+        let stats = row.stats.unwrap();
+        assert_eq!(stats.n, xs.iter().filter(|v| v.is_finite()).count(), "{at}");
+        let (mean, ci) = expected(&xs, Statistic::Mean, Spread::Ci95);
+        let (median, iqr) = expected(&xs, Statistic::Median, Spread::Iqr);
+        let (ci, iqr) = (ci.unwrap(), iqr.unwrap());
+        assert!(
+            close(stats.mean, mean) && close(stats.median, median),
+            "{at}: {:?} {}",
+            row.condition,
+            row.value
+        );
+        if stats.n > 1 {
+            assert!(
+                close(stats.ci95[0], ci[0]) && close(stats.ci95[1], ci[1]),
+                "{at}"
+            );
+        }
+        assert!(close(stats.q1, iqr[0]) && close(stats.q3, iqr[1]), "{at}");
+        seen += 1;
+    }
+    let conditions = seen / values.len();
+    assert_eq!(
+        seen,
+        conditions * values.len(),
+        "{at}: each condition gives every value"
+    );
+    assert_eq!(
+        f.comparisons.len(),
+        if conditions == 2 { values.len() } else { 0 },
+        "{at}: two conditions are compared, value by value"
     );
 }
 

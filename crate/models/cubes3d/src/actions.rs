@@ -127,6 +127,12 @@ impl Cubes {
                 format!("removing the unit in cell {i} would split the structure"),
             ));
         }
+        if !self.st.plane_holds(i) {
+            return Err(Error::field(
+                "cells",
+                format!("the unit in cell {i} is the last one the ground plane holds"),
+            ));
+        }
         self.vacate(i);
         self.st.remove(i);
         self.after_change(&[i]);

@@ -1,5 +1,6 @@
 //! Rule 4 of the pairwise motion (see [`super::motion`]): does the structure stay connected when
-//! a unit is lifted out and its carrier lets go of every bond off its axis?
+//! a unit is lifted out and its carrier lets go of every bond off its axis? And the positions a
+//! unit can reach by moves that keep all four rules ([`Structure::reachable`]).
 //!
 //! A search limited to the 5×5×5 cells around the carrier settles almost every case (short
 //! cycles); only when it cannot join all the released units does a search over the structure
@@ -90,6 +91,50 @@ impl Scratch {
 }
 
 impl Structure {
+    /// The reachable positions of the unit at `p` (rules 1 to 5 of [`super::motion`]), in
+    /// a fixed order: carriers by direction from p, then axes, then senses. Left in `s.moves`.
+    pub fn reachable(&self, p: usize, s: &mut Scratch) {
+        s.moves.clear();
+        if !self.plane_holds(p) {
+            return;
+        }
+        let mut pending = [0u32; 2];
+        for k in 0..6 {
+            let q = self.nb(p, k);
+            if !self.occupied(q) {
+                continue;
+            }
+            let bond_axis = k / 2;
+            for a in 0..3 {
+                if a == bond_axis {
+                    continue;
+                }
+                if !self.supported(q, a) {
+                    continue;
+                }
+                let b = 3 - bond_axis - a;
+                let mut n = 0;
+                for f in [2 * b, 2 * b + 1] {
+                    let dest = self.nb(q, f);
+                    if self.wall[dest] || self.occupied(dest) || self.occupied(self.nb(p, f)) {
+                        continue;
+                    }
+                    pending[n] = dest as u32;
+                    n += 1;
+                }
+                if n > 0 && self.stays_connected(p, Some((q, a)), s) {
+                    for &dest in &pending[..n] {
+                        s.moves.push(Move {
+                            dest,
+                            carrier: q as u32,
+                            axis: a as u8,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
     /// Is the edge from `x` in direction `dir` usable once `p` is lifted and, with a carrier
     /// `(q, a)`, q has let go of every bond off the axis `a`?
     #[inline]

@@ -30,7 +30,7 @@ impl Cubes {
             [dims[0] - PAD, dims[1] - PAD, dims[2] - PAD],
         );
         if matches!(spec.ground, Ground::Fixed | Ground::Anchor) {
-            st.plane = Some(PAD as i32);
+            st.hold_on_plane(PAD as i32);
         }
         let place = |st: &Structure, g: &Grid3| -> Vec<usize> {
             typelist::grid_units(g)
@@ -102,6 +102,8 @@ impl Cubes {
             rng: Rng::stream(seed, 1),
             steps: 0,
             moves: 0,
+            moves_toward: 0,
+            moves_away: 0,
             zero: 0,
             start_light: 0.0,
             scratch: Scratch::default(),

@@ -22,7 +22,6 @@ use serde_json::{Map, Value};
 use kumiki_model::entry::{self, ModelEntry, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
-use kumiki_model::limits::Limits;
 use kumiki_model::math;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
@@ -32,6 +31,7 @@ mod choose;
 pub mod connect;
 mod init;
 mod light;
+pub mod limits;
 pub mod metrics;
 pub mod motion;
 pub mod paper;
@@ -53,13 +53,12 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
-    model_version: 3,
+    model_version: 4,
     metrics: metrics::METRICS,
+    limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
-    #[cfg(feature = "schema")]
-    schema: entry::schema_of::<Spec>,
-    #[cfg(feature = "schema")]
-    disturbance: entry::schema_of::<actions::ActionSpec>,
+    schema: entry::schema_of::<Spec>(),
+    disturbance: entry::schema_of::<actions::ActionSpec>(),
     queries: &[
         Query {
             name: "derive",
@@ -72,12 +71,11 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
-    #[cfg(feature = "report")]
-    paper: &paper::PAPER,
+    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.
-const MAX_TARGETS: usize = Limits::LARGE.cubes3d.targets;
+const MAX_TARGETS: usize = crate::limits::LIMITS.large.targets;
 
 /// Event kinds.
 const ARRIVED: u8 = 0;
@@ -145,6 +143,9 @@ pub struct Cubes {
     rng: Rng,
     steps: u64,
     moves: u64,
+    /// With a light: moves that ended nearer the light, and moves that ended farther from it.
+    moves_toward: u64,
+    moves_away: u64,
     /// Units whose D_0 is exactly 0.
     zero: usize,
     /// Centre of mass along the light at the start.

@@ -18,4 +18,6 @@ pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("target", "index", "With two or more targets: the one most units hold, counting from 0."),
     MetricInfo::new("switches", "count", "With two or more targets: target switches made by units, all together."),
     MetricInfo::new("displacement", "cells", "With a light: how far the centre of mass has moved toward the light since the start."),
+    MetricInfo::new("moves_toward", "count", "With a light: unit motions that ended nearer the light than they began."),
+    MetricInfo::new("moves_away", "count", "With a light: unit motions that ended farther from the light than they began; the rest went across it."),
 ];

@@ -9,13 +9,15 @@
 //! 3. the swing hits no unit: the cell p + f, the corner P sweeps through, is empty;
 //! 4. nothing else is carried and the structure stays connected: P lets go of every other bond,
 //!    Q lets go of every bond not on the axis except the one to P, and every unit must still be
-//!    held by the rest of the structure during the swing (so also after it).
+//!    held by the rest of the structure during the swing (so also after it);
+//! 5. on a holding ground plane, the structure stays fixed to it: a unit other than P still
+//!    touches it.
 //!
-//! Rule 4 is checked exactly, in [`super::connect`].
+//! Rule 4 is checked exactly, in [`super::connect`], which also lists the positions a unit can
+//! reach by such moves.
 
 use std::sync::Arc;
 
-use super::connect::Scratch;
 use super::types::TYPE_OF_MASK;
 
 /// Empty cells around the space: units stay this far from the edge of the cell buffer, so
@@ -52,8 +54,10 @@ pub struct Structure {
     /// the start, so shared by every copy (keyframe) of the structure.
     pub wall: Arc<[bool]>,
     /// A ground plane that holds the units touching it, under the layer z = this: it is a
-    /// support on the vertical axis of every unit in that layer.
+    /// support on the vertical axis of every unit in that layer. Set with [`Structure::hold_on_plane`].
     pub plane: Option<i32>,
+    /// Units in the layer on the plane (0 without one).
+    pub on_plane: u32,
 }
 
 impl Structure {
@@ -76,6 +80,33 @@ impl Structure {
             types: vec![0; len],
             wall: wall.into(),
             plane: None,
+            on_plane: 0,
+        }
+    }
+
+    /// A ground plane under the layer `z` holds the units touching it from now on.
+    pub fn hold_on_plane(&mut self, z: i32) {
+        self.plane = Some(z);
+        self.on_plane = (0..self.len())
+            .filter(|&i| self.occupied(i) && self.in_plane_layer(i))
+            .count() as u32;
+    }
+
+    /// Is the cell `i` in the layer on a holding plane?
+    #[inline]
+    pub fn in_plane_layer(&self, i: usize) -> bool {
+        let layer = self.dims[0] as usize * self.dims[1] as usize;
+        self.plane == Some((i / layer) as i32)
+    }
+
+    /// Keeps the count of units on the plane as the unit at `i` arrives (+1) or leaves (-1).
+    fn count_on_plane(&mut self, i: usize, arrives: bool) {
+        if self.plane.is_some() && self.in_plane_layer(i) {
+            if arrives {
+                self.on_plane += 1;
+            } else {
+                self.on_plane -= 1;
+            }
         }
     }
 
@@ -127,6 +158,7 @@ impl Structure {
     pub fn place(&mut self, cells: &[usize]) {
         for &c in cells {
             self.types[c] = u8::MAX;
+            self.count_on_plane(c, true);
         }
         for &c in cells {
             self.types[c] = TYPE_OF_MASK[self.mask(c) as usize];
@@ -178,6 +210,8 @@ impl Structure {
     /// Moves the unit at `from` to the empty cell `to` (which must touch another unit) and
     /// retypes the cells around both.
     pub fn relocate(&mut self, from: usize, to: usize) {
+        self.count_on_plane(from, false);
+        self.count_on_plane(to, true);
         self.types[from] = 0;
         self.types[to] = u8::MAX;
         self.retype_around(to);
@@ -186,12 +220,14 @@ impl Structure {
 
     /// Adds a unit at the empty cell `at`.
     pub fn add(&mut self, at: usize) {
+        self.count_on_plane(at, true);
         self.types[at] = u8::MAX;
         self.retype_around(at);
     }
 
     /// Removes the unit at `at`.
     pub fn remove(&mut self, at: usize) {
+        self.count_on_plane(at, false);
         self.types[at] = 0;
         self.retype_around(at);
     }
@@ -208,45 +244,12 @@ impl Structure {
         }
     }
 
-    /// The reachable positions of the unit at `p` (rules 1 to 4 of the module documentation), in
-    /// a fixed order: carriers by direction from p, then axes, then senses. Left in `s.moves`.
-    pub fn reachable(&self, p: usize, s: &mut Scratch) {
-        s.moves.clear();
-        let mut pending = [0u32; 2];
-        for k in 0..6 {
-            let q = self.nb(p, k);
-            if !self.occupied(q) {
-                continue;
-            }
-            let bond_axis = k / 2;
-            for a in 0..3 {
-                if a == bond_axis {
-                    continue;
-                }
-                if !self.supported(q, a) {
-                    continue;
-                }
-                let b = 3 - bond_axis - a;
-                let mut n = 0;
-                for f in [2 * b, 2 * b + 1] {
-                    let dest = self.nb(q, f);
-                    if self.wall[dest] || self.occupied(dest) || self.occupied(self.nb(p, f)) {
-                        continue;
-                    }
-                    pending[n] = dest as u32;
-                    n += 1;
-                }
-                if n > 0 && self.stays_connected(p, Some((q, a)), s) {
-                    for &dest in &pending[..n] {
-                        s.moves.push(Move {
-                            dest,
-                            carrier: q as u32,
-                            axis: a as u8,
-                        });
-                    }
-                }
-            }
-        }
+    /// Rule 5: with a holding plane, does a unit other than the one at `p` still touch it? (A
+    /// carrier on the plane that turns about a horizontal axis lets go of the plane, but its
+    /// support on that axis lies on the plane too and holds on.) Without a plane there is
+    /// nothing to hold.
+    pub fn plane_holds(&self, p: usize) -> bool {
+        self.plane.is_none() || self.on_plane > u32::from(self.in_plane_layer(p))
     }
 
     /// Has the unit at `q` a support on the axis `a`: a unit, or a holding ground plane?

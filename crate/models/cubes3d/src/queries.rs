@@ -4,7 +4,6 @@ use serde_json::{json, Value};
 
 use super::typelist::{self, TypeList};
 use kumiki_model::error::{Error, Result};
-use kumiki_model::limits::Limits;
 use kumiki_model::shape;
 
 fn described(lists: Vec<TypeList>, units: usize) -> Value {
@@ -34,7 +33,7 @@ pub fn query_derive(args: &Value) -> Result<Value> {
                 .into_iter()
                 .map(|[x, y, z]| (x, y, z))
                 .collect();
-        let max_units = Limits::PAGE.cubes3d.units;
+        let max_units = crate::limits::LIMITS.page.units;
         if units.len() > max_units {
             return Err(Error::field("units", format!("at most {max_units} units")));
         }

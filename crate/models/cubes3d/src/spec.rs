@@ -34,10 +34,11 @@ pub enum Ground {
     /// A plane under the lowest layer of the shape that units cannot pass.
     #[serde(rename = "floor")]
     Floor,
-    /// As `floor`, and units touching the plane are fixed to it (section 6).
+    /// As `floor`, and units touching the plane never move (a reading of section 6).
     #[serde(rename = "fixed")]
     Fixed,
-    /// As `floor`, and the plane holds the units touching it (a support), which may still move.
+    /// As `floor`, and the plane holds the units touching it (a support) and the structure: a
+    /// unit on it may be carried off while another still touches it (section 6).
     #[serde(rename = "anchor")]
     Anchor,
 }
@@ -120,7 +121,7 @@ impl Bounded for Spec {
     const BOUNDS: &'static [Bound<Spec>] = &[
         Bound::length("targets", |s: &Spec| Some(s.targets.len() as f64))
             .at_least(1.0)
-            .up_to(|l| l.cubes3d.targets as f64),
+            .up_to(|l| crate::limits::LIMITS.of(l).targets as f64),
         Bound::new("w", |s: &Spec| Some(s.w)).above(0.0),
         Bound::new("a", |s: &Spec| Some(s.a)).above(0.0),
         Bound::new("c", |s: &Spec| Some(s.c)).above(0.0),
@@ -185,7 +186,7 @@ impl model::Spec for Spec {
     type Checked = Checked;
 
     fn validate(&self, limits: &Limits) -> Result<Checked> {
-        let max = limits.cubes3d;
+        let max = *crate::limits::LIMITS.of(limits);
         let (movable_types, light) = self.check()?;
 
         let shape = parse_shape(&self.shape, "shape", limits)?;

@@ -143,6 +143,11 @@ impl Cubes {
         self.st.relocate(from, to);
         self.after_change(&[from, to]);
         self.moves += 1;
+        if self.light.is_some() {
+            let (a, b) = (self.along_light(from), self.along_light(to));
+            self.moves_toward += u64::from(b > a);
+            self.moves_away += u64::from(b < a);
+        }
         self.events.push(Event {
             cell: to as u32,
             kind: ARRIVED,

@@ -144,6 +144,8 @@ impl Cubes {
                 "displacement",
                 Metric::Real(self.light_position() - self.start_light),
             );
+            f("moves_toward", Metric::Count(self.moves_toward));
+            f("moves_away", Metric::Count(self.moves_away));
         }
     }
 

@@ -273,6 +273,25 @@ fn a_holding_plane_is_a_support() {
             "stays on the plane"
         );
     }
+    // The plane holds the structure: a move that would lift its last unit on the plane off it
+    // is not made. A on the plane, B on top of A, C beside B on B's x axis: B may swing A up off
+    // the plane, where there is no holding plane...
+    let units = [[0, 0, 0], [0, 0, 1], [1, 0, 1]];
+    let lifted = set(&[[0, 1, 1], [0, -1, 1]]);
+    assert_eq!(reach(&structure(&units), [0, 0, 0]), lifted);
+    // ...but not from a holding plane, of which A is the last unit.
+    let mut held = structure(&units);
+    held.hold_on_plane(O[2]);
+    assert_eq!(held.on_plane, 1);
+    assert!(reach(&held, [0, 0, 0]).is_empty());
+    // With D beside A on the plane, the plane still holds the structure when A goes.
+    let units = [[0, 0, 0], [0, 0, 1], [1, 0, 1], [1, 0, 0]];
+    let mut held = structure(&units);
+    held.hold_on_plane(O[2]);
+    assert_eq!(held.on_plane, 2);
+    let r = reach(&held, [0, 0, 0]);
+    assert!(lifted.is_subset(&r), "{r:?}");
+    assert_eq!(r, reach(&structure(&units), [0, 0, 0]));
     // Fixed: units touching the plane never move.
     let fixed = model(body("fixed"));
     assert!(fixed.movable.is_empty());

@@ -37,6 +37,11 @@ fn check_invariants(m: &Cubes) {
         assert_eq!(m.mpos[c] != u32::MAX, m.eligible(c));
     }
     assert_eq!(zero, m.zero);
+    if let Some(z) = m.st.plane {
+        let on = occupied.iter().filter(|&&c| m.st.coord(c)[2] == z).count();
+        assert_eq!(on as u32, m.st.on_plane, "units counted on the plane");
+        assert!(on > 0, "the structure let go of its holding plane");
+    }
     assert_eq!(
         m.movable.len(),
         occupied.iter().filter(|&&c| m.eligible(c)).count()
@@ -149,6 +154,16 @@ fn disturbances_keep_the_books_straight() {
         .unwrap();
     let err = chain.apply(&act("remove", middle)).unwrap_err().to_string();
     assert!(err.contains("split"), "{err}");
+    // On a holding plane the last unit touching it stays: the structure stays fixed to it.
+    let mut tower = model(json!({"shape": "#\n---\n#\n---\n#\n", "ground": "anchor",
+                                 "targets": [{"type_lists": "C1[C20]"}]}));
+    let foot = tower.units.iter().map(|&c| c as usize).min().unwrap();
+    assert!(tower
+        .st
+        .stays_connected(foot, None, &mut Scratch::default()));
+    let err = tower.apply(&act("remove", foot)).unwrap_err().to_string();
+    assert!(err.contains("ground plane holds"), "{err}");
+    check_invariants(&tower);
 }
 
 #[test]
@@ -199,6 +214,34 @@ fn the_mrf_rule_beats_its_baselines_on_the_cube() {
         mean_after("steepest"),
     );
     assert!(mrf < random && mrf < steepest, "{mrf} {random} {steepest}");
+}
+
+#[test]
+fn the_light_seeking_structure_stays_on_its_plane_and_counts_its_moves() {
+    // Section 6's structure is placed on a plane and fixed to it: while units are carried off
+    // the plane and back, one always touches it (without rule 5, most runs let go of it within
+    // 1000 steps and went on in free space).
+    for seed in 1..=5 {
+        let mut s = presets::scenario("cubes-light").unwrap();
+        s.seed = seed;
+        let mut m = Cubes::new(&s).unwrap();
+        let mut left_plane = 0;
+        for _ in 0..1000 {
+            let before = m.st.on_plane;
+            m.step();
+            assert!(m.st.on_plane > 0, "seed {seed}: let go of the plane");
+            left_plane += usize::from(m.st.on_plane < before);
+        }
+        assert!(left_plane > 0, "seed {seed}: units do leave the plane");
+        check_invariants(&m);
+        // A move changes a unit's place along the light by one cell at most, so the centre of
+        // mass of eight units moves an eighth of a cell per move toward or away.
+        let metrics = m.metrics();
+        let count = |k: &str| metrics[k].as_f64().unwrap();
+        assert!(count("moves_toward") + count("moves_away") <= count("moves"));
+        let net = (count("moves_toward") - count("moves_away")) / 8.0;
+        assert_eq!(metrics["displacement"].as_f64().unwrap(), net);
+    }
 }
 
 #[test]

@@ -1,0 +1,52 @@
+//! What the core holds built in: the presets, the lessons, each model's metric table and its
+//! helper calls.
+
+use kumiki_core::{json, lessons, models, presets};
+use serde_json::Value;
+use wasm_bindgen::prelude::*;
+
+use crate::{js_err, to_js};
+
+/// A model's metric table: `[{name, unit, about}, ...]` in the model's order (see
+/// `kumiki_core::models::MetricInfo`); an unknown model is an error that lists the known ones.
+#[wasm_bindgen]
+pub fn metric_table(model: &str) -> Result<JsValue, JsError> {
+    to_js(models::metric_table(model).map_err(js_err)?)
+}
+
+/// The built-in scenarios: name, model, title, description.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    to_js(&presets::list().map_err(js_err)?)
+}
+
+#[wasm_bindgen]
+pub fn preset_json(name: &str) -> Result<String, JsError> {
+    presets::scenario(name)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// The built-in lessons: name, model, paper, section, exercise title and description.
+#[wasm_bindgen]
+pub fn lessons() -> Result<JsValue, JsError> {
+    to_js(&lessons::list().map_err(js_err)?)
+}
+
+#[wasm_bindgen]
+pub fn lesson_json(name: &str) -> Result<String, JsError> {
+    lessons::scenario(name)
+        .map(|s| s.to_json_pretty())
+        .map_err(js_err)
+}
+
+/// A model's helper call that needs no run (see `kumiki_core::models::query`), for instance
+/// `model_query("cubes3d", "derive", '{"shape": "##\n##\n"}')`. Arguments and answer are JSON
+/// text; a bad argument is an error that names it.
+#[wasm_bindgen]
+pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, JsError> {
+    let args: Value = json::parse(args_json).map_err(js_err)?;
+    models::query(model, name, &args)
+        .map(|v| v.to_string())
+        .map_err(js_err)
+}

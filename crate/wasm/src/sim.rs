@@ -1,0 +1,268 @@
+//! The simulation handle ([`Sim`]) and a bare run for the benchmarks ([`Stepper`]).
+
+use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
+use kumiki_core::models::Scene;
+use kumiki_core::playback::Playback;
+use kumiki_core::{grading, hash, json, Run, Scenario};
+use serde_json::Value;
+use wasm_bindgen::prelude::*;
+
+use crate::{js_err, to_js};
+
+/// `performance.now()` of the page or worker, in milliseconds; `None` where there is none.
+fn clock() -> Option<js_sys::Function> {
+    let performance = js_sys::Reflect::get(&js_sys::global(), &"performance".into()).ok()?;
+    let now = js_sys::Reflect::get(&performance, &"now".into()).ok()?;
+    Some(now.dyn_into::<js_sys::Function>().ok()?.bind0(&performance))
+}
+
+/// One running simulation, with the keyframes that let it go back: a
+/// [`Playback`](kumiki_core::playback::Playback), which keeps the run, its keyframes and its
+/// chart record, read by the page's clock.
+#[wasm_bindgen]
+pub struct Sim {
+    playback: Playback,
+    clock: Option<js_sys::Function>,
+    /// The scene [`Sim::scene_if_changed`] last gave, so a frame carries it only when it changed.
+    last_scene: Option<Scene>,
+}
+
+impl Sim {
+    pub(crate) fn run(&self) -> &Run {
+        self.playback.run()
+    }
+}
+
+#[wasm_bindgen]
+impl Sim {
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario_json: &str) -> Result<Sim, JsError> {
+        let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
+        Ok(Sim {
+            playback: Playback::new(Run::new(scenario).map_err(js_err)?),
+            clock: clock(),
+            last_scene: None,
+        })
+    }
+
+    /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
+    /// taken.
+    pub fn advance(&mut self, n: u32) -> u32 {
+        let clock = &self.clock;
+        let mut now = || {
+            clock
+                .as_ref()
+                .and_then(|f| f.call0(&JsValue::NULL).ok())
+                .and_then(|v| v.as_f64())
+                .unwrap_or(0.0)
+        };
+        self.playback.advance(u64::from(n), &mut now) as u32
+    }
+
+    /// Goes to `step` (at most the furthest step reached) by replaying from the keyframe before
+    /// it: the state is bit-identical to the one passed through.
+    pub fn seek(&mut self, step: f64) {
+        self.playback.seek(step.max(0.0) as u64);
+    }
+
+    /// A metric's every-step record for the chart, merged into at most `points` points:
+    /// `[steps…, least…, greatest…]`, three runs of the same length.
+    pub fn chart(&self, metric: &str, points: u32) -> Float64Array {
+        let band = self.playback.series().decimate(metric, points as usize);
+        let flat: Vec<f64> = [band.steps, band.min, band.max].concat();
+        Float64Array::from(flat.as_slice())
+    }
+
+    /// Steps per recorded bucket of the chart's series (1 until the record is full, then doubling).
+    pub fn chart_span(&self) -> f64 {
+        self.playback.series().span() as f64
+    }
+
+    /// The furthest step reached, where the timeline ends.
+    pub fn furthest(&self) -> f64 {
+        self.playback.furthest() as f64
+    }
+
+    /// Keyframes kept and the steps between them, for the page's memory note.
+    pub fn keyframes(&self) -> Vec<f64> {
+        let (n, every) = self.playback.keyframes();
+        vec![n as f64, every as f64]
+    }
+
+    pub fn steps(&self) -> f64 {
+        self.run().steps() as f64
+    }
+
+    pub fn finished(&self) -> bool {
+        self.run().finished()
+    }
+
+    pub fn completed(&self) -> bool {
+        self.run().model().completed()
+    }
+
+    /// The 64-bit state hash in hex.
+    pub fn hash(&self) -> String {
+        hash::hex(self.run().state_hash())
+    }
+
+    /// Lattice, legends, fields and tools: see `kumiki_core::models::Layout`.
+    pub fn layout(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run().model().layout())
+    }
+
+    pub fn metrics(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run().model().metrics())
+    }
+
+    /// One code per cell (a copy, for tests and tools: the page's view reads the model in place,
+    /// see [`Viewer`](crate::Viewer)).
+    pub fn cells(&self) -> Uint8Array {
+        Uint8Array::from(self.run().model().cells().as_ref())
+    }
+
+    /// One value per cell (a copy), NaN where undefined; undefined for an unknown field.
+    pub fn field(&self, name: &str) -> Option<Float32Array> {
+        self.run()
+            .model()
+            .field(name)
+            .map(|values| Float32Array::from(values.as_ref()))
+    }
+
+    /// Agents as `[cell, kind, cell, kind, ...]`.
+    pub fn agents(&self) -> Uint32Array {
+        let flat: Vec<u32> = self
+            .run()
+            .model()
+            .agents()
+            .iter()
+            .flat_map(|a| [a.cell, u32::from(a.kind)])
+            .collect();
+        Uint32Array::from(flat.as_slice())
+    }
+
+    /// Events of the last step as `[cell, kind, ...]`.
+    pub fn events(&self) -> Uint32Array {
+        let flat: Vec<u32> = self
+            .run()
+            .model()
+            .events()
+            .iter()
+            .flat_map(|e| [e.cell, u32::from(e.kind)])
+            .collect();
+        Uint32Array::from(flat.as_slice())
+    }
+
+    /// The code of one cell (0: empty or off the lattice).
+    pub fn cell_code(&self, cell: u32) -> u8 {
+        self.run()
+            .model()
+            .cells()
+            .get(cell as usize)
+            .copied()
+            .unwrap_or(0)
+    }
+
+    /// The middle occupied cell in memory order (where a keyboard cursor starts), or -1.
+    pub fn middle_occupied(&self) -> f64 {
+        let cells = self.run().model().cells();
+        let occupied = cells.iter().filter(|&&c| c != 0).count();
+        let nth = cells
+            .iter()
+            .enumerate()
+            .filter(|(_, &c)| c != 0)
+            .nth(occupied / 2);
+        nth.map_or(-1.0, |(i, _)| i as f64)
+    }
+
+    /// Applies an action now (a click tool) and records it in the scenario; a click in the past
+    /// forks the run (see `kumiki_core::playback::Playback::apply`).
+    pub fn apply(&mut self, action_json: &str) -> Result<(), JsError> {
+        let action: Value = json::parse(action_json).map_err(js_err)?;
+        let Value::Object(action) = action else {
+            return Err(JsError::new("an action is a JSON object"));
+        };
+        self.playback.apply(action).map_err(js_err)
+    }
+
+    /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);
+    /// empty for models without bonds. See `kumiki_core::models::Model::bonds`.
+    pub fn bonds(&self) -> Uint8Array {
+        Uint8Array::from(self.run().model().bonds().as_ref())
+    }
+
+    pub fn inspect(&self, cell: u32) -> Result<JsValue, JsError> {
+        to_js(&self.run().model().inspect(cell as usize))
+    }
+
+    /// Ghost cells, light direction, ground plane and bonds for 3-D views (see
+    /// `kumiki_core::models::Scene`); empty for models without them. Read it again after stepping:
+    /// the ghost follows the current target.
+    pub fn scene(&self) -> Result<JsValue, JsError> {
+        to_js(&self.run().model().scene())
+    }
+
+    /// [`Sim::scene`] when it differs from what this call last returned (always on the first
+    /// call), else null: the worker's frames carry the scene only when it changed, without
+    /// serialising it every frame to find out.
+    pub fn scene_if_changed(&mut self) -> Result<JsValue, JsError> {
+        let scene = self.run().model().scene();
+        if self.last_scene.as_ref() == Some(&scene) {
+            return Ok(JsValue::NULL);
+        }
+        let value = to_js(&scene)?;
+        self.last_scene = Some(scene);
+        Ok(value)
+    }
+
+    /// The step limit of the scenario.
+    pub fn max_steps(&self) -> f64 {
+        self.run().scenario().max_steps as f64
+    }
+
+    /// The scenario as it now stands, with clicked disturbances recorded.
+    pub fn scenario_json(&self) -> String {
+        self.run().scenario().to_json_pretty()
+    }
+
+    /// The exercise's goal judged on the run as it stands: `{met, because}`, or undefined when
+    /// the scenario is no exercise.
+    pub fn check_goal(&self) -> Result<JsValue, JsError> {
+        let Some(exercise) = &self.run().scenario().exercise else {
+            return Ok(JsValue::UNDEFINED);
+        };
+        let outcome = self.run().outcome();
+        let doc = self.run().scenario().to_value();
+        let check = exercise.goal().check(&kumiki_core::exercise::Outcome {
+            completed: outcome.completed,
+            steps: outcome.steps,
+            metrics: &outcome.metrics,
+            scenario: &doc,
+        });
+        // A locked field away from the teacher's value is never "Goal met".
+        to_js(&grading::with_locks(check, exercise, &doc))
+    }
+}
+
+/// A bare run, without the keyframes and chart record a [`Sim`] keeps: the work `kumiki bench`
+/// times natively, so `npm run bench` compares like with like.
+#[wasm_bindgen]
+pub struct Stepper {
+    run: Run,
+}
+
+#[wasm_bindgen]
+impl Stepper {
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario_json: &str) -> Result<Stepper, JsError> {
+        let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
+        Ok(Stepper {
+            run: Run::new(scenario).map_err(js_err)?,
+        })
+    }
+
+    /// Takes up to `n` steps; returns how many were taken.
+    pub fn advance(&mut self, n: u32) -> u32 {
+        self.run.advance(u64::from(n)) as u32
+    }
+}
