@@ -46,19 +46,10 @@ function bufferSize(page, k) {
   );
 }
 
-/** A PNG's size and how many distinct byte values its pixel rows hold (1 or 2 for a blank picture). */
+/** A PNG's size and how many distinct byte values its pixels hold (1 or 2 for a blank picture). */
 function readPng(bytes) {
-  assert.deepEqual([...bytes.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a], 'PNG signature');
-  assert.equal(bytes.toString('latin1', 12, 16), 'IHDR');
-  const size = [bytes.readUInt32BE(16), bytes.readUInt32BE(20)];
-  const idat = [];
-  for (let at = 8; at < bytes.length; ) {
-    const length = bytes.readUInt32BE(at);
-    if (bytes.toString('latin1', at + 4, at + 8) === 'IDAT') idat.push(bytes.subarray(at + 8, at + 8 + length));
-    at += 12 + length;
-  }
-  const pixels = inflateSync(Buffer.concat(idat));
-  return { size, distinct: new Set(pixels).size };
+  const [w, h, rgba] = pixelsOf(bytes);
+  return { size: [w, h], distinct: new Set(rgba).size };
 }
 
 /** A GIF's logical screen size and its number of images, read block by block. */
@@ -294,16 +285,51 @@ describe('recording the 3-D view (cubes3d)', () => {
 });
 
 /** A PNG's pixels in the page: [width, height, RGBA bytes as an array]. */
-async function pixelsOf(page, bytes) {
-  const blank = await page.context().newPage();
-  const out = await blank.evaluate(async (b64) => {
-    const bitmap = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))], { type: 'image/png' }));
-    const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
-    ctx.drawImage(bitmap, 0, 0);
-    return [bitmap.width, bitmap.height, Array.from(ctx.getImageData(0, 0, bitmap.width, bitmap.height).data)];
-  }, bytes.toString('base64'));
-  await blank.close();
-  return out;
+/**
+ * A PNG's pixels, decoded here: `[width, height, rgba]`. Browsers write 8-bit RGB or RGBA without
+ * interlacing; each row is unfiltered with the filter its first byte names (PNG section 9).
+ */
+function pixelsOf(bytes) {
+  assert.deepEqual([...bytes.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a], 'PNG signature');
+  const [w, h, depth, colour, interlace] = [bytes.readUInt32BE(16), bytes.readUInt32BE(20), bytes[24], bytes[25], bytes[28]];
+  assert.ok(depth === 8 && (colour === 2 || colour === 6) && interlace === 0, `an 8-bit RGB(A) PNG (depth ${depth}, colour ${colour})`);
+  const channels = colour === 6 ? 4 : 3;
+  const idat = [];
+  for (let at = 8; at < bytes.length; ) {
+    const length = bytes.readUInt32BE(at);
+    if (bytes.toString('latin1', at + 4, at + 8) === 'IDAT') idat.push(bytes.subarray(at + 8, at + 8 + length));
+    at += 12 + length;
+  }
+  const raw = inflateSync(Buffer.concat(idat));
+  const stride = w * channels;
+  const rows = new Uint8Array(h * stride);
+  for (let y = 0; y < h; y++) {
+    const filter = raw[y * (stride + 1)];
+    const src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    const row = rows.subarray(y * stride, (y + 1) * stride);
+    const up = y > 0 ? rows.subarray((y - 1) * stride, y * stride) : new Uint8Array(stride);
+    for (let i = 0; i < stride; i++) {
+      const a = i >= channels ? row[i - channels] : 0;
+      const b = up[i];
+      const c = i >= channels ? up[i - channels] : 0;
+      let predicted = 0;
+      if (filter === 1) predicted = a;
+      else if (filter === 2) predicted = b;
+      else if (filter === 3) predicted = (a + b) >> 1;
+      else if (filter === 4) {
+        const p = a + b - c;
+        const [pa, pb, pc] = [Math.abs(p - a), Math.abs(p - b), Math.abs(p - c)];
+        predicted = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+      } else assert.equal(filter, 0, `row ${y}: filter ${filter}`);
+      row[i] = (src[i] + predicted) & 0xff;
+    }
+  }
+  const rgba = new Uint8Array(w * h * 4);
+  for (let p = 0; p < w * h; p++) {
+    rgba.set(rows.subarray(p * channels, p * channels + 3), 4 * p);
+    rgba[4 * p + 3] = channels === 4 ? rows[p * channels + 3] : 255;
+  }
+  return [w, h, rgba];
 }
 
 describe('recording overlays', () => {
@@ -311,8 +337,8 @@ describe('recording overlays', () => {
     const { page, context, problems } = await openPage(s.browser, linkTo('amas-L'));
     await page.click('#step');
     await page.waitForFunction(() => document.querySelector('#step-count').textContent === '1');
-    const plain = await pixelsOf(page, (await recordFile(page, { format: 'png' })).bytes);
-    const again = await pixelsOf(page, (await recordFile(page, { format: 'png' })).bytes);
+    const plain = pixelsOf((await recordFile(page, { format: 'png' })).bytes);
+    const again = pixelsOf((await recordFile(page, { format: 'png' })).bytes);
     assert.deepEqual(again, plain, 'without overlays the same view gives the same picture');
     const [w, h] = plain;
     /** The share of pixels that differ from the plain picture in a region (fractions of the frame). */
@@ -336,7 +362,7 @@ describe('recording overlays', () => {
     for (const which of ['step', 'title', 'legend']) {
       const { name, bytes } = await recordFile(page, { format: 'png', overlays: [which] });
       assert.equal(name, 'amas-L_seed1_step1.png');
-      const shot = await pixelsOf(page, bytes);
+      const shot = pixelsOf(bytes);
       for (const [other, region] of Object.entries(regions)) {
         const share = changed(shot, region);
         if (other === which) assert.ok(share > 0.2, `${which}: ${(share * 100).toFixed(0)} % of its corner is drawn over`);
@@ -345,11 +371,11 @@ describe('recording overlays', () => {
       assert.equal(changed(shot, MIDDLE), 0, `${which} leaves the middle of the view alone`);
     }
     // The step counter follows the run: the picture at step 2 differs from the one at step 1.
-    const one = await pixelsOf(page, (await recordFile(page, { format: 'png', overlays: ['step'] })).bytes);
+    const one = pixelsOf((await recordFile(page, { format: 'png', overlays: ['step'] })).bytes);
     await page.click('#step');
     await page.waitForFunction(() => document.querySelector('#step-count').textContent === '2');
     await settle(page);
-    const two = await pixelsOf(page, (await recordFile(page, { format: 'png', overlays: ['step', 'title', 'legend'] })).bytes);
+    const two = pixelsOf((await recordFile(page, { format: 'png', overlays: ['step', 'title', 'legend'] })).bytes);
     assert.notDeepEqual(two[2], one[2]);
     assert.deepEqual(problems, []);
     await context.close();
