@@ -28,21 +28,78 @@ const pixel = (page, x, y) =>
     [x, y],
   );
 
-/** A page point over each of `cells`, found through the inspector's hover read-out. */
-async function findCells(page, cells) {
-  const box = await page.locator('#view').boundingBox();
-  const found = new Map();
-  for (let gy = 1; gy < 32 && found.size < cells.length; gy++) {
-    for (let gx = 1; gx < 40 && found.size < cells.length; gx++) {
-      const x = box.x + (box.width * gx) / 40;
-      const y = box.y + (box.height * gy) / 32;
-      await page.mouse.move(x, y);
-      const cell = Number((await page.textContent('#inspector'))?.match(/^cell(\d+) /)?.[1]);
-      if (cells.includes(cell) && !found.has(cell)) found.set(cell, { x, y });
-    }
+/**
+ * The cell under a page point as the inspector's hover read-out names it: `[cell, x, y]`, or null
+ * off the lattice (no read-out within a second). The pointer first leaves the view, which hides the read-out at once, so the
+ * read-out that shows next is about this point; it is taken once it holds for 100 ms.
+ */
+async function cellAt(page, x, y) {
+  await page.mouse.move(0, 0);
+  await page.waitForSelector('#inspector', { state: 'hidden' });
+  await page.mouse.move(x, y);
+  const read = () =>
+    page.textContent('#inspector').then(
+      (t) =>
+        t
+          ?.match(/^cell(\d+) \((\d+), (\d+)\)/)
+          ?.slice(1)
+          .map(Number) ?? null,
+    );
+  try {
+    await page.waitForSelector('#inspector', { state: 'visible', timeout: 1000 });
+  } catch {
+    return null;
   }
-  for (const c of cells) assert.ok(found.has(c), `no point of the view shows cell ${c}`);
-  return cells.map((c) => found.get(c));
+  for (let last = await read(); ; ) {
+    await page.waitForTimeout(100);
+    const now = await read();
+    if (String(now) === String(last)) return now;
+    last = now;
+  }
+}
+
+/**
+ * A page point over each of `cells` (lattice `width` cells wide), each one confirmed by the
+ * inspector. A few hovers across and down the middle of the view give the lattice's scale and offset on the page; each
+ * cell is then looked for where they put it, and around there, half a cell at a time.
+ */
+async function findCells(page, cells, width) {
+  const box = await page.locator('#view').boundingBox();
+  const seen = [];
+  const across = [0.3, 0.4, 0.5, 0.6, 0.7].map((f) => [f, 0.5]);
+  const down = [0.2, 0.35, 0.65, 0.8].map((f) => [0.5, f]);
+  for (const [fx, fy] of [...across, ...down]) {
+    const [px, py] = [box.x + box.width * fx, box.y + box.height * fy];
+    const read = await cellAt(page, px, py);
+    if (read) seen.push({ px, py, cx: read[1], cy: read[2] });
+  }
+  /** Page pixels per cell along one axis, from the two hovers farthest apart on it. */
+  const scale = (p, c) => {
+    let best = null;
+    for (const u of seen) for (const v of seen) if (v[c] !== u[c] && (!best || Math.abs(v[p] - u[p]) > Math.abs(best[1][p] - best[0][p]))) best = [u, v];
+    assert.ok(best, `the hovers over the view name cells in more than one ${c === 'cx' ? 'column' : 'row'}`);
+    return (best[1][p] - best[0][p]) / (best[1][c] - best[0][c]);
+  };
+  const [sx, sy] = [scale('px', 'cx'), scale('py', 'cy')];
+  const [o] = seen;
+  const points = [];
+  for (const cell of cells) {
+    const [tx, ty] = [cell % width, Math.floor(cell / width)];
+    const [x0, y0] = [o.px + (tx - o.cx) * sx, o.py + (ty - o.cy) * sy];
+    let found = null;
+    const near = [[0, 0]];
+    for (const r of [0.5, 1, 1.5]) near.push([r, 0], [-r, 0], [0, r], [0, -r], [r, r], [-r, -r], [r, -r], [-r, r]);
+    for (const [dx, dy] of near) {
+      const at = { x: x0 + dx * Math.abs(sx), y: y0 + dy * Math.abs(sy) };
+      if ((await cellAt(page, at.x, at.y))?.[0] === cell) {
+        found = at;
+        break;
+      }
+    }
+    assert.ok(found, `no point of the view shows cell ${cell}`);
+    points.push(found);
+  }
+  return points;
 }
 
 test('the collision heat map is an overlay of its own and counts what the core counts', async () => {
@@ -52,6 +109,7 @@ test('the collision heat map is an overlay of its own and counts what the core c
   sim.advance(STEPS);
   const heat = [...sim.field('collisions')];
   const agents = [...sim.agents()];
+  const width = sim.layout().dims[0];
   sim.free();
   const max = Math.max(...heat.filter((v) => !Number.isNaN(v)));
   assert.ok(max >= 2, `ten robots on the L collide more than once on some cell in ${STEPS} steps (max ${max})`);
@@ -77,7 +135,7 @@ test('the collision heat map is an overlay of its own and counts what the core c
   assert.equal(Number(await page.textContent('#colorbar-min')), 0);
 
   // The inspector reads the count; the hottest cell and a cell with none are drawn differently.
-  const [at, away] = await findCells(page, [hot, cold]);
+  const [at, away] = await findCells(page, [hot, cold], width);
   await page.mouse.click(at.x, at.y);
   await page.waitForFunction((n) => /collisions\s*(\d+)/.exec(document.querySelector('#inspector').textContent)?.[1] === String(n), hottest);
   await page.mouse.move(0, 0);
