@@ -2,9 +2,8 @@
 // state, the view's Left arrow steps back), keys that leave focused controls alone, and a student
 // doing an exercise: instructions, locked fields, the goal judged, a hand-in the CLI grades.
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session, stepCount } from './harness.mjs';
+import { kumiki, loadWasm, openPage, session, stepCount } from './harness.mjs';
 
 const wasm = loadWasm();
 
@@ -141,7 +140,7 @@ describe('an exercise', () => {
     await page.click('#exercise-handin');
     await page.waitForFunction(() => document.querySelector('#exercise-handin-out').textContent.includes('#k1.'));
     const link = /(http\S+#k1\.\S+)/.exec(await page.textContent('#exercise-handin-out'))[1];
-    const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'check', link], { encoding: 'utf8' });
+    const out = kumiki(['check', link]);
     const row = JSON.parse(out.trim());
     assert.equal(row.name, 'Ada');
     assert.equal(row.met, true, row.because);

@@ -2,13 +2,12 @@
 // figures, saved as SVG and PNG, exported with provenance byte for byte as the CLI writes it, and
 // travels as a link, a file and across reloads.
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { openPage, session } from './harness.mjs';
+import { kumiki, openPage, session } from './harness.mjs';
 
 const s = session('/');
 
@@ -100,11 +99,7 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   const csv = (await downloaded(page, '#export-csv')).bytes.toString('utf8');
   const time = csv.match(/^# time: (.+)$/m)[1];
   const epoch = String(Date.parse(time) / 1000);
-  const cli = (...args) =>
-    execFileSync('cargo', ['run', '--release', '--quiet', '-p', 'kumiki-cli', '--', 'sweep', file, ...args], {
-      encoding: 'utf8',
-      env: { ...process.env, SOURCE_DATE_EPOCH: epoch },
-    });
+  const cli = (...args) => kumiki(['sweep', file, ...args], { env: { SOURCE_DATE_EPOCH: epoch } });
   assert.match(csv, /^# kumiki \S+ \(commit [0-9a-f]{12}\)\n# models: amas behaviour version \d+\n# seeds: 1 2 3\n/);
   assert.match(csv, /\nscenario,seed,completed,steps \[steps\],hash,scenario_hash,version,params\.robots,.*metrics\.total_steps \[robot steps\]/);
   assert.equal(csv, cli('--format', 'csv'));
@@ -131,10 +126,7 @@ async function runToCsv(page) {
 /** What `kumiki sweep FILE --format csv` writes, at the time the page's CSV says it ran. */
 function cliCsv(file, pageCsv) {
   const epoch = String(Date.parse(pageCsv.match(/^# time: (.+)$/m)[1]) / 1000);
-  return execFileSync('cargo', ['run', '--release', '--quiet', '-p', 'kumiki-cli', '--', 'sweep', file, '--format', 'csv'], {
-    encoding: 'utf8',
-    env: { ...process.env, SOURCE_DATE_EPOCH: epoch },
-  });
+  return kumiki(['sweep', file, '--format', 'csv'], { env: { SOURCE_DATE_EPOCH: epoch } });
 }
 
 test('an edited experiment travels by link and by file, survives a reload, and each copy exports what the CLI writes', async () => {

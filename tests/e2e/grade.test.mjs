@@ -3,12 +3,11 @@
 // form's CSV export, graded against a lesson in wasm workers, the same as `kumiki check` grades
 // them, and exported as CSV.
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session } from './harness.mjs';
+import { kumiki, loadWasm, openPage, session } from './harness.mjs';
 
 const wasm = loadWasm();
 const s = session();
@@ -89,7 +88,7 @@ describe('the Grade view', () => {
     // kumiki check on the same links, graded against the same lesson.
     const list = join(tmpdir(), `kumiki-class-${process.pid}.txt`);
     writeFileSync(list, `${links.join('\n')}\n`);
-    const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'check', '--file', list, '--exercise', LESSON], { encoding: 'utf8' });
+    const out = kumiki(['check', '--file', list, '--exercise', LESSON]);
     const cli = out
       .trim()
       .split('\n')

@@ -1,5 +1,6 @@
 // Shared pieces of the browser tests: a static server for dist/ (optionally under a sub-path, to
 // prove the build uses relative URLs) and Debian's Chromium driven by playwright-core.
+import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
@@ -166,4 +167,16 @@ export function session(prefix = '/') {
 export function loadWasm() {
   wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
   return wasm;
+}
+
+/**
+ * Runs the command line (`kumiki ARGS`) and returns what it printed. It is built in the `quick`
+ * profile, the one npm test builds for its report and schema checks before the browser tests, so
+ * no test waits for a build of its own (a file run alone builds it once).
+ */
+export function kumiki(args, { env = {} } = {}) {
+  return execFileSync('cargo', ['run', '--profile', 'quick', '--quiet', '-p', 'kumiki-cli', '--', ...args], {
+    encoding: 'utf8',
+    env: { ...process.env, ...env },
+  });
 }

@@ -1,8 +1,7 @@
 // The page in headless Chromium: loading, running, keyboard, links, errors, recovery, persistence.
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import { describe, test } from 'node:test';
-import { animationFrames, loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
+import { animationFrames, kumiki, loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
 
 const wasm = loadWasm();
 
@@ -97,7 +96,7 @@ describe('the page', () => {
     assert.equal(await hashOf(second.page), final);
     assert.equal(await stepCount(second.page), await stepCount(page));
 
-    const out = execFileSync('cargo', ['run', '--quiet', '-p', 'kumiki-cli', '--', 'run', link], { encoding: 'utf8' });
+    const out = kumiki(['run', link]);
     const row = JSON.parse(out.trim().split('\n')[0]);
     assert.equal(row.seed, 4242);
     assert.equal(row.hash, final, 'the command line reproduces the page run from the same link');
