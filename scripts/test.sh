@@ -30,7 +30,7 @@ step "setup"
 bash scripts/setup.sh --browser
 
 step "gate: cargo clippy -D warnings (wasm32)"
-cargo clippy -p kumiki-wasm --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
+cargo clippy -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
 
 step "gate: biome lint (web/, tests/, scripts/)"
 npx --no-install biome lint --error-on-warnings
@@ -47,7 +47,7 @@ cargo test --workspace --quiet
 step "wasm tests (wasm-bindgen-test in headless Node)"
 # Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
-  cargo test -p kumiki-wasm --target wasm32-unknown-unknown
+  cargo test -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown
 
 step "the JSON Schemas in docs/schema are current (kumiki schema --check)"
 cargo run --release --quiet -p kumiki-cli -- schema --check
