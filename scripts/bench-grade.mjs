@@ -1,6 +1,6 @@
 // Grading time per hand-in: a class of hand-ins of lesson-amas-robots (fair ones, ones that miss
 // the goal, ones with a changed lock), each replayed and judged as the Grade view's workers do
-// (grade_handin, wasm in Node, one thread) and as `kumiki check` does (native, on every core).
+// (the lab module's grade_handin, wasm in Node, one thread) and as `kumiki check` does (native, on every core).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -20,13 +20,16 @@ export function handins(wasm, count) {
   });
 }
 
-/** Milliseconds per hand-in, in wasm (Node, one thread) and natively (`kumiki check`, all cores). */
-export function benchGrade(wasm, root, count = 60) {
+/**
+ * Milliseconds per hand-in, in wasm (Node, one thread; links made with the page's module `wasm`,
+ * graded with the lab module `lab`) and natively (`kumiki check`, all cores).
+ */
+export function benchGrade(wasm, lab, root, count = 60) {
   const links = handins(wasm, count);
   // Warm up on the whole class once: the first calls include the engine tiering up the wasm.
-  for (const link of links) wasm.grade_handin(link, LESSON);
+  for (const link of links) lab.grade_handin(link, LESSON);
   const started = performance.now();
-  for (const link of links) wasm.grade_handin(link, LESSON);
+  for (const link of links) lab.grade_handin(link, LESSON);
   const wasmMs = (performance.now() - started) / count;
   const dir = mkdtempSync(join(tmpdir(), 'kumiki-bench-grade-'));
   const list = join(dir, 'handins.txt');

@@ -5,10 +5,13 @@
 import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
+import * as lab from '../web/pkg/kumiki_lab.js';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 
 const root = new URL('..', import.meta.url);
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_bg.wasm', root))) });
+// Experiments run in the lab module, as in the page's experiment workers.
+lab.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_lab_bg.wasm', root))) });
 
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -27,7 +30,7 @@ function scenarioJson(spec) {
 export function measure(spec) {
   const repeats = Math.max(1, spec.repeats ?? 5);
   if (spec.experiment) {
-    const runner = new wasm.ExperimentRunner(spec.experiment);
+    const runner = new lab.ExperimentRunner(spec.experiment);
     const times = [];
     for (let r = 0; r < repeats; r++) {
       const t = performance.now();

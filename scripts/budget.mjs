@@ -1,5 +1,7 @@
-// The gzipped wasm budget, renderer included: the one place it is stated. The build prints the
-// size against it and `npm run bench` fails when the wasm is over it.
+// The gzipped budget of the page's wasm module (kumiki_wasm, renderer included), the one the page
+// loads to open: the one place it is stated. The build prints the size against it and `npm run
+// bench` fails when the module is over it. The lab module (kumiki_lab), loaded only when a panel
+// needs it, is printed beside it without a budget.
 export const WASM_BUDGET_KB = 400;
 
 /** "within" or how far over the budget `kb` gzipped kilobytes are. */

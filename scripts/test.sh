@@ -36,7 +36,7 @@ step "gate: cargo clippy -D warnings (native)"
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 
 step "gate: cargo clippy -D warnings (wasm32)"
-cargo clippy -p kumiki-wasm --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
+cargo clippy -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
 
 # The page's wasm (release: link-time optimisation on one code unit, most of it on one core) builds
 # in the background while the tests below compile and run, and is waited for before the page is
@@ -55,7 +55,7 @@ cargo test --workspace --quiet
 step "wasm tests (wasm-bindgen-test in headless Node)"
 # Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
-  cargo test -p kumiki-wasm --target wasm32-unknown-unknown
+  cargo test -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown
 
 # The command line in the quick profile (the release build without link-time optimisation: the
 # same results, built in a fraction of the time); the browser tests call it too.

@@ -1,15 +1,16 @@
-// The main thread's own wasm instance, for work on documents: presets, validation, links,
-// experiments and CSV. Runs happen in workers.
+// The main thread's own wasm instance, for work on documents: presets, lessons, validation and
+// links. Runs happen in workers; experiments, the report's claims and grading are the lab
+// module's (web/lab.ts), loaded when a panel needs them.
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import scenarioSchema from '../docs/schema/scenario.schema.json';
-import type { Cells, Comparison, ExperimentInfo, Figure, Finding, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Proposal, Unpacked } from './contract.gen';
+import type { Cells, Comparison, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Proposal, Unpacked } from './contract.gen';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
 /**
- * The compiled wasm module, compiled once (while it downloads) and handed to the simulation worker
- * and the experiment workers, which would otherwise each download and compile their own copy.
+ * The compiled wasm module, compiled once (while it downloads) and handed to the simulation
+ * workers, which would otherwise each download and compile their own copy.
  */
 export function wasmModule(): Promise<WebAssembly.Module> {
   compiled ??= WebAssembly.compileStreaming(fetch(wasmUrl)).catch(async () =>
@@ -40,8 +41,6 @@ export const unpackLink = (link: string): Unpacked => core.unpack_link(link) as 
 export const freshSeed = (): number => core.fresh_seed();
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
-/** The title of the teacher's exercise (a link or a lesson's name) the Grade view grades by; throws why it cannot. */
-export const exerciseTitle = (text: string): string => core.exercise_title(text);
 
 /**
  * The scenario in view, held in the wasm between edits (crate/core/src/draft.rs): opening a text
@@ -96,31 +95,11 @@ export class Draft {
   }
 }
 
-export const experiments = (): ExperimentInfo[] => core.experiments() as ExperimentInfo[];
-export const experimentJson = (name: string): string => core.experiment_json(name);
 /** A model's helper call (see `kumiki queries`): JSON arguments, a JSON answer. */
 export const query = <T = Record<string, unknown>>(model: string, name: string, args: unknown): T =>
   JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];
-/** Each figure of an experiment's plots from its rows (a JSON array), and its SVG. */
-export const experimentFigures = (experiment: string, rowsJson: string): { figure: Figure; svg: string }[] =>
-  core.experiment_figures(experiment, rowsJson) as { figure: Figure; svg: string }[];
-/** The rows exported with their provenance, the bytes `kumiki sweep` writes (`csv`, `json` lines, `traces`). */
-export const experimentExport = (experiment: string, rowsJson: string, format: 'csv' | 'json' | 'traces', time: string): string =>
-  core.experiment_export(experiment, rowsJson, format, time);
-/** An experiment's link payload (`x1.…`), and the experiment inside one. */
-export const packExperiment = (json: string): string => core.pack_experiment(json);
-export const unpackExperiment = (link: string): string => core.unpack_experiment(link);
-/** A claim of the reproduction report recomputed from its experiments' rows (name → row texts), as `kumiki reproduce` computes it. */
-export const reproduceClaim = (model: string, id: string, rows: Record<string, string[]>): Finding =>
-  core.reproduce_claim(
-    model,
-    id,
-    `{${Object.entries(rows)
-      .map(([name, texts]) => `${JSON.stringify(name)}:[${texts.join(',')}]`)
-      .join(',')}}`,
-  ) as Finding;
 export const version = (): string => core.version();
 
 /** A JSON Schema node, as far as the page reads one. */
@@ -151,14 +130,6 @@ export function modelSchema(model: string): ModelSchema | undefined {
 /** A text shape read by the core's rules; throws with the row and column of a bad character. */
 export const parseShape = (lattice: LatticeKind, text: string): Cells => core.shape_parse(lattice, text) as Cells;
 export const formatShape = (lattice: LatticeKind, s: Cells): string => core.shape_format(lattice, s.w, s.h, s.d, Uint8Array.from(s.cells));
-export const experimentInfo = (json: string): ExperimentInfo => {
-  const runner = new core.ExperimentRunner(json);
-  try {
-    return runner.info() as ExperimentInfo;
-  } finally {
-    runner.free();
-  }
-};
 
 /**
  * A model's helper call (see `models::query` in the core), for instance deriving the type-lists of

@@ -3,7 +3,7 @@
 
 use kumiki_wasm::{
     decode_link, encode_link, fresh_seed, link_model_versions, model_query, preset_json,
-    unpack_link, Draft, ExperimentRunner, Sim,
+    unpack_link, Draft, Sim,
 };
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -56,13 +56,6 @@ fn clicked_actions_enter_the_scenario() {
     sim.apply(r#"{"kind": "remove", "count": 1}"#).unwrap();
     assert!(sim.scenario_json().contains("\"disturbances\""));
     assert!(sim.apply(r#"{"kind": "bogus"}"#).is_err());
-}
-
-#[wasm_bindgen_test]
-fn experiment_jobs_run_in_wasm() {
-    let runner = ExperimentRunner::new("amas-fig23").unwrap();
-    assert!(runner.job_count() > 0);
-    assert!(runner.run(0).is_ok());
 }
 
 #[wasm_bindgen_test]

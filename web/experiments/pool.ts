@@ -1,6 +1,6 @@
 // Runs an experiment's jobs on a pool of workers, handing out the next job to whichever worker
 // finishes first. Rows come back in any order and are stored by job index.
-import { wasmModule } from '../wasm';
+import { labModule } from '../lab';
 import type { FromExperimentWorker, ToExperimentWorker } from './worker';
 
 export interface PoolEvents {
@@ -22,11 +22,11 @@ export class ExperimentPool {
     private readonly on: PoolEvents,
   ) {}
 
-  /** Starts `size` workers (no more than there are jobs), each with the page's compiled module. */
+  /** Starts `size` workers (no more than there are jobs), each with the page's compiled lab module. */
   async start(size: number) {
     let module: WebAssembly.Module;
     try {
-      module = await wasmModule();
+      module = await labModule();
     } catch (e) {
       this.fail(`the experiment cannot start: ${e instanceof Error ? e.message : String(e)}`);
       return;

@@ -1,6 +1,6 @@
 // An experiment worker: parses the experiment once, then runs the jobs it is handed. It runs the
-// page's compiled wasm module, handed over with the experiment: nothing is downloaded or compiled.
-import init, { ExperimentRunner, panic_message } from '../pkg/kumiki_wasm.js';
+// page's compiled lab module, handed over with the experiment: nothing is downloaded or compiled.
+import init, { ExperimentRunner, panic_message } from '../pkg/kumiki_lab.js';
 
 export type ToExperimentWorker = { type: 'setup'; experiment: string; module: WebAssembly.Module } | { type: 'run'; index: number };
 export type FromExperimentWorker = { type: 'ready' } | { type: 'row'; index: number; row: string } | { type: 'error'; index: number; message: string };

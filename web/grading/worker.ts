@@ -1,8 +1,8 @@
 // A grading worker: replays the hand-ins it is handed and judges each as `kumiki check` does
-// (the core's grading::grade, through grade_handin). It runs the page's compiled wasm module,
+// (the core's grading::grade, through grade_handin). It runs the page's compiled lab module,
 // handed over at setup: nothing is downloaded, and no hand-in leaves the machine.
 import type { Graded } from '../contract.gen';
-import init, { grade_handin, panic_message } from '../pkg/kumiki_wasm.js';
+import init, { grade_handin, panic_message } from '../pkg/kumiki_lab.js';
 
 export type ToGradeWorker = { type: 'setup'; module: WebAssembly.Module; exercise: string | null } | { type: 'grade'; index: number; link: string };
 export type FromGradeWorker = { type: 'ready' } | { type: 'graded'; index: number; row: Graded } | { type: 'failed'; message: string };

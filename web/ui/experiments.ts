@@ -1,8 +1,10 @@
 // The Experiments panel: choose or edit an experiment, keep it across reloads, share it as a
 // link (`#x1.…`) or a file, run it on a pool of workers with a progress bar, draw its figures
 // (the core's SVG, saved as SVG or PNG), and export the rows with their provenance, the same
-// bytes `kumiki sweep` writes.
+// bytes `kumiki sweep` writes. Its content comes from the lab module (web/lab.ts), loaded when the
+// tab is first shown, an experiment link is opened or the report opens an experiment.
 import { ExperimentPool } from '../experiments/pool';
+import { experimentExport, experimentInfo, experimentJson, experiments, loadLab, packExperiment, unpackExperiment } from '../lab';
 import type { Prefs } from '../store';
 import type { ExperimentInfo } from '../contract.gen';
 import * as core from '../wasm';
@@ -30,9 +32,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   const saveButton = byId<HTMLButtonElement>('experiment-save');
   const openInput = byId<HTMLInputElement>('experiment-open');
 
-  const builtIn = core.experiments();
-  for (const e of builtIn) select.append(el('option', { value: e.name, text: e.title ? `${e.name}: ${e.title}` : e.name }));
-  select.append(el('option', { value: '', text: 'Edited experiment' }));
+  let builtIn: ExperimentInfo[] = [];
   const cores = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
   workersInput.value = String(prefs.workers > 0 ? prefs.workers : cores);
 
@@ -42,7 +42,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
 
   const describe = (text: string) => {
     try {
-      const info = core.experimentInfo(text);
+      const info = experimentInfo(text);
       description.textContent = `${info.description} (${info.jobs.toLocaleString('en-US')} runs)`;
     } catch (e) {
       description.textContent = `This experiment cannot run: ${core.message(e)}`;
@@ -52,7 +52,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     const e = builtIn.find((x) => x.name === name) ?? builtIn[0];
     if (!e) return;
     select.value = e.name;
-    editor.value = core.experimentJson(e.name);
+    editor.value = experimentJson(e.name);
     description.textContent = `${e.description} (${e.jobs.toLocaleString('en-US')} runs)`;
   };
   /** Shows an experiment's text as an edited one, kept across reloads. */
@@ -66,22 +66,53 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   const fromLink = (hash: string): boolean => {
     if (!hash.startsWith('#x1.')) return false;
     try {
-      showEdited(core.unpackExperiment(hash));
+      showEdited(unpackExperiment(hash));
       return true;
     } catch (e) {
       report(`This experiment link could not be opened.\n${core.message(e)}`);
       return false;
     }
   };
-  if (fromLink(location.hash)) {
-    prefs.tab = 'experiments';
-  } else if (prefs.experimentText) {
-    showEdited(prefs.experimentText);
-  } else {
-    show(prefs.experiment);
-  }
+
+  // Until the lab module is loaded, nothing can run, be shared or be chosen.
+  const startLink = location.hash.startsWith('#x1.') ? location.hash : null;
+  if (startLink) prefs.tab = 'experiments';
+  runButton.disabled = select.disabled = linkButton.disabled = true;
+  let loaded: Promise<boolean> | null = null;
+  /** Loads the lab module once, then fills the panel: the built-in experiments and the one in view. */
+  const load = (): Promise<boolean> => {
+    loaded ??= loadLab().then(
+      () => {
+        builtIn = experiments();
+        for (const e of builtIn) select.append(el('option', { value: e.name, text: e.title ? `${e.name}: ${e.title}` : e.name }));
+        select.append(el('option', { value: '', text: 'Edited experiment' }));
+        status.textContent = '';
+        const opened = startLink !== null && fromLink(startLink);
+        if (!opened && prefs.experimentText) showEdited(prefs.experimentText);
+        else if (!opened) show(prefs.experiment);
+        runButton.disabled = select.disabled = linkButton.disabled = false;
+        return true;
+      },
+      (e: unknown) => {
+        loaded = null;
+        status.textContent = `The experiments could not be loaded: ${core.message(e)}`;
+        return false;
+      },
+    );
+    return loaded;
+  };
+  if (startLink) void load();
+  new MutationObserver(() => {
+    if (document.body.dataset.tab === 'experiments') {
+      if (!loaded) status.textContent = 'Loading the experiments…';
+      void load();
+    }
+  }).observe(document.body, { attributes: true, attributeFilter: ['data-tab'] });
   window.addEventListener('hashchange', () => {
-    if (fromLink(location.hash)) showTab();
+    if (!location.hash.startsWith('#x1.')) return;
+    void load().then((ok) => {
+      if (ok && fromLink(location.hash)) showTab();
+    });
   });
   /** Once the experiment changes, the address no longer holds it: a reload keeps the edit. */
   const leaveLink = () => {
@@ -91,13 +122,15 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   // The reproduction report opens the experiment behind its figures.
   window.addEventListener(OPEN_EXPERIMENT, (e) => {
     const name = (e as CustomEvent<string>).detail;
-    if (!builtIn.some((x) => x.name === name)) return;
-    leaveLink();
-    prefs.experiment = name;
-    prefs.experimentText = '';
-    savePrefs();
-    show(name);
-    showTab();
+    void load().then((ok) => {
+      if (!ok || !builtIn.some((x) => x.name === name)) return;
+      leaveLink();
+      prefs.experiment = name;
+      prefs.experimentText = '';
+      savePrefs();
+      show(name);
+      showTab();
+    });
   });
   select.addEventListener('change', () => {
     if (!select.value) return;
@@ -126,7 +159,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   linkButton.addEventListener('click', async () => {
     let payload: string;
     try {
-      payload = core.packExperiment(editor.value);
+      payload = packExperiment(editor.value);
     } catch (e) {
       status.textContent = `This experiment cannot be shared: ${core.message(e)}`;
       return;
@@ -145,7 +178,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   saveButton.addEventListener('click', () => {
     let name = 'experiment';
     try {
-      name = core.experimentInfo(editor.value).name;
+      name = experimentInfo(editor.value).name;
     } catch {
       // A draft that does not read yet is saved as it is, under a neutral name.
     }
@@ -190,7 +223,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     const text = editor.value;
     let info: ExperimentInfo;
     try {
-      info = core.experimentInfo(text);
+      info = experimentInfo(text);
     } catch (e) {
       status.textContent = `This experiment cannot run: ${core.message(e)}`;
       return;
@@ -252,7 +285,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
     if (!ran) return;
     const ext = format === 'json' ? 'jsonl' : 'csv';
     const name = format === 'traces' ? `${ran.info.name}-traces` : ran.info.name;
-    const text = core.experimentExport(ran.text, `[${finished().join(',')}]`, format, ran.time);
+    const text = experimentExport(ran.text, `[${finished().join(',')}]`, format, ran.time);
     download(`${name}.${ext}`, text, format === 'json' ? 'application/x-ndjson' : 'text/csv');
   };
   csv.addEventListener('click', () => save('csv'));

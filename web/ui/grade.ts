@@ -5,6 +5,7 @@
 import type { Graded } from '../contract.gen';
 import type { FromGradeWorker, ToGradeWorker } from '../grading/worker';
 import { type GradedRow, gradesCsv, type Handin, parseHandins } from '../grading/handins';
+import { exerciseTitle, labModule, loadLab } from '../lab';
 import * as core from '../wasm';
 import { byId, clear, download, el, formatNumber } from './dom';
 
@@ -32,7 +33,7 @@ class GradePool {
   ) {}
 
   async start(size: number) {
-    const module = await core.wasmModule();
+    const module = await labModule();
     if (this.stopped) return;
     const n = Math.max(1, Math.min(size, this.handins.length));
     for (let w = 0; w < n; w++) this.spawn(module, w);
@@ -122,13 +123,14 @@ export function setupGrade() {
   });
 
   /** The teacher's exercise, checked: null for each hand-in's own; false when it cannot grade. */
-  const exercise = (): string | null | false => {
+  const exercise = async (): Promise<string | null | false> => {
     const text = exerciseInput.value.trim();
     exerciseNote.textContent = '';
     exerciseInput.setAttribute('aria-invalid', 'false');
     if (!text) return null;
     try {
-      exerciseNote.textContent = `Graded by “${core.exerciseTitle(text)}”: its goal and its locks.`;
+      await loadLab();
+      exerciseNote.textContent = `Graded by “${exerciseTitle(text)}”: its goal and its locks.`;
       return text;
     } catch (e) {
       exerciseNote.textContent = core.message(e);
@@ -175,8 +177,8 @@ export function setupGrade() {
     status.textContent = text;
   };
 
-  start.addEventListener('click', () => {
-    const teacher = exercise();
+  start.addEventListener('click', async () => {
+    const teacher = await exercise();
     if (teacher === false) return;
     const handins = parseHandins(input.value);
     if (!handins.length) {

@@ -2,7 +2,7 @@
 // (crate/core/src/plot), the same figure `kumiki sweep --plot svg` writes; the page shows it,
 // writes a summary as a table, and saves each figure as SVG or PNG (twice the size).
 import type { Figure } from '../contract.gen';
-import * as core from '../wasm';
+import { experimentFigures } from '../lab';
 import { clear, download, el, figureFileName, formatNumber } from './dom';
 
 /** The SVG as a PNG of twice its size, drawn on a white background. */
@@ -82,7 +82,7 @@ function summaryTable(f: Figure): HTMLElement {
 /** Draws every figure of `experiment` (its JSON text or built-in name) from the rows' JSON texts. */
 export function renderPlots(root: HTMLElement, experiment: string, name: string, rowTexts: string[]) {
   clear(root);
-  const drawn = core.experimentFigures(experiment, `[${rowTexts.join(',')}]`);
+  const drawn = experimentFigures(experiment, `[${rowTexts.join(',')}]`);
   drawn.forEach(({ figure, svg }, i) => {
     const box = el('figure', { class: 'plot', 'data-kind': figure.kind });
     const heading = figure.title || `Figure ${i + 1}`;

@@ -7,6 +7,7 @@
 import report from '../../docs/reproduction.json';
 import type { Claim, Finding, Section } from '../contract.gen';
 import { ExperimentPool } from '../experiments/pool';
+import { experimentInfo, experimentJson, loadLab, reproduceClaim } from '../lab';
 import * as core from '../wasm';
 import { byId, clear, el, formatNumber } from './dom';
 
@@ -127,7 +128,7 @@ function claimRow(model: string, c: Claim) {
       text: 'Re-run',
       'aria-label': `Re-run ${c.experiments.join(' and ')} here and recompute this claim (${c.section})`,
     });
-    rerun.addEventListener('click', () => startRerun(model, c, row));
+    rerun.addEventListener('click', () => void startRerun(model, c, row));
     actions.append(rerun);
   } else {
     actions.append(el('span', { class: 'hint', text: 'Read from no experiment: nothing to re-run.' }));
@@ -166,8 +167,11 @@ function differences(again: Finding, c: Claim): string[] {
   return out;
 }
 
-/** Runs the claim's experiments on a pool of workers, then recomputes the claim from their rows. */
-function startRerun(model: string, c: Claim, row: HTMLTableRowElement) {
+/**
+ * Runs the claim's experiments on a pool of workers, then recomputes the claim from their rows
+ * (with the lab module, loaded first).
+ */
+async function startRerun(model: string, c: Claim, row: HTMLTableRowElement) {
   active?.stop();
   row.parentElement?.querySelector('tr.rerun-row')?.remove();
   const bar = el('div');
@@ -195,10 +199,19 @@ function startRerun(model: string, c: Claim, row: HTMLTableRowElement) {
   );
   const holder = el('tr', { class: 'rerun-row' }, el('td', { colspan: 5 }, box));
   row.after(holder);
+  status.textContent = 'Loading the experiments…';
+  try {
+    await loadLab();
+  } catch (e) {
+    status.textContent = `The experiments could not be loaded: ${core.message(e)}`;
+    return;
+  }
+  // Another re-run took this one's place while the lab module loaded.
+  if (!holder.isConnected) return;
 
   const infos = c.experiments.map((name) => {
-    const text = core.experimentJson(name);
-    return { name, text, jobs: core.experimentInfo(text).jobs };
+    const text = experimentJson(name);
+    return { name, text, jobs: experimentInfo(text).jobs };
   });
   const total = infos.reduce((n, e) => n + e.jobs, 0);
   const rows: Record<string, string[]> = {};
@@ -263,7 +276,7 @@ function startRerun(model: string, c: Claim, row: HTMLTableRowElement) {
     finish();
     let again: Finding;
     try {
-      again = core.reproduceClaim(model, c.id, rows);
+      again = reproduceClaim(model, c.id, rows);
     } catch (e) {
       status.textContent = `The claim could not be recomputed: ${core.message(e)}`;
       return;

@@ -15,13 +15,11 @@ use serde_json::{json, Value};
 pub use kumiki_model::report::*;
 
 /// Every model's paper, in report order (the registry's, [`crate::models::MODELS`]).
-#[cfg(feature = "report")]
 pub fn papers() -> impl Iterator<Item = &'static Paper> {
-    crate::models::MODELS.iter().map(|m| m.paper)
+    crate::models::PAPERS.iter()
 }
 
 /// The paper of one model.
-#[cfg(feature = "report")]
 pub fn paper(model: &str) -> Option<&'static Paper> {
     papers().find(|p| p.model == model)
 }

@@ -1,5 +1,5 @@
 //! How a model is registered: its [`ModelEntry`] (name, title, version, metrics, limits, the
-//! reader of its keys, their schemas, its helper calls and its paper), and the object-safe face
+//! reader of its keys, their schemas and its helper calls), and the object-safe face
 //! of its description ([`AnySpec`]) that a scenario holds whatever the model, with what checking
 //! it learnt ([`Learnt`]).
 
@@ -41,8 +41,6 @@ pub struct ModelEntry {
     pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
-    /// Its paper's claims for the reproduction report ([`paper_of`] its `Paper`).
-    pub paper: PaperOf,
 }
 
 /// A JSON Schema as a [`ModelEntry`] names it: [`schema_of`] a type. A function of the schema
@@ -52,13 +50,6 @@ pub struct ModelEntry {
 pub type SchemaOf = fn(&mut schemars::SchemaGenerator) -> schemars::Schema;
 #[cfg(not(feature = "schema"))]
 pub type SchemaOf = ();
-
-/// A paper as a [`ModelEntry`] names it: [`paper_of`] it. The paper in builds with the `report`
-/// feature; nothing in the others, so the findings' code is not linked there.
-#[cfg(feature = "report")]
-pub type PaperOf = &'static crate::report::Paper;
-#[cfg(not(feature = "report"))]
-pub type PaperOf = ();
 
 /// What a key of the envelope is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, schemars::JsonSchema)]
@@ -197,13 +188,3 @@ pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {
 /// Without the `schema` feature, nothing.
 #[cfg(not(feature = "schema"))]
 pub const fn schema_of<T: schemars::JsonSchema>() -> SchemaOf {}
-
-/// A model's paper: the `paper` of its [`ModelEntry`].
-#[cfg(feature = "report")]
-pub const fn paper_of(paper: &'static crate::report::Paper) -> PaperOf {
-    paper
-}
-
-/// Without the `report` feature, nothing.
-#[cfg(not(feature = "report"))]
-pub const fn paper_of(_: &'static crate::report::Paper) -> PaperOf {}

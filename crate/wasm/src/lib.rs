@@ -1,7 +1,8 @@
 //! The page's window into the core: one simulation handle ([`Sim`]), one view handle
 //! ([`Viewer`], which draws a `Sim` from its buffers in place), one handle on the scenario the
-//! page edits ([`Draft`]), one experiment handle ([`ExperimentRunner`]) and a few free functions.
-//! Small records go through serde-wasm-bindgen. No simulation logic lives here.
+//! page edits ([`Draft`]) and a few free functions: what the page needs to open. Experiments,
+//! the report's claims and grading are the lab module's (`kumiki-lab`), loaded when the page
+//! needs them. Small records go through serde-wasm-bindgen. No simulation logic lives here.
 
 use std::sync::Mutex;
 
@@ -12,7 +13,6 @@ use wasm_bindgen::prelude::*;
 mod catalog;
 mod draft;
 mod exercise;
-mod experiment;
 mod scenario;
 mod shapes;
 mod share;
@@ -21,7 +21,6 @@ mod viewer;
 pub use catalog::*;
 pub use draft::Draft;
 pub use exercise::*;
-pub use experiment::*;
 pub use scenario::*;
 pub use shapes::*;
 pub use share::*;

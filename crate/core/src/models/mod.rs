@@ -22,7 +22,7 @@ mod docs_tests;
 mod metrics_tests;
 mod registry;
 
-pub use registry::MODELS;
+pub use registry::{MODELS, PAPERS};
 
 /// The table of a model's metrics, in the order the model lists them.
 pub fn metric_table(model: &str) -> Result<&'static [MetricInfo]> {

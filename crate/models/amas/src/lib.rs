@@ -43,7 +43,6 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
     queries: &[],
-    paper: entry::paper_of(&paper::PAPER),
 };
 
 const NONE: u32 = u32::MAX;

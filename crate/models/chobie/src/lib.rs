@@ -63,7 +63,6 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: queries::merge,
         },
     ],
-    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The checked parameters a run uses.

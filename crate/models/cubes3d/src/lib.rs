@@ -71,7 +71,6 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
-    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

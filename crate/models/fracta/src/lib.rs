@@ -86,7 +86,6 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: queries::types,
         },
     ],
-    paper: entry::paper_of(&paper::PAPER),
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see
