@@ -16,12 +16,22 @@ const median = (xs) => {
   return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
 };
 
-function scenarioJson(spec) {
-  let json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
-  for (const [path, value] of Object.entries(spec.set ?? {})) {
-    json = wasm.override_scenario(json, path, JSON.stringify(value));
+/**
+ * The workload's scenario JSON: its preset or its own scenario, with its `set` paths changed the
+ * way the page's form changes them (a Draft, which checks the result) and `kumiki bench` does.
+ */
+export function scenarioJson(spec) {
+  const json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
+  if (!spec.set) return json;
+  const draft = new wasm.Draft(Number.MAX_SAFE_INTEGER);
+  try {
+    let proposal = draft.open(json, false);
+    if (!proposal.problem) proposal = draft.edit_all(JSON.stringify(spec.set));
+    if (proposal.problem) throw new Error(`${spec.name}: ${proposal.in_full ?? proposal.problem}`);
+    return proposal.text;
+  } finally {
+    draft.free();
   }
-  return json;
 }
 
 export function measure(spec) {
@@ -38,20 +48,35 @@ export function measure(spec) {
   }
   const json = scenarioJson(spec);
   // The bare run (wasm.Stepper) is the work `kumiki bench` times natively; the page's Sim also
-  // keeps keyframes for rewind and every step's metrics for the chart, timed apart.
-  const rate = (Handle) => {
-    const rates = [];
-    for (let r = 0; r <= repeats; r++) {
-      const run = new Handle(json);
-      run.advance(spec.warmup ?? 0);
-      const t = performance.now();
-      const done = run.advance(spec.steps ?? 100);
-      const secs = (performance.now() - t) / 1000;
-      if (r > 0) rates.push(done / Math.max(secs, 1e-9));
-      run.free();
-    }
-    return median(rates);
+  // keeps keyframes for rewind and the metrics for the chart. The two are timed in turn, one
+  // repeat each, the first of the pair alternating, so that the machine's load (shared, noisy)
+  // falls on both alike: the page's Sim/bare compares the same workload, steps and build.
+  const once = (Handle) => {
+    const run = new Handle(json);
+    run.advance(spec.warmup ?? 0);
+    const t = performance.now();
+    const done = run.advance(spec.steps ?? 100);
+    const secs = (performance.now() - t) / 1000;
+    run.free();
+    return done / Math.max(secs, 1e-9);
   };
+  const bare = [];
+  const page = [];
+  for (let r = 0; r <= repeats; r++) {
+    let bareRate;
+    let pageRate;
+    if (r % 2) {
+      pageRate = once(wasm.Sim);
+      bareRate = once(wasm.Stepper);
+    } else {
+      bareRate = once(wasm.Stepper);
+      pageRate = once(wasm.Sim);
+    }
+    if (r > 0) {
+      bare.push(bareRate);
+      page.push(pageRate);
+    }
+  }
   const probe = new wasm.Sim(json);
   const cells = probe.cells().length;
   probe.free();
@@ -59,8 +84,8 @@ export function measure(spec) {
     name: spec.name,
     target: 'wasm',
     cells,
-    steps_per_second: rate(wasm.Stepper),
-    page_steps_per_second: rate(wasm.Sim),
+    steps_per_second: median(bare),
+    page_steps_per_second: median(page),
   };
   if (spec.work_per_step) {
     out.work_unit = spec.work_unit ?? '';

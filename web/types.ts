@@ -16,6 +16,11 @@ export interface ChartBand {
   max: Float64Array;
   /** Steps per recorded bucket: 1 until the record is full, then doubling. */
   span: number;
+  /**
+   * Steps between two readings of the metrics: 1 (every step) unless reading them costs more
+   * than 5 % of the stepping time, then a power of two (kumiki_core::playback::CHART_TIME_SHARE).
+   */
+  every: number;
 }
 
 /**
@@ -44,10 +49,15 @@ export interface Frame {
   work: WorkerTiming;
 }
 
-/** Milliseconds the worker spent stepping, uploading buffers and issuing draws, and frames drawn. */
+/**
+ * Milliseconds the worker spent stepping, uploading buffers and issuing draws, and frames drawn;
+ * and the size of the worker's wasm memory, which grows to the most it ever held and never
+ * shrinks (the page benchmark's bytes per cell).
+ */
 export interface WorkerTiming {
   stepMs: number;
   frames: number;
   uploadMs: number;
   drawMs: number;
+  wasmBytes: number;
 }
