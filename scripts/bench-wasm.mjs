@@ -1,6 +1,6 @@
-// Times the workloads of tests/bench/*.json through the wasm build in Node, exactly as
-// `kumiki bench` times them natively: fresh run per repeat, warm-up steps, one uncounted repeat
-// first (so V8 has tiered the code up), median rate.
+// Times the workloads of tests/bench/*.json through the wasm build in Node, as `kumiki bench`
+// times them natively: fresh runs, warm-up steps, one uncounted repeat first (so V8 has tiered
+// the code up), median rate over the repeats (a repeat of a short workload sums several runs).
 // Usage: node scripts/bench-wasm.mjs tests/bench/a.json [more.json ...]   (one JSON line each)
 import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
@@ -34,6 +34,9 @@ export function scenarioJson(spec) {
   }
 }
 
+/** The least time a repeat of a workload is timed for, bare run and page's Sim together. */
+const REPEAT_SECONDS = 0.2;
+
 export function measure(spec) {
   const repeats = Math.max(1, spec.repeats ?? 5);
   if (spec.experiment) {
@@ -48,9 +51,11 @@ export function measure(spec) {
   }
   const json = scenarioJson(spec);
   // The bare run (wasm.Stepper) is the work `kumiki bench` times natively; the page's Sim also
-  // keeps keyframes for rewind and the metrics for the chart. The two are timed in turn, one
-  // repeat each, the first of the pair alternating, so that the machine's load (shared, noisy)
-  // falls on both alike: the page's Sim/bare compares the same workload, steps and build.
+  // keeps keyframes for rewind and the metrics for the chart. The two are timed in turn, a run of
+  // each, the first of the pair alternating, and a repeat takes pairs until it has timed at least
+  // REPEAT_SECONDS: on this shared machine a run of a few milliseconds is often preempted, and
+  // only runs interleaved this finely share the load alike. So the page's Sim/bare compares the
+  // same workload, steps and build under the same load.
   const once = (Handle) => {
     const run = new Handle(json);
     run.advance(spec.warmup ?? 0);
@@ -58,23 +63,28 @@ export function measure(spec) {
     const done = run.advance(spec.steps ?? 100);
     const secs = (performance.now() - t) / 1000;
     run.free();
-    return done / Math.max(secs, 1e-9);
+    return { done, secs };
   };
   const bare = [];
   const page = [];
   for (let r = 0; r <= repeats; r++) {
-    let bareRate;
-    let pageRate;
-    if (r % 2) {
-      pageRate = once(wasm.Sim);
-      bareRate = once(wasm.Stepper);
-    } else {
-      bareRate = once(wasm.Stepper);
-      pageRate = once(wasm.Sim);
+    const sum = { bare: { done: 0, secs: 0 }, page: { done: 0, secs: 0 } };
+    const add = (to, { done, secs }) => {
+      to.done += done;
+      to.secs += secs;
+    };
+    for (let pair = 0; pair === 0 || sum.bare.secs + sum.page.secs < REPEAT_SECONDS; pair++) {
+      if (pair % 2) {
+        add(sum.page, once(wasm.Sim));
+        add(sum.bare, once(wasm.Stepper));
+      } else {
+        add(sum.bare, once(wasm.Stepper));
+        add(sum.page, once(wasm.Sim));
+      }
     }
     if (r > 0) {
-      bare.push(bareRate);
-      page.push(pageRate);
+      bare.push(sum.bare.done / Math.max(sum.bare.secs, 1e-9));
+      page.push(sum.page.done / Math.max(sum.page.secs, 1e-9));
     }
   }
   const probe = new wasm.Sim(json);
