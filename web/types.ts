@@ -16,11 +16,6 @@ export interface ChartBand {
   max: Float64Array;
   /** Steps per recorded bucket: 1 until the record is full, then doubling. */
   span: number;
-  /**
-   * Steps between two readings of the metrics: 1 (every step) unless reading them costs more
-   * than 5 % of the stepping time, then a power of two (kumiki_core::playback::CHART_TIME_SHARE).
-   */
-  every: number;
 }
 
 /**

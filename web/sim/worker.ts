@@ -223,11 +223,11 @@ function touched() {
   redraw();
 }
 
-/** The charted metric's record of every step so far (or every k-th), merged to about one point per pixel. */
+/** The charted metric's record of every step so far, merged to about one point per pixel. */
 function chartBand(s: Sim, metric: string): ChartBand {
   const flat = s.chart(metric, chartPoints);
   const n = flat.length / 3;
-  return { metric, steps: flat.slice(0, n), min: flat.slice(n, 2 * n), max: flat.slice(2 * n), span: s.chart_span(), every: s.chart_every() };
+  return { metric, steps: flat.slice(0, n), min: flat.slice(n, 2 * n), max: flat.slice(2 * n), span: s.chart_span() };
 }
 
 /** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
