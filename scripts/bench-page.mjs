@@ -5,7 +5,8 @@
 // or with {"orbit": true} turned, and then not played at all): what the renderer alone keeps up
 // with. With {"trace": true} the drag is then repeated under a Chromium trace, which shows where
 // each process's time goes (see `profile`). After playing, the resident memory of the page's
-// renderer process and of the GPU process is read from /proc (Linux).
+// renderer process and of the GPU process is read from /proc (Linux), with the size of the wasm
+// memory of the worker and of the page's main thread, and the same for the default page first.
 import { readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { launch, serve } from '../tests/e2e/harness.mjs';
@@ -91,17 +92,55 @@ async function profile(browser, drag) {
   };
 }
 
-/** Resident megabytes of the largest renderer process (the page in use) and of the GPU process. */
-async function residentMb(browser) {
+/** The ids of the browser's renderer processes. */
+async function rendererIds(browser) {
+  const cdp = await browser.newBrowserCDPSession();
+  const ids = (await processes(cdp)).filter((p) => p.type === 'renderer').map((p) => p.id);
+  await cdp.detach();
+  return new Set(ids);
+}
+
+/** Resident megabytes of a process, 0 once it has ended. */
+function rss(pid) {
+  try {
+    const m = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));
+    return m ? Number(m[1]) / 1024 : 0;
+  } catch {
+    return 0;
+  }
+}
+
+/**
+ * Resident megabytes of the page's renderer process (the whole process: its main thread, its
+ * worker, both wasm memories, its share of the code) and of the GPU process. The page's renderer
+ * is the largest of those started since `before` was read (a browser context has processes of its
+ * own), so a closed page's renderer that has not ended yet is not taken for it.
+ */
+async function residentMb(browser, before) {
   const cdp = await browser.newBrowserCDPSession();
   const processInfo = await processes(cdp);
   await cdp.detach();
-  const rss = (pid) => {
-    const m = /VmRSS:\s+(\d+) kB/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));
-    return m ? Number(m[1]) / 1024 : 0;
+  const renderers = processInfo.filter((p) => p.type === 'renderer' && !before.has(p.id));
+  return {
+    renderer: Math.max(0, ...renderers.map((p) => rss(p.id))),
+    gpu: Math.max(0, ...processInfo.filter((p) => p.type === 'GPU').map((p) => rss(p.id))),
   };
-  const of = (type) => Math.max(0, ...processInfo.filter((p) => p.type === type).map((p) => rss(p.id)));
-  return { renderer: of('renderer'), gpu: of('GPU') };
+}
+
+/** Waits (at most 10 s) until the renderer processes started since `before` have ended. */
+async function ended(browser, before) {
+  for (let i = 0; i < 100; i++) {
+    if ([...(await rendererIds(browser))].every((id) => before.has(id))) return;
+    await new Promise((r) => setTimeout(r, 100));
+  }
+}
+
+/** The wasm memory of the worker and of the page's main thread, in megabytes. */
+async function wasmMb(page) {
+  return page.evaluate(() => ({
+    worker: (JSON.parse(document.body.dataset.work ?? '{}').wasmBytes ?? 0) / 2 ** 20,
+    page: Number(document.body.dataset.wasmBytes ?? 0) / 2 ** 20,
+  }));
 }
 
 export async function benchPage(pageSpecs, linkFor) {
@@ -109,18 +148,27 @@ export async function benchPage(pageSpecs, linkFor) {
   const browser = await launch();
   try {
     const loads = [];
+    // The default page's memory, once it has drawn: what a scenario's memory adds to.
+    let idle;
     for (let i = 0; i < 5; i++) {
+      const before = await rendererIds(browser);
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
       const page = await context.newPage();
       const t = performance.now();
       await page.goto(server.url);
       await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
       loads.push(performance.now() - t);
+      if (i === 4) {
+        await page.waitForTimeout(1000);
+        idle = { residentMb: await residentMb(browser, before), wasmMb: await wasmMb(page) };
+      }
       await context.close();
+      await ended(browser, before);
     }
     const runs = [];
     for (const spec of pageSpecs) {
       const seconds = spec.page.seconds ?? 10;
+      const before = await rendererIds(browser);
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
       const page = await context.newPage();
       await page.goto(`${server.url}#${linkFor(spec)}`);
@@ -150,7 +198,15 @@ export async function benchPage(pageSpecs, linkFor) {
         const a = await read();
         await page.waitForTimeout(seconds * 1000);
         const b = await read();
-        runs.push({ name: spec.name, seconds, renderer, moving: 'playing', ...rates(a, b), residentMb: await residentMb(browser) });
+        runs.push({
+          name: spec.name,
+          seconds,
+          renderer,
+          moving: 'playing',
+          ...rates(a, b),
+          residentMb: await residentMb(browser, before),
+          wasmMb: await wasmMb(page),
+        });
         // Paused by the keyboard: a click would first wait for the page's own animation frames,
         // which come slowly while the software rasteriser is busy with the view.
         await page.keyboard.press('Space');
@@ -176,8 +232,9 @@ export async function benchPage(pageSpecs, linkFor) {
       await page.mouse.up();
       runs.push({ name: spec.name, seconds, renderer, moving: spec.page.orbit ? 'orbiting' : 'panning', ...rates(a, b), profile: traced });
       await context.close();
+      await ended(browser, before);
     }
-    return { loads, loadMs: median(loads), runs };
+    return { loads, loadMs: median(loads), idle, runs };
   } finally {
     await browser.close();
     await server.close();

@@ -74,7 +74,7 @@ function nativeSoak() {
 
 function wasmSoak(model, preset, exports) {
   let seed = JSON.parse(wasm.preset_json(preset)).seed;
-  const open = () => new wasm.Sim(wasm.override_scenario(wasm.preset_json(preset), 'seed', String(seed)));
+  const open = () => new wasm.Sim(JSON.stringify({ ...JSON.parse(wasm.preset_json(preset)), seed }));
   let sim = open();
   let taken = 0;
   let runs = 1;

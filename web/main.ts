@@ -82,6 +82,7 @@ const sim = new SimClient({
     document.body.dataset.ready = 'true';
     framesDrawn++;
     document.body.dataset.work = JSON.stringify(frame.work);
+    document.body.dataset.wasmBytes = String(core.wasmBytes());
     session.setFrame(frame);
     announcer.frame(frame, run.playing, run.chartedMetric(), inspector.cellText);
     structure.frame(frame.steps);

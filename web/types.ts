@@ -44,10 +44,15 @@ export interface Frame {
   work: WorkerTiming;
 }
 
-/** Milliseconds the worker spent stepping, uploading buffers and issuing draws, and frames drawn. */
+/**
+ * Milliseconds the worker spent stepping, uploading buffers and issuing draws, and frames drawn;
+ * and the size of the worker's wasm memory, which grows to the most it ever held and never
+ * shrinks (the page benchmark's bytes per cell).
+ */
 export interface WorkerTiming {
   stepMs: number;
   frames: number;
   uploadMs: number;
   drawMs: number;
+  wasmBytes: number;
 }

@@ -20,8 +20,16 @@ export function wasmModule(): Promise<WebAssembly.Module> {
   return compiled;
 }
 
+/** The page's own wasm memory (the worker has another). */
+let memory: WebAssembly.Memory | null = null;
+
 export async function loadCore(): Promise<void> {
-  await init({ module_or_path: await wasmModule() });
+  memory = (await init({ module_or_path: await wasmModule() })).memory;
+}
+
+/** Bytes of the page's own wasm memory: the most it ever held, since wasm memory never shrinks. */
+export function wasmBytes(): number {
+  return memory?.buffer.byteLength ?? 0;
 }
 
 /** A core error as plain text (wasm-bindgen's JsError arrives as an Error). */

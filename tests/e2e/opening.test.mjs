@@ -119,12 +119,12 @@ describe('large scenarios', () => {
       page.evaluate((l) => {
         location.hash = l;
       }, wasm.encode_link(json));
-    // 2000 × 2000 (within the page's limits): 4,000,000 cells at 42 bytes a cell.
+    // 2000 × 2000 (within the page's limits): 4,000,000 cells at 34 bytes a cell.
     await go(amas(2000));
     await page.waitForSelector('#large-ask[open]', { timeout: 5000 });
     const text = await page.textContent('#large-ask-text');
     assert.match(text, /4,000,000 cells/);
-    assert.match(text, /about 160 MB of memory/);
+    assert.match(text, /about 130 MB of memory/);
     // Declined: nothing opens, the scenario in view and its run stay, the link is let go.
     await page.click('#large-ask-keep');
     await page.waitForSelector('#large-ask', { state: 'hidden' });

@@ -156,10 +156,12 @@ function sendFrame(force = false) {
 
 /** Milliseconds spent in the model's steps since the worker started. */
 let stepMs = 0;
+/** The wasm instance's memory, once started. */
+let memory: WebAssembly.Memory | null = null;
 
 function work(): Frame['work'] {
   const [frames, uploadMs, drawMs] = viewer ? viewer.timing() : [0, 0, 0];
-  return { stepMs, frames, uploadMs, drawMs };
+  return { stepMs, frames, uploadMs, drawMs, wasmBytes: memory?.buffer.byteLength ?? 0 };
 }
 
 /** Draws the lattice as it stands, now. */
@@ -608,7 +610,8 @@ scope.onmessage = (e: MessageEvent<ToWorker>) => {
 /** Starts with the page's compiled module (compiled once, for both threads). */
 function start(module: WebAssembly.Module) {
   init({ module_or_path: module })
-    .then(() => {
+    .then((exports) => {
+      memory = exports.memory;
       ready = true;
       post({ type: 'ready' });
       for (const m of queue.splice(0)) take(m);

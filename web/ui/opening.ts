@@ -18,11 +18,13 @@ export const LARGE_CELLS = 1 << 18;
 
 /**
  * Memory a scenario adds to the page, per cell of its largest shape, measured in headless
- * Chromium (renderer plus GPU process, resident, once the run has drawn, over the default
- * scenario's): an AMAS target of 2000 × 2000 added 167 MB (42 B a cell) and the page's largest,
- * 4096 × 4088, 578 MB (35 B a cell). AMAS reaches by far the largest lattices of the four models.
+ * Chromium (renderer plus GPU process, resident, after playing 10 s, over the default page's) on
+ * 2026-11-27: an AMAS target of 2000 × 2000 added 128 MB (34 B a cell: the run, its one keyframe,
+ * the view's copy and textures) and the page's largest, 4096 × 4088, 282 MB (18 B a cell: too
+ * large for a keyframe; `npm run bench` prints it). The larger share is the estimate, so it errs
+ * high. AMAS reaches by far the largest lattices of the four models.
  */
-const BYTES_PER_CELL = 42;
+const BYTES_PER_CELL = 34;
 /** The page's own memory, measured the same way with the default scenario: renderer and GPU process. */
 const PAGE_MB = 350;
 /** Above this many megabytes of its own, a scenario is opened only once the user agrees. */

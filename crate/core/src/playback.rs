@@ -30,9 +30,12 @@ pub const KEYFRAME_EVERY: u64 = 16;
 pub const KEYFRAME_TIME_SHARE: f64 = 0.05;
 /// Keyframes are judged too costly only once this much time (ms) has been measured, so that one
 /// slow copy among fast steps (or a coarse clock: browsers round `performance.now()` to 0.1 ms)
-/// does not widen the interval. Short, so that a fast model (a few microseconds a step, a copy
-/// costing 40 steps) stops copying at every 16th step within its first hundred steps.
-const COST_WINDOW_MS: f64 = 1.0;
+/// does not often widen the interval. Short, so that a fast model (a few microseconds a step, a
+/// copy costing 40 steps) stops copying at every 16th step within its first fifty steps: over
+/// a whole millisecond such a model spent as long copying as stepping (the bench's
+/// cubes-box12-ladder, 1000 steps from its start). A wrong widening costs little: the interval
+/// is set so that replaying it takes about twenty copies' time.
+const COST_WINDOW_MS: f64 = 0.25;
 
 /// Time spent stepping and copying keyframes since the interval last changed, in milliseconds,
 /// and the steps and copies it covers.

@@ -198,8 +198,14 @@ impl ModelSpec {
     /// the check learnt: taken rather than copied when nothing else shares it, so a run holds no
     /// second copy of a large scenario's shapes.
     pub fn build_once(&mut self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
-        let model = self.build(seed, limits);
-        self.learnt = None;
-        model
+        // Taken before building: while this description still held it, the build would find it
+        // shared and copy it (32 MB of shapes for the 4096² AMAS, held beside the model).
+        let Some(learnt) = self.learnt.take() else {
+            return self.build(seed, limits);
+        };
+        let model = self.spec.build(learnt, seed);
+        #[cfg(test)]
+        crate::counts::build();
+        Ok(model)
     }
 }

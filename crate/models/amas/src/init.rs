@@ -55,9 +55,21 @@ impl Amas {
             w,
             sh,
         );
-        let supply_cells = w * plan.supply_rows as usize;
+        // The plan's shapes (a byte a cell each) are read: freed before the model's larger
+        // buffers are made, so they are not held beside them. In wasm, memory that grew never
+        // shrinks, and the page's 4096² lattice would keep them for good.
+        let spec::Plan {
+            supply_rows,
+            robots: robot_count,
+            params,
+            stages: shapes,
+            initial,
+            ..
+        } = plan;
+        drop((shapes, initial));
+        let supply_cells = w * supply_rows as usize;
         let mut place_rng = Rng::stream(seed, STREAM_PLACEMENT);
-        let starts = place_rng.sample_distinct(supply_cells, plan.robots as usize);
+        let starts = place_rng.sample_distinct(supply_cells, robot_count as usize);
         let mut occupant = vec![NONE; n];
         let robots: Vec<Robot> = starts
             .iter()
@@ -78,9 +90,9 @@ impl Amas {
             })
             .collect();
         let robots_n = robots.len();
-        let field = match plan.params.field {
+        let field = match params.field {
             FieldKind::Discrete => Field::discrete(n, w),
-            FieldKind::Continuous => Field::continuous(n, w, plan.params.diffusion),
+            FieldKind::Continuous => Field::continuous(n, w, params.diffusion),
         };
         let mut m = Amas {
             w,
@@ -90,7 +102,7 @@ impl Amas {
             state,
             occupant,
             field,
-            p: plan.params,
+            p: params,
             robots,
             order: (0..robots_n as u32).collect(),
             plans: vec![Plan::Wait; robots_n],

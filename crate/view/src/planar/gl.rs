@@ -131,6 +131,40 @@ void main() {
   if (outColor.a == 0.0) discard;
 }";
 
+/// Sizes an overlay texture: one float a cell.
+fn size_field(gl: &Gl, tex: &WebGlTexture, w: i32, h: i32) -> Result<(), JsValue> {
+    gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
+    gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
+        Gl::TEXTURE_2D,
+        0,
+        Gl::R32F as i32,
+        w,
+        h,
+        0,
+        Gl::RED,
+        Gl::FLOAT,
+        None,
+    )
+}
+
+/// Two increasing lists of rows merged into one, each row once.
+fn merged(a: &[usize], b: &[usize]) -> Vec<usize> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        let next = match (a.get(i), b.get(j)) {
+            (Some(&x), Some(&y)) => x.min(y),
+            (Some(&x), None) => x,
+            (None, Some(&y)) => y,
+            (None, None) => unreachable!(),
+        };
+        i += usize::from(a.get(i) == Some(&next));
+        j += usize::from(b.get(j) == Some(&next));
+        out.push(next);
+    }
+    out
+}
+
 /// Changed rows this close together are uploaded as one band: a call per row would cost more than
 /// the few unchanged rows between them.
 const ROW_GAP: usize = 16;
@@ -153,8 +187,9 @@ fn row_bands(changed: impl IntoIterator<Item = usize>, gap: usize) -> Vec<(usize
 struct Frames {
     cells: WebGlTexture,
     field: WebGlTexture,
-    /// The codes `cells` holds, so an upload sends only the rows that changed since.
-    shadow: Vec<u8>,
+    /// `field` is sized to the lattice: only once an overlay is drawn, since it takes 4 bytes a
+    /// cell (the GPU process held 128 MB of them for the 4096² AMAS that showed none).
+    field_sized: bool,
 }
 
 impl Frames {
@@ -162,7 +197,7 @@ impl Frames {
         Ok(Frames {
             cells: texture(gl)?,
             field: texture(gl)?,
-            shadow: Vec::new(),
+            field_sized: false,
         })
     }
 }
@@ -183,6 +218,12 @@ pub struct PlanarGl {
     sets: [Frames; 2],
     /// The set drawn from.
     current: usize,
+    /// The codes of the last frame uploaded (into the set drawn from), so an upload sends only
+    /// the rows that changed since: one copy of the lattice for both sets.
+    shadow: Vec<u8>,
+    /// The rows that changed at the last upload: the other set, which did not get them, takes
+    /// them with its next upload.
+    last_changed: Vec<usize>,
     palette: WebGlTexture,
     agent_palette: WebGlTexture,
     heat: WebGlTexture,
@@ -237,6 +278,8 @@ impl PlanarGl {
             agent_data: Vec::new(),
             sets: [Frames::new(gl)?, Frames::new(gl)?],
             current: 0,
+            shadow: Vec::new(),
+            last_changed: Vec::new(),
             palette: texture(gl)?,
             agent_palette: texture(gl)?,
             heat,
@@ -253,26 +296,25 @@ impl PlanarGl {
         self.dims = [w, h];
         gl.pixel_storei(Gl::UNPACK_ALIGNMENT, 1);
         for set in &mut self.sets {
-            for (tex, internal, format, kind) in [
-                (&set.cells, Gl::R8UI, Gl::RED_INTEGER, Gl::UNSIGNED_BYTE),
-                (&set.field, Gl::R32F, Gl::RED, Gl::FLOAT),
-            ] {
-                gl.bind_texture(Gl::TEXTURE_2D, Some(tex));
-                gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
-                    Gl::TEXTURE_2D,
-                    0,
-                    internal as i32,
-                    w,
-                    h,
-                    0,
-                    format,
-                    kind,
-                    None,
-                )?;
-            }
-            // A fresh texture holds zeros: empty cells.
-            set.shadow = vec![0; (w * h) as usize];
+            gl.bind_texture(Gl::TEXTURE_2D, Some(&set.cells));
+            gl.tex_image_2d_with_i32_and_i32_and_i32_and_format_and_type_and_opt_u8_array(
+                Gl::TEXTURE_2D,
+                0,
+                Gl::R8UI as i32,
+                w,
+                h,
+                0,
+                Gl::RED_INTEGER,
+                Gl::UNSIGNED_BYTE,
+                None,
+            )?;
+            // Sized with the first overlay; until then a single value.
+            size_field(gl, &set.field, 1, 1)?;
+            set.field_sized = false;
         }
+        // A fresh texture holds zeros: empty cells.
+        self.shadow = vec![0; (w * h) as usize];
+        self.last_changed.clear();
         self.uploaded = None;
         Ok(())
     }
@@ -289,10 +331,14 @@ impl PlanarGl {
         gl.pixel_storei(Gl::UNPACK_ALIGNMENT, 1);
         let set = &mut self.sets[self.current];
         let row = w as usize;
-        let changed = (0..h as usize)
-            .filter(|y| frame.cells[y * row..(y + 1) * row] != set.shadow[y * row..(y + 1) * row]);
+        let shadow = &mut self.shadow;
+        let changed: Vec<usize> = (0..h as usize)
+            .filter(|y| frame.cells[y * row..(y + 1) * row] != shadow[y * row..(y + 1) * row])
+            .collect();
+        // This set missed what the other one took at the last upload.
+        let missed = std::mem::take(&mut self.last_changed);
         gl.bind_texture(Gl::TEXTURE_2D, Some(&set.cells));
-        for (first, last) in row_bands(changed, ROW_GAP) {
+        for (first, last) in row_bands(merged(&changed, &missed), ROW_GAP) {
             let band = first * row..(last + 1) * row;
             gl.tex_sub_image_2d_with_i32_and_i32_and_u32_and_type_and_opt_u8_array(
                 Gl::TEXTURE_2D,
@@ -303,11 +349,19 @@ impl PlanarGl {
                 (last + 1 - first) as i32,
                 Gl::RED_INTEGER,
                 Gl::UNSIGNED_BYTE,
-                Some(&frame.cells[band.clone()]),
+                Some(&frame.cells[band]),
             )?;
-            set.shadow[band.clone()].copy_from_slice(&frame.cells[band]);
         }
+        for &y in &changed {
+            let band = y * row..(y + 1) * row;
+            shadow[band.clone()].copy_from_slice(&frame.cells[band]);
+        }
+        self.last_changed = changed;
         if let Some(o) = frame.overlay.filter(|o| o.data.len() == frame.cells.len()) {
+            if !set.field_sized {
+                size_field(gl, &set.field, w, h)?;
+                set.field_sized = true;
+            }
             gl.bind_texture(Gl::TEXTURE_2D, Some(&set.field));
             // A view of wasm memory, handed straight to WebGL: nothing allocates meanwhile.
             let view = unsafe { js_sys::Float32Array::view(o.data) };
@@ -431,6 +485,13 @@ impl Shared {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rows_changed_now_and_at_the_last_upload_are_merged_once_each() {
+        assert_eq!(merged(&[], &[]), Vec::<usize>::new());
+        assert_eq!(merged(&[1, 5, 9], &[]), vec![1, 5, 9]);
+        assert_eq!(merged(&[1, 5, 9], &[0, 5, 10]), vec![0, 1, 5, 9, 10]);
+    }
 
     #[test]
     fn changed_rows_close_together_share_a_band_and_far_ones_do_not() {
