@@ -199,10 +199,12 @@ describe('the About tab', () => {
       const [panel, room] = await page.$eval('#panel-about', (d) => [d.scrollWidth, d.clientWidth]);
       assert.ok(panel <= room, `the About panel needs no sideways scrolling at ${width} px (${panel} > ${room})`);
     }
-    // Each experiment behind the figures opens in the Experiments tab.
+    // Each experiment behind the figures opens in the Experiments tab (its text once the lab
+    // module, which holds the experiments, has loaded).
     const name = report.models[model].experiments[0];
     await page.click(`#paper-report p.row-buttons button:text-is("${name}")`);
     assert.equal(await page.getAttribute('#tab-experiments', 'aria-selected'), 'true');
+    await page.waitForFunction(() => document.querySelector('#experiment-json').value !== '');
     assert.equal(JSON.parse(await page.inputValue('#experiment-json')).name, name);
     await context.close();
   });

@@ -122,6 +122,7 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
   // The reproduction report opens the experiment behind its figures.
   window.addEventListener(OPEN_EXPERIMENT, (e) => {
     const name = (e as CustomEvent<string>).detail;
+    showTab();
     void load().then((ok) => {
       if (!ok || !builtIn.some((x) => x.name === name)) return;
       leaveLink();
@@ -129,7 +130,6 @@ export function setupExperiments(prefs: Prefs, savePrefs: () => void, report: (m
       prefs.experimentText = '';
       savePrefs();
       show(name);
-      showTab();
     });
   });
   select.addEventListener('change', () => {
