@@ -103,8 +103,9 @@ describe('embedded in a course page on another origin', () => {
     }
     for (const e of played) assert.equal(e.hash, coreHash(link, e.step), `the hash at step ${e.step} is the core's`);
 
-    // Paused: a step command moves exactly that many steps.
-    await new Promise((r) => setTimeout(r, 600));
+    // Paused: a step command moves exactly that many steps. The last state is sent after the pause
+    // (events are throttled while playing): it is in once no step event has come for 600 ms.
+    await waitFor(page, () => performance.now() - events.filter((e) => e.type === 'step').at(-1).at > 600);
     const before = (await events(page, 'step')).at(-1).step;
     await page.evaluate(() => send({ source: 'kumiki', type: 'step', count: 5 }));
     await waitFor(page, (n) => events.some((e) => e.type === 'step' && e.step === n), before + 5);
