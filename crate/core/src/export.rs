@@ -98,7 +98,7 @@ pub fn csv(p: &Provenance, rows: &[Row]) -> String {
 /// The traced metrics in long form: one line per run, step and metric, with the metric's unit.
 pub fn trace_csv(p: &Provenance, rows: &[Row]) -> String {
     let mut params: Vec<&String> = rows.iter().flat_map(|r| r.params.keys()).collect();
-    params.sort();
+    kumiki_model::sort::sort(&mut params);
     params.dedup();
     let mut out = p.comment();
     out.push_str("scenario,seed");
@@ -135,10 +135,10 @@ pub fn trace_csv(p: &Provenance, rows: &[Row]) -> String {
 /// column of a quantity with a unit names it in brackets (`metrics.total_steps [robot steps]`).
 pub fn to_csv(rows: &[Row]) -> String {
     let mut params: Vec<&String> = rows.iter().flat_map(|r| r.params.keys()).collect();
-    params.sort();
+    kumiki_model::sort::sort(&mut params);
     params.dedup();
     let mut metrics: Vec<&String> = rows.iter().flat_map(|r| r.metrics.keys()).collect();
-    metrics.sort();
+    kumiki_model::sort::sort(&mut metrics);
     metrics.dedup();
     let mut out = String::from("scenario,seed,completed,steps [steps],hash,scenario_hash,version");
     for p in &params {

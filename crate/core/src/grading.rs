@@ -64,7 +64,7 @@ pub fn shape_change(a: &str, b: &str) -> String {
         |m: &BTreeMap<(usize, usize, usize), char>, at| m.get(at).is_some_and(|&c| c != '.');
     let mut places: Vec<&(usize, usize, usize)> = a.keys().chain(b.keys()).collect();
     // Reading order: layer, row, column.
-    places.sort_by_key(|&&(c, r, l)| (l, r, c));
+    kumiki_model::sort::sort_by_key(&mut places, |&&(c, r, l)| (l, r, c));
     places.dedup();
     let (mut removed, mut added, mut changed) = (Vec::new(), Vec::new(), Vec::new());
     for at in places {

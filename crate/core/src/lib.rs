@@ -18,7 +18,7 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //! - [`json`]: JSON text in and out for the crates built on this one, one parser in the wasm module.
 
-pub use kumiki_model::{bounds, error, hash, lattice, limits, math, rng, shape};
+pub use kumiki_model::{bounds, error, hash, lattice, limits, math, rng, shape, sort};
 
 pub mod compare;
 #[cfg(test)]

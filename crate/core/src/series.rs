@@ -51,7 +51,7 @@ impl Series {
         Series {
             names: {
                 let mut names: Vec<String> = first.keys().cloned().collect();
-                names.sort();
+                kumiki_model::sort::sort(&mut names);
                 names
             },
             capacity: capacity.max(2),

@@ -10,7 +10,8 @@
 //! - [`lattice`] and [`shape`]: square, hex and cubic lattices, and the text shapes scenarios
 //!   carry; [`limits`]: every size a scenario may ask for;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
-//!   [`error`]: errors that name the field and the rule;
+//!   [`error`]: errors that name the field and the rule; [`sort`]: one stable sort for the cold
+//!   paths;
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
@@ -26,6 +27,7 @@ pub mod report;
 pub mod rng;
 pub mod row;
 pub mod shape;
+pub mod sort;
 
 pub use error::{Error, Result};
 pub use limits::Limits;

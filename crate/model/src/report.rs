@@ -225,7 +225,7 @@ impl Stats {
             };
         }
         let mut sorted = values.to_vec();
-        sorted.sort_by(f64::total_cmp);
+        crate::sort::sort_by(&mut sorted, f64::total_cmp);
         let mean = sorted.iter().sum::<f64>() / n as f64;
         let sd = if n > 1 {
             (sorted.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / (n - 1) as f64).sqrt()

@@ -161,7 +161,7 @@ pub fn differences(a: &Value, b: &Value) -> Vec<String> {
         match (a, b) {
             (Value::Object(x), Value::Object(y)) => {
                 let mut keys: Vec<&String> = x.keys().chain(y.keys()).collect();
-                keys.sort();
+                kumiki_model::sort::sort(&mut keys);
                 keys.dedup();
                 for k in keys {
                     match (x.get(k), y.get(k)) {

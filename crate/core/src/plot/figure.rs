@@ -249,7 +249,7 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
                 .iter()
                 .flat_map(|r| r.trace.as_ref().unwrap().step.iter().copied())
                 .collect();
-            steps.sort_unstable();
+            kumiki_model::sort::sort(&mut steps);
             steps.dedup();
             if steps.len() > 1500 {
                 let every = steps.len().div_ceil(1500);

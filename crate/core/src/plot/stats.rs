@@ -122,7 +122,7 @@ impl Comparison {
         // Ties within a condition matter to the normal approximation's variance, and to
         // whether the exact count applies.
         let mut all: Vec<f64> = a.iter().chain(&b).copied().collect();
-        all.sort_by(f64::total_cmp);
+        kumiki_model::sort::sort_by(&mut all, f64::total_cmp);
         ties |= all.windows(2).any(|w| w[0] == w[1]);
         let (p, method) = match !ties && n1 * n2 <= 10_000 {
             true => (exact_p(n1, n2, u), "exact"),

@@ -310,7 +310,7 @@ pub fn canonical(value: Value) -> Value {
     match value {
         Value::Object(map) => {
             let mut entries: Vec<(String, Value)> = map.into_iter().collect();
-            entries.sort_by(|a, b| a.0.cmp(&b.0));
+            kumiki_model::sort::sort_by(&mut entries, |a, b| a.0.cmp(&b.0));
             Value::Object(
                 entries
                     .into_iter()
@@ -402,7 +402,7 @@ fn take_disturbances(map: &mut Map<String, Value>) -> Result<Vec<Disturbance>> {
         out.push(Disturbance { at, action });
     }
     // Stable: actions at the same step keep their written order.
-    out.sort_by_key(|d| d.at);
+    kumiki_model::sort::sort_by_key(&mut out, |d| d.at);
     Ok(out)
 }
 

@@ -306,7 +306,7 @@ impl Chobie {
         if leaders.is_empty() {
             self.totals.election_failures += 1;
         }
-        leaders.sort_by_key(|e| (e.kind, e.robot));
+        kumiki_model::sort::sort_by_key(&mut leaders, |e| (e.kind, e.robot));
         leaders
     }
 

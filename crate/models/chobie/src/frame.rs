@@ -162,11 +162,16 @@ fn solve_held(
         maxy = maxy.max(y);
     }
     let mut order: Vec<u32> = (0..n as u32).filter(|&i| !fixed[i as usize]).collect();
-    if maxx - minx >= maxy - miny {
-        order.sort_by_key(|&i| (pos[i as usize].0, pos[i as usize].1));
-    } else {
-        order.sort_by_key(|&i| (pos[i as usize].1, pos[i as usize].0));
-    }
+    // One sort for either axis: the standard library compiles a sort per closure.
+    let wide = maxx - minx >= maxy - miny;
+    order.sort_by_key(|&i| {
+        let (x, y) = pos[i as usize];
+        if wide {
+            (x, y)
+        } else {
+            (y, x)
+        }
+    });
     let mut rank = vec![usize::MAX; n];
     for (k, &i) in order.iter().enumerate() {
         rank[i as usize] = k;

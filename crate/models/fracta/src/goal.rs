@@ -93,7 +93,7 @@ pub struct Closest {
 impl Goal {
     /// A goal from statements; repeats keep their first priority.
     pub fn new(mut statements: Vec<Statement>) -> Goal {
-        statements.sort();
+        kumiki_model::sort::sort(&mut statements);
         let mut kept: Vec<Statement> = Vec::with_capacity(statements.len());
         for s in statements {
             if !kept
@@ -402,7 +402,7 @@ pub fn realisable(t: &Types, unit: u8, neighbours: &[u8]) -> bool {
         false
     }
     let mut sorted = neighbours.to_vec();
-    sorted.sort_unstable();
+    kumiki_model::sort::sort(&mut sorted);
     place(0, &slots, &sorted, &mut used, &fits)
 }
 

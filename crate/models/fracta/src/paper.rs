@@ -252,7 +252,7 @@ fn percentile(values: &[f64], q: f64) -> f64 {
         return f64::NAN;
     }
     let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
+    kumiki_model::sort::sort_by(&mut sorted, f64::total_cmp);
     let pos = q * (sorted.len() - 1) as f64;
     let (lo, hi) = (pos.floor() as usize, pos.ceil() as usize);
     sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo as f64)

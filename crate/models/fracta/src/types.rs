@@ -193,7 +193,7 @@ pub struct Types {
 impl Types {
     fn compute() -> Types {
         let mut reps: Vec<u8> = (0..64u8).map(canonical).collect();
-        reps.sort_unstable_by_key(|&m| (m.count_ones(), m));
+        kumiki_model::sort::sort_by_key(&mut reps, |&m| (m.count_ones(), m));
         reps.dedup();
         assert_eq!(reps.len(), CLASSES, "the hexagon has 13 bond classes");
         let mut class_of = [0u8; 64];

@@ -253,7 +253,7 @@ impl CubicCanvas {
         if let Some(lamp) = m.lamp.filter(|_| behind) {
             let _ = draw_lamp(ctx, lamp, &pr);
         }
-        faces.sort_by(|a, b| b.depth.total_cmp(&a.depth));
+        kumiki_core::sort::sort_by(&mut faces, |a, b| b.depth.total_cmp(&a.depth));
         ctx.set_line_width(1.0);
         ctx.set_line_join("round");
         for f in &faces {

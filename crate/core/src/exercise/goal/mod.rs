@@ -132,7 +132,7 @@ impl Goal {
     pub fn names(&self) -> Vec<String> {
         let mut out = Vec::new();
         collect_names(&self.expr, &mut out);
-        out.sort();
+        kumiki_model::sort::sort(&mut out);
         out.dedup();
         out
     }

@@ -25,7 +25,7 @@ fn fig27_counts(r: &Results) -> Vec<u32> {
         .filter_map(|row| row.params.get("disturbances.0.count")?.as_u64())
         .map(|c| c as u32)
         .collect();
-    counts.sort_unstable();
+    kumiki_model::sort::sort(&mut counts);
     counts.dedup();
     counts
 }
