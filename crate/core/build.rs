@@ -1,7 +1,10 @@
-//! Registers every file in the `presets/`, `lessons/` and `experiments/` folders of each model
-//! crate (`../models/<model>/presets/`, ...) by its name, so adding a preset or a lesson is adding
-//! one file; and records the commit the core is built from (`KUMIKI_COMMIT`, "unknown" outside a
-//! git checkout) for the provenance of exports.
+//! Registers the models: each dependency of this crate on a model crate (a path under
+//! `../models/`) in `Cargo.toml`, in the order written there (the gallery's), becomes one line of
+//! the registry (`models.rs`, read by `src/models/registry.rs`), so Cargo's dependency line is the
+//! one line a model needs. Registers every file in the `presets/`, `lessons/` and `experiments/`
+//! folders of each model crate (`../models/<model>/presets/`, ...) by its name, so adding a preset
+//! or a lesson is adding one file; and records the commit the core is built from (`KUMIKI_COMMIT`,
+//! "unknown" outside a git checkout) for the provenance of exports.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -61,6 +64,51 @@ fn table(kind: &str, konst: &str, out: &mut String) {
     writeln!(out, "];").unwrap();
 }
 
+/// The model crates this crate depends on, as Rust crate names, in the order `manifest` lists them:
+/// every entry of its `[dependencies]` table whose `path` is a folder under `../models/`.
+fn model_crates(manifest: &str) -> Vec<String> {
+    let mut table = "";
+    let mut crates = Vec::new();
+    for line in manifest
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or_default().trim())
+    {
+        if line.starts_with('[') {
+            table = line;
+            continue;
+        }
+        if table != "[dependencies]" {
+            continue;
+        }
+        let Some((name, value)) = line.split_once('=') else {
+            continue;
+        };
+        let path = value.split_once("path").and_then(|(_, p)| {
+            p.trim_start()
+                .strip_prefix('=')?
+                .trim_start()
+                .strip_prefix('"')?
+                .split_once('"')
+        });
+        if path.is_some_and(|(p, _)| p.starts_with("../models/")) {
+            crates.push(name.trim().replace('-', "_"));
+        }
+    }
+    crates
+}
+
+/// The registry's one invocation of `register!`, naming every model crate in gallery order.
+fn models() -> String {
+    println!("cargo::rerun-if-changed=Cargo.toml");
+    let manifest = std::fs::read_to_string("Cargo.toml").expect("the core's Cargo.toml");
+    let crates = model_crates(&manifest);
+    assert!(
+        !crates.is_empty(),
+        "Cargo.toml: no model crate (a path under ../models/) among the dependencies"
+    );
+    format!("register! {{ {} }}\n", crates.join(", "))
+}
+
 fn git(args: &[&str]) -> Option<String> {
     let out = Command::new("git").args(args).output().ok()?;
     out.status
@@ -90,6 +138,7 @@ fn main() {
     table("presets", "PRESET_FILES", &mut out);
     table("lessons", "LESSON_FILES", &mut out);
     table("experiments", "EXPERIMENT_FILES", &mut out);
-    let dest = Path::new(&std::env::var("OUT_DIR").unwrap()).join("registry.rs");
-    std::fs::write(dest, out).unwrap();
+    let dir = std::env::var("OUT_DIR").unwrap();
+    std::fs::write(Path::new(&dir).join("registry.rs"), out).unwrap();
+    std::fs::write(Path::new(&dir).join("models.rs"), models()).unwrap();
 }

@@ -38,7 +38,7 @@ export const editor: ModelEditor = {
     const robotBox = el('div');
     const terrainBox = el('div');
 
-    // The crawl forms of figure 7, reconstructed (see docs/models/chobie.md).
+    // The crawl forms of figure 7, reconstructed (see crate/models/chobie/README.md).
     const count = el('input', {
       type: 'number',
       min: 3,

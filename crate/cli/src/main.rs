@@ -466,7 +466,7 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
 /// or with `check` says whether they are current.
 fn schema(check: bool, root: &Path) -> Result<(), Failure> {
     let mut files = kumiki_core::schema::files();
-    for (path, marker, part) in kumiki_core::schema::spliced() {
+    for (path, marker, part) in kumiki_core::schema::spliced()? {
         let doc = std::fs::read_to_string(root.join(path)).map_err(|e| format!("{path}: {e}"))?;
         let text = kumiki_core::schema::splice(&doc, marker, &part).ok_or_else(|| {
             format!(

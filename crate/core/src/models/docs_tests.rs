@@ -1,5 +1,5 @@
-//! Every registered model's documentation, found through the registry: its page in
-//! `docs/models/`, in ODD form, and its row in the README's table of models.
+//! Every registered model's documentation, found through the registry: its page, the `README.md`
+//! of its crate, in ODD form, and its row in the README's table of models.
 
 use std::path::Path;
 
@@ -27,7 +27,7 @@ const SECTIONS: [&str; 8] = [
 fn every_model_has_its_page_in_odd_form_and_its_readme_row() {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
     for m in MODELS {
-        let page = format!("docs/models/{}.md", m.name);
+        let page = format!("crate/models/{}/README.md", m.name);
         let text = std::fs::read_to_string(root().join(&page))
             .unwrap_or_else(|e| panic!("{}: {page} is its documentation: {e}", m.name));
         let mut from = 0;

@@ -17,6 +17,7 @@ use crate::models::MODELS;
 use crate::presets;
 use crate::scenario::{FORMAT_VERSION, MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS, MAX_SEED, MAX_STEPS};
 
+mod pages;
 mod typescript;
 pub use typescript::{declarations, typescript};
 
@@ -79,7 +80,7 @@ pub fn scenario() -> Value {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": SCENARIO_FILE,
         "title": "Kumiki scenario",
-        "description": "One versioned JSON document that fully determines a run: the envelope keys, common to every model, and the model's own keys (docs/models/<model>.md). docs/scenario-format.md gives the size limits.",
+        "description": "One versioned JSON document that fully determines a run: the envelope keys, common to every model, and the model's own keys (crate/models/<model>/README.md). docs/scenario-format.md gives the size limits.",
         "type": "object",
         "oneOf": one_of,
         "$defs": defs,
@@ -311,13 +312,18 @@ pub fn contract_typescript() -> String {
 }
 
 /// Generated parts of hand-written pages: the page's path from the repository root, the marker
-/// that bounds the part (`<!-- NAME:begin -->` ... `<!-- NAME:end -->`) and the part's text.
-pub fn spliced() -> Vec<(&'static str, &'static str, String)> {
-    vec![(
-        "docs/scenario-format.md",
-        "limits",
-        crate::models::limits_markdown(),
-    )]
+/// that bounds the part (`<!-- NAME:begin -->` ... `<!-- NAME:end -->`) and the part's text: the
+/// limits table, the README's table of models and the teachers' guide's table of lessons.
+pub fn spliced() -> crate::error::Result<Vec<(&'static str, &'static str, String)>> {
+    Ok(vec![
+        (
+            "docs/scenario-format.md",
+            "limits",
+            crate::models::limits_markdown(),
+        ),
+        ("README.md", "models", pages::models_markdown()?),
+        ("docs/teaching.md", "lessons", crate::lessons::markdown()?),
+    ])
 }
 
 /// `doc` with the text between `marker`'s begin and end comments replaced by `part`, or `None`
@@ -334,15 +340,24 @@ pub fn splice(doc: &str, marker: &str, part: &str) -> Option<String> {
 mod tests {
     use super::*;
 
-    /// The published files are what this build derives (`kumiki schema` rewrites them).
+    /// The published files, and the generated parts of hand-written pages, are what this build
+    /// derives (`kumiki schema` rewrites them).
     #[test]
     fn the_published_schemas_are_current() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let read = |path: &str| std::fs::read_to_string(root.join(path)).unwrap_or_default();
+        let stale = |path: &str| {
+            format!("{path} is stale: run 'cargo run -p kumiki-cli -- schema' and commit it")
+        };
         for (path, text) in files() {
-            let published = std::fs::read_to_string(root.join(&path)).unwrap_or_default();
+            assert!(read(&path) == text, "{}", stale(&path));
+        }
+        for (path, marker, part) in spliced().unwrap() {
+            let page = read(path);
             assert!(
-                published == text,
-                "{path} is stale: run 'cargo run -p kumiki-cli -- schema' and commit it"
+                splice(&page, marker, &part) == Some(page.clone()),
+                "{}",
+                stale(path)
             );
         }
     }

@@ -1,6 +1,6 @@
 //! AMAS: assembler robots carrying modules along a gradient field the modules compute among
 //! themselves (Terada & Murata, sections 4 to 6 and appendices A and B). See
-//! `docs/models/amas.md` for the ODD description and every interpretation made.
+//! `crate/models/amas/README.md` for the ODD description and every interpretation made.
 
 use std::borrow::Cow;
 use std::collections::BTreeMap;

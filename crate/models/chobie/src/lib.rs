@@ -1,5 +1,5 @@
 //! CHOBIE II: sliding cellular robots that crawl and build a load-adaptive bridge under
-//! temporary leaders, after Suzuki, Inou, Kimura and Koseki. See `docs/models/chobie.md` for
+//! temporary leaders, after Suzuki, Inou, Kimura and Koseki. See `crate/models/chobie/README.md` for
 //! the ODD description and every interpretation made.
 //!
 //! - [`spec`]: the scenario body and the world text;

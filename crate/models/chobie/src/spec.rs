@@ -151,7 +151,7 @@ fn yes() -> bool {
     true
 }
 
-/// Parameter defaults; `docs/models/chobie.md` says where each comes from.
+/// Parameter defaults; `crate/models/chobie/README.md` says where each comes from.
 pub mod defaults {
     pub fn cell_size() -> f64 {
         0.1

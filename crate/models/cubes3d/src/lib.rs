@@ -2,7 +2,7 @@
 //! as type-lists, by pairwise motion and stochastic relaxation (Yoshida, Murata, Kurokawa, Tomita
 //! and Kokaji, "A distributed reconfiguration method for 3-D homogeneous structure", sections 2 to
 //! 6; and section 5 of "Experiment of self-repairing modular machine"). See
-//! `docs/models/cubes3d.md` for the ODD description and every interpretation made.
+//! `crate/models/cubes3d/README.md` for the ODD description and every interpretation made.
 //!
 //! - [`types`]: the connection types and the distances between them; [`typelist`]: type-lists,
 //!   their text form, and the unique description of a shape;

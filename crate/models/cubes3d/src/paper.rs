@@ -9,7 +9,7 @@ use kumiki_model::row::Row;
 
 pub const PAPER: Paper = Paper {
     model: "cubes3d",
-    citation: "Yoshida, Murata, Kurokawa, Tomita & Kokaji, \"A Distributed Reconfiguration Method for 3-D Homogeneous Structure\"; and section 5.2 of Yoshida, Murata, Tomita, Kurokawa & Kokaji, \"Experiment of Self-repairing Modular Machine\"",
+    citation: "E. Yoshida, S. Murata, H. Kurokawa, K. Tomita and S. Kokaji, \"A Distributed Reconfiguration Method for 3-D Homogeneous Structure\"; and section 5.2 of E. Yoshida, S. Murata, K. Tomita, H. Kurokawa and S. Kokaji, \"Experiment of Self-repairing Modular Machine\"",
     experiments: &["cubes-fig8", "cubes-fig9", "cubes-fig14", "cubes-scale"],
     findings,
 };
@@ -168,7 +168,7 @@ fn findings(results: &Results) -> Vec<Finding> {
                     report::fmt(across, 0),
                     report::fmt(per_run("switches").mean, 0),
                 ),
-                "Holds when three runs in four end nearer the light (lower quartile above 0) and the mean still grows between steps 500 and 1000. Each move toward the light takes the centre of mass an eighth of a cell nearer, so the distance is the surplus of moves toward over moves away, divided by eight. A unit on the plane is carried off it only while another still touches it, so the structure never lets go of the plane (see docs/models/cubes3d.md, interpretation 15).".to_string(),
+                "Holds when three runs in four end nearer the light (lower quartile above 0) and the mean still grows between steps 500 and 1000. Each move toward the light takes the centre of mass an eighth of a cell nearer, so the distance is the surplus of moves toward over moves away, divided by eight. A unit on the plane is carried off it only while another still touches it, so the structure never lets go of the plane (see crate/models/cubes3d/README.md, interpretation 15).".to_string(),
             )
         } else {
             (
@@ -182,7 +182,7 @@ fn findings(results: &Results) -> Vec<Finding> {
                     report::fmt(away.mean, 1),
                     end.n,
                 ),
-                "Holds when three runs in four end nearer the light (lower quartile above 0) and the mean still grows between steps 500 and 1000. Read so, every unit that comes down to the plane is fixed for good, the back units of the cube's bottom layer never leave, and the structure freezes once its upper units have come down. The text rules this reading out: for units that may not move it says \"set non-movable\" (the four lit units when the target switches to the ladder), and two of those four touch the plane, so they would be non-movable already; \"fixed to it by some connecting mechanism\" names a connection. See docs/models/cubes3d.md, interpretation 15.".to_string(),
+                "Holds when three runs in four end nearer the light (lower quartile above 0) and the mean still grows between steps 500 and 1000. Read so, every unit that comes down to the plane is fixed for good, the back units of the cube's bottom layer never leave, and the structure freezes once its upper units have come down. The text rules this reading out: for units that may not move it says \"set non-movable\" (the four lit units when the target switches to the ladder), and two of those four touch the plane, so they would be non-movable already; \"fixed to it by some connecting mechanism\" names a connection. See crate/models/cubes3d/README.md, interpretation 15.".to_string(),
             )
         };
         out.push(Finding {
@@ -249,7 +249,7 @@ fn findings(results: &Results) -> Vec<Finding> {
         "not built".into(),
         0,
         Verdict::NotStated,
-        "The text gives the idea and defers the method (\"the details of this method are to be reported in future work\"); figures 15 to 17 are not in the text. Missing: the primitive types of figure 15 and the node geometry each fixes, how a sub-structure attaches to a node and how that is written, how a unit learns its node and level, what a unit's difference is against a recursive description, and when a level counts as assembled so the next begins. See docs/models/cubes3d.md, interpretation 21.",
+        "The text gives the idea and defers the method (\"the details of this method are to be reported in future work\"); figures 15 to 17 are not in the text. Missing: the primitive types of figure 15 and the node geometry each fixes, how a sub-structure attaches to a node and how that is written, how a unit learns its node and level, what a unit's difference is against a recursive description, and when a level counts as assembled so the next begins. See crate/models/cubes3d/README.md, interpretation 21.",
     ));
     out
 }

@@ -1,6 +1,6 @@
 //! Fracta: identical hexagonal units that assemble into a goal shape and repair it after a
 //! fault, by the difference-based algorithm of Yoshida, Murata, Tomita, Kurokawa and Kokaji
-//! (sections 3 and 4). See `docs/models/fracta.md` for the ODD description and every
+//! (sections 3 and 4). See `crate/models/fracta/README.md` for the ODD description and every
 //! interpretation made.
 //!
 //! - `pattern`: bond patterns, their symmetries and the roll; [`types`]: the 12 connection

@@ -10,7 +10,7 @@ use kumiki_model::report::{fmt, value, Finding, Paper, Results, Stats, Verdict};
 pub const PAPER: Paper = Paper {
     model: "fracta",
     citation: "E. Yoshida, S. Murata, K. Tomita, H. Kurokawa and S. Kokaji, \
-               Experiment of Self-repairing Modular Machine",
+               \"Experiment of Self-repairing Modular Machine\"",
     experiments: &[
         "fracta-assembly",
         "fracta-rings",
@@ -185,7 +185,7 @@ fn assembly_start(r: &Results) -> String {
              {} runs assembled, the shortest in {} steps ({} runs), median {} against {} \
              with G = 1. The text gives no value of G (nor of K, L or I_th), so whether the \
              paper's units began at once or waited for irritation cannot be recovered from it; \
-             G stays 1 (docs/models/fracta.md, interpretation 18).",
+             G stays 1 (crate/models/fracta/README.md, interpretation 18).",
             match lowered.wait {
                 0 => "in the first step".to_string(),
                 n => format!("{n} steps in"),
@@ -406,7 +406,7 @@ fn repair(r: &Results) -> Vec<Finding> {
         waits.push(format!(
             "Where units could lower the summed difference but equation 3 activates none of \
              them, the first motion waits for irritation: {}. Which units equation 3 \
-             activates is where these repairs lose their time (docs/models/fracta.md, \
+             activates is where these repairs lose their time (crate/models/fracta/README.md, \
              \"Beside the paper\").",
             held.join(", ")
         ));
@@ -433,7 +433,7 @@ fn repair(r: &Results) -> Vec<Finding> {
          unit that can lower the summed difference in the cut-off's own step: the cut-off \
          leaves x where the finished structure had it (0, as every difference was 0) and \
          raises the differences of the units around the hole above it, so they pass equation \
-         3 first (docs/models/fracta.md, interpretation 8)."
+         3 first (crate/models/fracta/README.md, interpretation 8)."
     ));
     let fastest: Vec<f64> = FAULTS
         .iter()

@@ -78,7 +78,7 @@ impl kumiki_model::bounds::Bounded for Spec {
     ];
 }
 
-/// Parameter defaults; `docs/models/fracta.md` says why each was chosen.
+/// Parameter defaults; `crate/models/fracta/README.md` says why each was chosen.
 pub mod defaults {
     use super::Priorities;
     pub fn margin() -> u32 {

@@ -60,7 +60,7 @@ pub(super) fn bridge_findings(r: &Results, out: &mut Vec<Finding>) {
          supply to its final height, so the least climbing is the footnote-2 bound either way, \
          and staging can save only the one-stage run's walk along the deck (the path bound \
          less the footnote-2 bound). The staged runs lose their time in the dismantling \
-         stages, for two reasons traced step by step (docs/models/amas.md, interpretations 28 \
+         stages, for two reasons traced step by step (crate/models/amas/README.md, interpretations 28 \
          and 31). Raised five rows at a time, robots take the block where they reach it first, \
          next to the new deck and from the conveyor below, which leaves one-wide remnants that \
          the connection rule lets go only from their ends, reached over the conveyor and the \

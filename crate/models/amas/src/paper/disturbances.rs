@@ -230,7 +230,7 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
          refills the hole: the blackboard records no collision at all and one removed module \
          still costs about as much as with the other rules; a hole at a column's top, refilled the \
          next step by that column's robot with no collision and no sideways move, still costs \
-         a trip (a step-by-step trace, docs/models/amas.md, interpretation 30), because the \
+         a trip (a step-by-step trace, crate/models/amas/README.md, interpretation 30), because the \
          robot whose column is one module behind reaches its column's top first on every trip \
          and no other robot can share its extra trip. Where the robots do not start one under \
          each column (the same square in the middle of a conveyor 36 modules wide), the \

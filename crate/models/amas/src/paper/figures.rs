@@ -95,7 +95,7 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
          amas-fig23-corner builds the same 88 modules upside down, so that every module of the \
          arm is carried round the inner corner, where 5.2 and figure 20 put the discrete \
          field's paths. The field's update rate and the number of robots (up to the 14 the \
-         supply holds) were checked too (docs/models/amas.md, interpretation 27).",
+         supply holds) were checked too (crate/models/amas/README.md, interpretation 27).",
     ));
 
     // The T (two corners) against the L (one).
@@ -178,7 +178,7 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
          paths are concentrated in the corner', robots that 'need to go through the corner') \
          fit this orientation better than the upright one, where modules rise straight up \
          from the supply beneath them, but the text does not give figure 22's drawing, so both \
-         are reported (docs/models/amas.md, interpretation 29).",
+         are reported (crate/models/amas/README.md, interpretation 29).",
     ));
 
     // Where the collisions happen (the heat map's zones): the corner rows against the rest.
@@ -229,7 +229,7 @@ pub(super) fn fig23_findings(r: &Results, out: &mut Vec<Finding>) {
          rows above them, the rows below them and the supply row, each taken together, with \
          both fields. The T, and both shapes upside down (stem on the supply: every module of \
          the top is carried up the stem and round the corner), are shown beside it; where the \
-         rest of the collisions happen is discussed in docs/models/amas.md, interpretation 29.",
+         rest of the collisions happen is discussed in crate/models/amas/README.md, interpretation 29.",
     ));
 
     // Module relay prevents chains of collisions, the blackboard does not.

@@ -16,8 +16,8 @@ use kumiki_model::report::{Finding, Paper, Results, Stats, Verdict};
 
 pub const PAPER: Paper = Paper {
     model: "amas",
-    citation: "Y. Terada and S. Murata, Automatic Modular Assembly System and its Distributed \
-               Control, IJRR 27(3–4), 2008",
+    citation: "Y. Terada and S. Murata, \"Automatic Modular Assembly System and its Distributed \
+               Control\", IJRR 27(3–4), 2008",
     experiments: &[
         "amas-fig23",
         "amas-fig23-corner",

@@ -6,7 +6,7 @@ use super::*;
 #[test]
 fn a_few_motions_repair_every_fault_position() {
     // The paper's "few steps" is what the geometry allows: 2.4 motions on average over the 10
-    // positions, at most 4 (docs/models/fracta.md quotes these).
+    // positions, at most 4 (crate/models/fracta/README.md quotes these).
     let fewest: Vec<Option<usize>> = [0, 1, 2, 3, 4, 6, 7, 8, 9, 10]
         .into_iter()
         .map(|unit| search::fewest_repair_motions(unit, 4))
@@ -109,7 +109,7 @@ fn only_irritation_moves_a_unit_that_no_direction_improves() {
 
 #[test]
 fn after_a_corner_fault_the_spare_moves_at_once() {
-    // Fault on unit 7 (docs/models/fracta.md, "Beside the paper"): the spare is the only unit
+    // Fault on unit 7 (crate/models/fracta/README.md, "Beside the paper"): the spare is the only unit
     // with a roll that lowers the difference around it. The cut-off leaves x at the finished
     // triangle's 0 and raises the spare's difference, so equation 3 activates it in the
     // cut-off's own step, and the two motions the search finds are the two the run makes.
