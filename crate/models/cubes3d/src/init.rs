@@ -3,6 +3,7 @@
 use super::connect::Scratch;
 use super::motion::{Structure, PAD};
 use super::spec::{Checked, Ground};
+use super::state::whole_diffs;
 use super::typelist::{self, TypeList};
 use super::{Cubes, Target};
 use kumiki_model::rng::Rng;
@@ -73,6 +74,7 @@ impl Cubes {
             }
         }
         let len = st.len();
+        let table = typelist::diff_table(spec.a);
         let mut model = Cubes {
             flags: vec![0; len],
             units: Vec::with_capacity(start.len()),
@@ -84,7 +86,8 @@ impl Cubes {
             target: vec![0; len],
             diff: Vec::with_capacity(start.len()),
             stable: Vec::with_capacity(start.len()),
-            table: typelist::diff_table(spec.a),
+            whole_diffs: whole_diffs(&table, spec.w),
+            table,
             w: spec.w,
             c: spec.c,
             selection: spec.selection,

@@ -120,6 +120,9 @@ pub struct Cubes {
     stable: Vec<u32>,
     table: [[f64; CODES]; CODES],
     w: f64,
+    /// Every D_0 is a whole number small enough that their sum is exact in any order (the
+    /// default W and a are): [`Cubes::total_difference`] then adds in several lanes at once.
+    whole_diffs: bool,
     c: f64,
     selection: Selection,
     movers: u32,

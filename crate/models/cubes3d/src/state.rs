@@ -2,6 +2,7 @@
 //! set of units that may move, and moving a unit with everything that travels with it.
 
 use super::spec::Ground;
+use super::types::CODES;
 use super::{Cubes, ARRIVED, HELD_LIT, HELD_USER, LEFT};
 use kumiki_model::model::Event;
 
@@ -158,7 +159,32 @@ impl Cubes {
         });
     }
 
+    /// The sum of the units' D_0 in the order of `units`, read for the chart every step. When
+    /// every D_0 is a whole number ([`whole_diffs`]) every partial sum is exact, so eight lanes
+    /// added apart give the very same number as one chain of additions, in a fraction of the
+    /// time: a chain of 1000 dependent additions was a tenth of a step of cubes-block1000.
     pub(super) fn total_difference(&self) -> f64 {
-        self.diff.iter().sum()
+        if !self.whole_diffs || self.diff.len() < LANES {
+            return self.diff.iter().sum();
+        }
+        let chunks = self.diff.chunks_exact(LANES);
+        let rest: f64 = chunks.remainder().iter().sum();
+        let lanes = chunks.fold([0.0; LANES], |mut acc, chunk| {
+            for (a, d) in acc.iter_mut().zip(chunk) {
+                *a += d;
+            }
+            acc
+        });
+        lanes.iter().sum::<f64>() + rest
     }
+}
+
+pub(super) const LANES: usize = 8;
+
+/// Whether every D_0 a unit can have is a whole number with every sum of them exact: each entry
+/// of the difference `table`, and each times `w` (the unit's own term), whole and at most 2^20,
+/// so a D_0 (seven terms) is below 2^23 and a sum over fewer than 2^30 units below 2^53.
+pub(super) fn whole_diffs(table: &[[f64; CODES]; CODES], w: f64) -> bool {
+    let whole = |v: f64| v.fract() == 0.0 && v.abs() <= f64::from(1 << 20);
+    table.iter().flatten().all(|&t| whole(t) && whole(w * t))
 }

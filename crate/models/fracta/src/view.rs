@@ -24,69 +24,79 @@ impl Fracta {
     /// the units' bounding box grown by one cell. A neighbour differs by at most one in each offset
     /// coordinate, so a path from the box to the edge crosses the box's border, whose cells lie
     /// outside the units' box or on the lattice's edge: the empty ones are the flood's seeds.
+    /// The box is copied into a grid of its own with a blocked ring round it, so the flood steps
+    /// by fixed offsets (one set for even rows, one for odd) with no bounds check and no
+    /// division: it was a fifth to a quarter of a step when it mapped every neighbour back from
+    /// its lattice index.
     pub(super) fn holes(&self) -> u64 {
-        let (mut x0, mut y0, mut x1, mut y1) = (i32::MAX, i32::MAX, i32::MIN, i32::MIN);
+        let w = self.lattice.w;
+        let (mut x0, mut y0, mut x1, mut y1) = (u32::MAX, u32::MAX, 0, 0);
         for (u, unit) in self.units.iter().enumerate() {
             if self.occ.get(unit.cell as usize) == Some(&(u as u32)) {
-                let c = self.lattice.coord(unit.cell as usize);
-                (x0, y0, x1, y1) = (x0.min(c.x), y0.min(c.y), x1.max(c.x), y1.max(c.y));
+                let (x, y) = (unit.cell % w, unit.cell / w);
+                (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
             }
         }
         if x0 > x1 {
             return 0;
         }
-        let (bx0, by0) = ((x0 - 1).max(0), (y0 - 1).max(0));
-        let bx1 = (x1 + 1).min(self.lattice.w as i32 - 1);
-        let by1 = (y1 + 1).min(self.lattice.h as i32 - 1);
-        let bw = (bx1 - bx0 + 1) as usize;
-        let local = |cell: u32| -> Option<usize> {
-            let c = self.lattice.coord(cell as usize);
-            ((bx0..=bx1).contains(&c.x) && (by0..=by1).contains(&c.y))
-                .then(|| (c.y - by0) as usize * bw + (c.x - bx0) as usize)
-        };
-        let mut outside = vec![false; bw * (by1 - by0 + 1) as usize];
-        let mut queue: VecDeque<u32> = VecDeque::new();
-        for y in by0..=by1 {
-            for x in bx0..=bx1 {
-                let cell = self
-                    .lattice
-                    .index(Coord::xy(x, y))
-                    .expect("inside the lattice") as u32;
-                let border = x == bx0 || x == bx1 || y == by0 || y == by1;
-                if self.occ[cell as usize] == NO_UNIT
-                    && (border || self.nbr[cell as usize].contains(&NO_UNIT))
-                {
-                    outside[(y - by0) as usize * bw + (x - bx0) as usize] = true;
-                    queue.push_back(cell);
+        let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
+        let bx1 = (x1 + 1).min(w - 1);
+        let by1 = (y1 + 1).min(self.lattice.h - 1);
+        let (bw, bh) = ((bx1 - bx0 + 1) as usize, (by1 - by0 + 1) as usize);
+        // The box at (1, 1) of a grid one cell wider on every side; the ring stays blocked.
+        let gw = bw + 2;
+        let mut grid = vec![BLOCKED; gw * (bh + 2)];
+        for r in 0..bh {
+            let start = (by0 as usize + r) * w as usize + bx0 as usize;
+            let row = &mut grid[(r + 1) * gw + 1..][..bw];
+            for (g, &o) in row.iter_mut().zip(&self.occ[start..start + bw]) {
+                if o == NO_UNIT {
+                    *g = ENCLOSED;
                 }
             }
         }
-        while let Some(i) = queue.pop_front() {
-            for &j in &self.nbr[i as usize] {
-                if j == NO_UNIT || self.occ[j as usize] != NO_UNIT {
-                    continue;
-                }
-                if let Some(k) = local(j) {
-                    if !outside[k] {
-                        outside[k] = true;
-                        queue.push_back(j);
-                    }
-                }
-            }
-        }
-        let mut holes = 0;
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let cell = self
-                    .lattice
-                    .index(Coord::xy(x, y))
-                    .expect("inside the lattice");
-                let k = (y - by0) as usize * bw + (x - bx0) as usize;
-                if self.occ[cell] == NO_UNIT && !outside[k] {
-                    holes += 1;
+        // The six neighbours of a cell on an even and on an odd lattice row: the grid offset, and
+        // whether the neighbour's row has the other parity.
+        let offsets = [0, 1].map(|parity| {
+            let c = Coord::xy(2, 2 + parity);
+            [0, 1, 2, 3, 4, 5].map(|dir| {
+                let n = self.lattice.step(c, dir);
+                let offset = (n.y - c.y) as isize * gw as isize + (n.x - c.x) as isize;
+                (offset, (n.y - c.y).unsigned_abs() as usize & 1)
+            })
+        });
+        // Stack entries: a grid index times two plus its lattice row's parity.
+        let mut stack: Vec<usize> = Vec::new();
+        for r in 0..bh {
+            let parity = (by0 as usize + r) & 1;
+            let border_row = r == 0 || r == bh - 1;
+            for c in 0..bw {
+                let k = (r + 1) * gw + c + 1;
+                if (border_row || c == 0 || c == bw - 1) && grid[k] == ENCLOSED {
+                    grid[k] = OUTSIDE;
+                    stack.push(k << 1 | parity);
                 }
             }
         }
-        holes
+        while let Some(entry) = stack.pop() {
+            let (k, parity) = (entry >> 1, entry & 1);
+            for &(offset, flip) in &offsets[parity] {
+                let j = k.wrapping_add_signed(offset);
+                if grid[j] == ENCLOSED {
+                    grid[j] = OUTSIDE;
+                    stack.push(j << 1 | (parity ^ flip));
+                }
+            }
+        }
+        // The box's cells beyond the units' box lie on its border, seeded when empty: what is
+        // still enclosed lies within the units' box.
+        grid.iter().filter(|&&g| g == ENCLOSED).count() as u64
     }
 }
+
+/// Cells of the holes' grid: a unit or the ring round the box, an empty cell not (yet) reached
+/// from the box's border, an empty cell reached from it.
+const BLOCKED: u8 = 0;
+const ENCLOSED: u8 = 1;
+const OUTSIDE: u8 = 2;

@@ -500,3 +500,39 @@ fn without_stop_at_goal_a_run_goes_on_past_the_goal() {
     }
     assert!(m.moves > 0 && m.reached == Some(0));
 }
+
+#[test]
+fn the_total_difference_read_in_lanes_is_the_chain_of_additions_bit_for_bit() {
+    let chain = |m: &Cubes| m.diff.iter().sum::<f64>().to_bits();
+    let mut lanes = 0;
+    for (preset, w, a) in [
+        ("cubes-box27-plank", 3.0, 1.0),
+        ("cubes-box16-movers", 2.0, 3.0),
+        ("cubes-light", 3.0, 1.0),
+        ("cubes-box12-ladder", 2.5, 0.3),
+    ] {
+        let s = presets::scenario(preset)
+            .unwrap()
+            .with_override("w", json!(w))
+            .unwrap()
+            .with_override("a", json!(a))
+            .unwrap();
+        let mut m = Cubes::new(&s).unwrap();
+        assert_eq!(
+            m.whole_diffs,
+            w == 3.0 || w == 2.0,
+            "{preset}: W {w}, a {a}"
+        );
+        for _ in 0..300 {
+            assert_eq!(
+                m.total_difference().to_bits(),
+                chain(&m),
+                "{preset} at {}",
+                m.steps
+            );
+            lanes += usize::from(m.whole_diffs && m.diff.len() >= crate::state::LANES);
+            m.step();
+        }
+    }
+    assert!(lanes > 600, "{lanes} sums in lanes");
+}
