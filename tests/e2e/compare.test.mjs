@@ -87,8 +87,15 @@ describe('compare two runs', () => {
     assert.equal(hashes.first, hashAt(first, 5));
     assert.equal(hashes.second, hashAt(second, 5));
 
+    // About 5 steps a second (slider position 1.75): the pause below lands with eight seconds to
+    // spare before the first run ends at 99, even on a loaded machine (at the default 14 a second
+    // a click answered late under load saw the run at its end).
+    await page.$eval('#speed', (el) => {
+      el.value = '1.75';
+      el.dispatchEvent(new Event('input'));
+    });
     await page.click('#play');
-    await page.waitForFunction(() => Number(document.querySelector('#step-count').textContent) >= 60, null, { timeout: 30000 });
+    await page.waitForFunction(() => Number(document.querySelector('#step-count').textContent) >= 60, null, { timeout: 60000 });
     await page.click('#play');
     // A frame under way as the pause arrived may still move the count: read it once it stands.
     await page.waitForFunction(() => document.querySelector('#play').textContent === 'Play');
