@@ -171,8 +171,8 @@ export function loadWasm() {
 
 /**
  * Runs the command line (`kumiki ARGS`) and returns what it printed. It is built in the `quick`
- * profile, the one npm test builds its native tests and runs its report and schema checks with
- * before the browser tests, so no test waits for a build of its own (a file run alone builds it once).
+ * profile, the one npm test builds for its report and schema checks before the browser tests, so
+ * no test waits for a build of its own (a file run alone builds it once).
  */
 export function kumiki(args, { env = {} } = {}) {
   return execFileSync('cargo', ['run', '--profile', 'quick', '--quiet', '-p', 'kumiki-cli', '--', ...args], {
