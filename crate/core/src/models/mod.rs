@@ -181,17 +181,7 @@ impl ModelSpec {
     /// checking nothing again. A copy of a description whose check's results a run has taken
     /// ([`ModelSpec::build_once`]) is checked again within `limits`.
     pub fn build(&self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
-        let model = match &self.learnt {
-            Some(learnt) => self.spec.build(learnt.clone(), seed),
-            None => {
-                #[cfg(test)]
-                crate::counts::check();
-                self.spec.check_and_build(limits, seed)?
-            }
-        };
-        #[cfg(test)]
-        crate::counts::build();
-        Ok(model)
+        self.build_from(self.learnt.clone(), seed, limits)
     }
 
     /// [`ModelSpec::build`] for a run, which keeps the description and has no more use for what
@@ -200,10 +190,26 @@ impl ModelSpec {
     pub fn build_once(&mut self, seed: u64, limits: &Limits) -> Result<Box<dyn Model>> {
         // Taken before building: while this description still held it, the build would find it
         // shared and copy it (32 MB of shapes for the 4096² AMAS, held beside the model).
-        let Some(learnt) = self.learnt.take() else {
-            return self.build(seed, limits);
+        let learnt = self.learnt.take();
+        self.build_from(learnt, seed, limits)
+    }
+
+    /// The model at step 0 from what the check learnt, or, without it, checked again within
+    /// `limits` and built.
+    fn build_from(
+        &self,
+        learnt: Option<Learnt>,
+        seed: u64,
+        limits: &Limits,
+    ) -> Result<Box<dyn Model>> {
+        let model = match learnt {
+            Some(learnt) => self.spec.build(learnt, seed),
+            None => {
+                #[cfg(test)]
+                crate::counts::check();
+                self.spec.check_and_build(limits, seed)?
+            }
         };
-        let model = self.spec.build(learnt, seed);
         #[cfg(test)]
         crate::counts::build();
         Ok(model)
