@@ -257,10 +257,9 @@ fn strip_position(message: &str) -> String {
 
 /// Deserialises a model's typed description from the JSON object, naming the offending field.
 pub fn from_value<T: serde::de::DeserializeOwned>(value: serde_json::Value) -> Result<T, Error> {
-    serde_path_to_error::deserialize(value).map_err(|err| {
-        let path = err.path().to_string();
+    crate::read::read(&value).map_err(|(err, path)| {
         let path = if path == "." { String::new() } else { path };
-        Error::field(path, plain(&strip_position(&err.inner().to_string())))
+        Error::field(path, plain(&strip_position(&err.to_string())))
     })
 }
 

@@ -23,6 +23,7 @@ pub mod lattice;
 pub mod limits;
 pub mod math;
 pub mod model;
+mod read;
 pub mod report;
 pub mod rng;
 pub mod row;

@@ -1,0 +1,658 @@
+//! The one reader of typed descriptions: a serde deserializer over a parsed JSON value that
+//! remembers where it is, so an error names its field (`cells[3]`, `spec.rules.A`).
+//!
+//! It replaces serde_path_to_error over serde_json's value deserializer with the same results:
+//! the same values, the same messages (they are serde_json's: the error type is its own) and the
+//! same paths, written the same way. Those crates wrap every visitor and every seed a description
+//! type uses, generically, so the wasm held each type's reading code several times over; this
+//! reader drives the visitors itself, with no wrapper, and forwards every typed request to one
+//! `deserialize_any` (serde_json's value deserializer answers each of them with the same call to
+//! the visitor, or the same error, as `deserialize_any` does).
+
+use serde::de::{self, DeserializeSeed, Visitor};
+use serde_json::{Error, Map, Number, Value};
+use std::cell::RefCell;
+
+/// Reads `T` from `value`; on failure, the error and the path of the innermost field it came
+/// from ("." for the document itself, as serde_path_to_error writes it).
+pub fn read<'de, T: de::Deserialize<'de>>(value: &'de Value) -> Result<T, (Error, String)> {
+    let track = Track::default();
+    T::deserialize(Reader {
+        value,
+        at: &At::Root,
+        track: &track,
+    })
+    .map_err(|e| (e, track.path.into_inner().unwrap_or_else(|| ".".into())))
+}
+
+/// Where a value sits in the document: a chain of steps back to the root, on the stack.
+enum At<'a> {
+    Root,
+    Index(&'a At<'a>, usize),
+    Key(&'a At<'a>, &'a str),
+}
+
+impl At<'_> {
+    /// The path as serde_path_to_error writes it: keys joined by dots, indices in brackets.
+    fn path(&self) -> String {
+        let mut steps = Vec::new();
+        let mut at = self;
+        loop {
+            match at {
+                At::Root => break,
+                At::Index(parent, i) => {
+                    steps.push(format!("[{i}]"));
+                    at = parent;
+                }
+                At::Key(parent, key) => {
+                    steps.push((*key).to_string());
+                    at = parent;
+                }
+            }
+        }
+        if steps.is_empty() {
+            return ".".into();
+        }
+        let mut out = String::new();
+        for (n, step) in steps.iter().rev().enumerate() {
+            if n > 0 && !step.starts_with('[') {
+                out.push('.');
+            }
+            out.push_str(step);
+        }
+        out
+    }
+}
+
+/// The path of the first failure: the innermost, as the error travels out through every level.
+#[derive(Default)]
+struct Track {
+    path: RefCell<Option<String>>,
+}
+
+impl Track {
+    #[cold]
+    fn fail(&self, at: &At, e: Error) -> Error {
+        let mut path = self.path.borrow_mut();
+        if path.is_none() {
+            *path = Some(at.path());
+        }
+        e
+    }
+}
+
+#[derive(Clone, Copy)]
+struct Reader<'a, 'de> {
+    value: &'de Value,
+    at: &'a At<'a>,
+    track: &'a Track,
+}
+
+/// What serde_json's value deserializer reports a value as, when it is not what was expected.
+fn unexpected(value: &Value) -> de::Unexpected<'_> {
+    match value {
+        Value::Null => de::Unexpected::Unit,
+        Value::Bool(b) => de::Unexpected::Bool(*b),
+        Value::Number(n) => match (n.as_u64(), n.as_i64()) {
+            (Some(u), _) => de::Unexpected::Unsigned(u),
+            (None, Some(i)) => de::Unexpected::Signed(i),
+            _ => de::Unexpected::Float(n.as_f64().unwrap_or(f64::NAN)),
+        },
+        Value::String(s) => de::Unexpected::Str(s),
+        Value::Array(_) => de::Unexpected::Seq,
+        Value::Object(_) => de::Unexpected::Map,
+    }
+}
+
+fn visit_number<'de, V: Visitor<'de>>(n: &Number, visitor: V) -> Result<V::Value, Error> {
+    match (n.as_u64(), n.as_i64()) {
+        (Some(u), _) => visitor.visit_u64(u),
+        (None, Some(i)) => visitor.visit_i64(i),
+        _ => visitor.visit_f64(n.as_f64().unwrap_or(f64::NAN)),
+    }
+}
+
+impl<'de> Reader<'_, 'de> {
+    fn any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        match self.value {
+            Value::Null => visitor.visit_unit(),
+            Value::Bool(b) => visitor.visit_bool(*b),
+            Value::Number(n) => visit_number(n, visitor),
+            Value::String(s) => visitor.visit_borrowed_str(s),
+            Value::Array(items) => {
+                let mut seq = Seq {
+                    items: items.iter(),
+                    index: 0,
+                    at: self.at,
+                    track: self.track,
+                };
+                let out = visitor.visit_seq(&mut seq)?;
+                match seq.items.len() {
+                    0 => Ok(out),
+                    _ => Err(de::Error::invalid_length(
+                        items.len(),
+                        &"fewer elements in array",
+                    )),
+                }
+            }
+            Value::Object(map) => self.map(map, visitor),
+        }
+    }
+
+    fn typed<V: Visitor<'de>>(self, fits: bool, visitor: V) -> Result<V::Value, Error> {
+        match fits {
+            true => de::Deserializer::deserialize_any(self, visitor),
+            false => Err(self.track.fail(
+                self.at,
+                de::Error::invalid_type(unexpected(self.value), &visitor),
+            )),
+        }
+    }
+
+    fn map<V: Visitor<'de>>(
+        self,
+        map: &'de Map<String, Value>,
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        let mut entries = Entries {
+            entries: map.iter(),
+            value: None,
+            at: self.at,
+            track: self.track,
+        };
+        let out = visitor.visit_map(&mut entries)?;
+        match entries.entries.len() {
+            0 => Ok(out),
+            _ => Err(de::Error::invalid_length(
+                map.len(),
+                &"fewer elements in map",
+            )),
+        }
+    }
+
+    fn enumeration<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        let (variant, value) = match self.value {
+            Value::String(variant) => (variant, None),
+            Value::Object(map) if map.len() == 1 => {
+                let (variant, value) = map.iter().next().expect("one entry");
+                (variant, Some(value))
+            }
+            Value::Object(_) => {
+                return Err(de::Error::invalid_value(
+                    de::Unexpected::Map,
+                    &"map with a single key",
+                ))
+            }
+            other => return Err(de::Error::invalid_type(unexpected(other), &"string or map")),
+        };
+        visitor.visit_enum(Variant {
+            name: variant,
+            value,
+            at: self.at,
+            track: self.track,
+        })
+    }
+}
+
+/// The typed requests: serde_json's value deserializer answers each as `deserialize_any` does
+/// when the value is of the kind asked for, and otherwise refuses it without asking the visitor
+/// (so a number is not taken for an enum's variant index, say).
+macro_rules! typed {
+    ($($kind:ident: $($method:ident)+;)+) => {
+        $($(
+            fn $method<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+                let fits = matches!(self.value, Value::$kind { .. });
+                self.typed(fits, visitor)
+            }
+        )+)+
+    };
+}
+
+impl<'de> de::Deserializer<'de> for Reader<'_, 'de> {
+    type Error = Error;
+
+    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        self.any(visitor).map_err(|e| self.track.fail(self.at, e))
+    }
+
+    fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        match self.value {
+            Value::Null => visitor.visit_none(),
+            _ => visitor.visit_some(self),
+        }
+        .map_err(|e| self.track.fail(self.at, e))
+    }
+
+    fn deserialize_newtype_struct<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        visitor
+            .visit_newtype_struct(self)
+            .map_err(|e| self.track.fail(self.at, e))
+    }
+
+    fn deserialize_enum<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        _variants: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        self.enumeration(visitor)
+            .map_err(|e| self.track.fail(self.at, e))
+    }
+
+    fn deserialize_ignored_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        visitor.visit_unit()
+    }
+
+    typed! {
+        Bool: deserialize_bool;
+        Number: deserialize_i8 deserialize_i16 deserialize_i32 deserialize_i64 deserialize_i128
+            deserialize_u8 deserialize_u16 deserialize_u32 deserialize_u64 deserialize_u128
+            deserialize_f32 deserialize_f64;
+        String: deserialize_char deserialize_str deserialize_string deserialize_identifier;
+        Array: deserialize_seq;
+        Object: deserialize_map;
+        Null: deserialize_unit;
+    }
+
+    fn deserialize_bytes<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        let fits = matches!(self.value, Value::String(_) | Value::Array(_));
+        self.typed(fits, visitor)
+    }
+
+    fn deserialize_byte_buf<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        self.deserialize_bytes(visitor)
+    }
+
+    fn deserialize_unit_struct<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        self.deserialize_unit(visitor)
+    }
+
+    fn deserialize_tuple<V: Visitor<'de>>(
+        self,
+        _len: usize,
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        self.deserialize_seq(visitor)
+    }
+
+    fn deserialize_tuple_struct<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        _len: usize,
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        self.deserialize_seq(visitor)
+    }
+
+    fn deserialize_struct<V: Visitor<'de>>(
+        self,
+        _name: &'static str,
+        _fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        let fits = matches!(self.value, Value::Array(_) | Value::Object(_));
+        self.typed(fits, visitor)
+    }
+}
+
+struct Seq<'a, 'de> {
+    items: std::slice::Iter<'de, Value>,
+    index: usize,
+    at: &'a At<'a>,
+    track: &'a Track,
+}
+
+impl<'de> de::SeqAccess<'de> for Seq<'_, 'de> {
+    type Error = Error;
+
+    fn next_element_seed<T: DeserializeSeed<'de>>(
+        &mut self,
+        seed: T,
+    ) -> Result<Option<T::Value>, Error> {
+        let Some(value) = self.items.next() else {
+            return Ok(None);
+        };
+        let at = At::Index(self.at, self.index);
+        self.index += 1;
+        seed.deserialize(Reader {
+            value,
+            at: &at,
+            track: self.track,
+        })
+        .map(Some)
+        .map_err(|e| self.track.fail(&at, e))
+    }
+
+    fn size_hint(&self) -> Option<usize> {
+        Some(self.items.len())
+    }
+}
+
+struct Entries<'a, 'de> {
+    entries: serde_json::map::Iter<'de>,
+    value: Option<(&'de str, &'de Value)>,
+    at: &'a At<'a>,
+    track: &'a Track,
+}
+
+impl<'de> de::MapAccess<'de> for Entries<'_, 'de> {
+    type Error = Error;
+
+    fn next_key_seed<K: DeserializeSeed<'de>>(
+        &mut self,
+        seed: K,
+    ) -> Result<Option<K::Value>, Error> {
+        let Some((key, value)) = self.entries.next() else {
+            return Ok(None);
+        };
+        self.value = Some((key, value));
+        seed.deserialize(de::value::BorrowedStrDeserializer::new(key))
+            .map(Some)
+            .map_err(|e| self.track.fail(&At::Key(self.at, key), e))
+    }
+
+    fn next_value_seed<V: DeserializeSeed<'de>>(&mut self, seed: V) -> Result<V::Value, Error> {
+        let (key, value) = self
+            .value
+            .take()
+            .ok_or_else(|| de::Error::custom("value is missing"))?;
+        let at = At::Key(self.at, key);
+        seed.deserialize(Reader {
+            value,
+            at: &at,
+            track: self.track,
+        })
+        .map_err(|e| self.track.fail(&at, e))
+    }
+
+    fn size_hint(&self) -> Option<usize> {
+        Some(self.entries.len())
+    }
+}
+
+/// An enum's variant: its name, and its content when it is written as `{"Name": content}`.
+struct Variant<'a, 'de> {
+    name: &'de str,
+    value: Option<&'de Value>,
+    at: &'a At<'a>,
+    track: &'a Track,
+}
+
+impl<'a, 'de> de::EnumAccess<'de> for Variant<'a, 'de> {
+    type Error = Error;
+    type Variant = Self;
+
+    fn variant_seed<S: DeserializeSeed<'de>>(self, seed: S) -> Result<(S::Value, Self), Error> {
+        Ok((
+            seed.deserialize(de::value::BorrowedStrDeserializer::new(self.name))?,
+            self,
+        ))
+    }
+}
+
+impl<'de> de::VariantAccess<'de> for Variant<'_, 'de> {
+    type Error = Error;
+
+    fn unit_variant(self) -> Result<(), Error> {
+        self.content(|inner| match inner {
+            Some(inner) => de::Deserialize::deserialize(inner),
+            None => Ok(()),
+        })
+    }
+
+    fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value, Error> {
+        self.content(|inner| match inner {
+            Some(inner) => seed.deserialize(inner),
+            None => Err(de::Error::invalid_type(
+                de::Unexpected::UnitVariant,
+                &"newtype variant",
+            )),
+        })
+    }
+
+    fn tuple_variant<V: Visitor<'de>>(self, _len: usize, visitor: V) -> Result<V::Value, Error> {
+        self.content(|inner| match inner.map(|r| (r, r.value)) {
+            Some((_, Value::Array(items))) if items.is_empty() => visitor.visit_unit(),
+            Some((inner, Value::Array(_))) => inner.any(visitor),
+            Some((_, other)) => Err(de::Error::invalid_type(unexpected(other), &"tuple variant")),
+            None => Err(de::Error::invalid_type(
+                de::Unexpected::UnitVariant,
+                &"tuple variant",
+            )),
+        })
+    }
+
+    fn struct_variant<V: Visitor<'de>>(
+        self,
+        _fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        self.content(|inner| match inner.map(|r| (r, r.value)) {
+            Some((inner, Value::Object(map))) => inner.map(map, visitor),
+            Some((_, other)) => Err(de::Error::invalid_type(
+                unexpected(other),
+                &"struct variant",
+            )),
+            None => Err(de::Error::invalid_type(
+                de::Unexpected::UnitVariant,
+                &"struct variant",
+            )),
+        })
+    }
+}
+
+impl<'de> Variant<'_, 'de> {
+    /// Reads the variant's content, which sits at the variant's name: every failure is placed
+    /// there, the content's own or a missing one.
+    fn content<T>(
+        self,
+        read: impl FnOnce(Option<Reader<'_, 'de>>) -> Result<T, Error>,
+    ) -> Result<T, Error> {
+        let at = At::Key(self.at, self.name);
+        let inner = self.value.map(|value| Reader {
+            value,
+            at: &at,
+            track: self.track,
+        });
+        read(inner).map_err(|e| self.track.fail(&at, e))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::read;
+    use serde::{Deserialize, Serialize};
+    use serde_json::{json, Value};
+    use std::collections::BTreeMap;
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Doc {
+        name: String,
+        count: u32,
+        #[serde(default)]
+        small: u8,
+        signed: i64,
+        ratio: f64,
+        flag: bool,
+        letter: Option<char>,
+        cells: Vec<[i32; 3]>,
+        pair: (u16, String),
+        wrapped: Wrapped,
+        unit: Unit,
+        nothing: (),
+        kind: Kind,
+        tagged: Vec<Tagged>,
+        adjacent: Adjacent,
+        either: Option<Either>,
+        table: BTreeMap<String, Vec<f32>>,
+        #[serde(flatten)]
+        rest: Rest,
+    }
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    struct Wrapped(u64);
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    struct Unit;
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    enum Kind {
+        Plain,
+        Newtype(u32),
+        Tuple(i8, i8),
+        Struct { at: [u8; 2], note: Option<String> },
+    }
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(tag = "kind", rename_all = "snake_case")]
+    enum Tagged {
+        Fault { unit: u32 },
+        Move { cells: Vec<i32> },
+    }
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(tag = "t", content = "c")]
+    enum Adjacent {
+        A(String),
+        B { x: i32 },
+    }
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(untagged)]
+    enum Either {
+        Number(f64),
+        Names(Vec<String>),
+    }
+
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
+    struct Rest {
+        extra: Option<i32>,
+    }
+
+    fn valid() -> Value {
+        json!({
+            "name": "a", "count": 3, "small": 1, "signed": -4, "ratio": 0.5, "flag": true,
+            "letter": "q", "cells": [[1, 2, 3], [4, 5, 6]], "pair": [7, "b"], "wrapped": 9,
+            "unit": null, "nothing": null, "kind": {"Struct": {"at": [1, 2], "note": null}},
+            "tagged": [{"kind": "fault", "unit": 2}, {"kind": "move", "cells": [1]}],
+            "adjacent": {"t": "B", "c": {"x": -1}}, "either": ["x", "y"],
+            "table": {"k": [1.5, 2.0]}, "extra": 5
+        })
+    }
+
+    /// Every document one change away from `root`: each place replaced by each kind of value,
+    /// each key removed, an unknown key added to each object and an item to each list.
+    fn neighbours(root: &Value) -> Vec<Value> {
+        let kinds = [
+            json!(null),
+            json!(true),
+            json!("x"),
+            json!("Plain"),
+            json!("fault"),
+            json!(-3),
+            json!(2),
+            json!(1.5),
+            json!(1e12),
+            json!(5_000_000_000u64),
+            json!([]),
+            json!([1, 2, 3]),
+            json!(["A", "B"]),
+            json!({}),
+            json!({"a": 1}),
+            json!({"Newtype": 4}),
+            json!({"Tuple": [1, 2]}),
+            json!({"Plain": null}),
+        ];
+        fn places(v: &Value, at: &mut Vec<Value>, all: &mut Vec<Vec<Value>>) {
+            all.push(at.clone());
+            match v {
+                Value::Object(m) => m.iter().for_each(|(k, c)| {
+                    at.push(json!(k));
+                    places(c, at, all);
+                    at.pop();
+                }),
+                Value::Array(a) => a.iter().enumerate().for_each(|(i, c)| {
+                    at.push(json!(i));
+                    places(c, at, all);
+                    at.pop();
+                }),
+                _ => {}
+            }
+        }
+        fn place<'a>(root: &'a mut Value, at: &[Value]) -> &'a mut Value {
+            at.iter().fold(root, |v, step| match step {
+                Value::String(k) => &mut v[k.as_str()],
+                _ => &mut v[step.as_u64().unwrap() as usize],
+            })
+        }
+        let mut all = Vec::new();
+        places(root, &mut Vec::new(), &mut all);
+        let mut out = Vec::new();
+        for at in &all {
+            for kind in &kinds {
+                let mut doc = root.clone();
+                *place(&mut doc, at) = kind.clone();
+                out.push(doc);
+            }
+            let mut doc = root.clone();
+            match place(&mut doc, at) {
+                Value::Object(m) => {
+                    m.insert("bogus".into(), json!(1));
+                }
+                Value::Array(a) => a.push(json!(7)),
+                _ => continue,
+            }
+            out.push(doc);
+            if let Some((last, parent)) = at.split_last() {
+                let mut doc = root.clone();
+                match (place(&mut doc, parent), last) {
+                    (Value::Object(m), Value::String(k)) => drop(m.remove(k)),
+                    (Value::Array(a), i) => drop(a.remove(i.as_u64().unwrap() as usize)),
+                    _ => unreachable!(),
+                }
+                out.push(doc);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn reads_as_serde_path_to_error_over_serde_json_did() {
+        let docs = neighbours(&valid());
+        assert!(docs.len() > 800, "{} documents", docs.len());
+        let (mut oks, mut errors) = (0, 0);
+        for doc in std::iter::once(valid()).chain(docs) {
+            let ours = read::<Doc>(&doc).map_err(|(e, path)| format!("{path}: {e}"));
+            let theirs = serde_path_to_error::deserialize::<_, Doc>(doc.clone())
+                .map_err(|e| format!("{}: {}", e.path(), e.inner()));
+            assert_eq!(ours, theirs, "{doc}");
+            match ours {
+                Ok(_) => oks += 1,
+                Err(_) => errors += 1,
+            }
+        }
+        // Both kinds of outcome are compared, many times each.
+        assert!(oks > 50 && errors > 500, "{oks} read, {errors} refused");
+    }
+
+    #[test]
+    fn paths_are_written_as_serde_path_to_error_writes_them() {
+        let mut doc = valid();
+        doc["cells"][1][2] = json!("x");
+        let (_, path) = read::<Doc>(&doc).unwrap_err();
+        assert_eq!(path, "cells[1][2]");
+        let mut doc = valid();
+        doc["kind"] = json!({"Struct": {"at": [1, 300]}});
+        assert_eq!(read::<Doc>(&doc).unwrap_err().1, "kind.Struct.at[1]");
+        assert_eq!(read::<Doc>(&json!(3)).unwrap_err().1, ".");
+    }
+}
