@@ -257,10 +257,26 @@ fn strip_position(message: &str) -> String {
 
 /// Deserialises a model's typed description from the JSON object, naming the offending field.
 pub fn from_value<T: serde::de::DeserializeOwned>(value: serde_json::Value) -> Result<T, Error> {
-    crate::read::read(&value).map_err(|(err, path)| {
-        let path = if path == "." { String::new() } else { path };
-        Error::field(path, plain(&strip_position(&err.to_string())))
-    })
+    crate::read::read(&value).map_err(located)
+}
+
+/// Reads an action, `{"kind": "<variant>", ...}`, into the enum `T` of its kinds, naming the
+/// offending field. `T` derives serde's externally tagged form (and tells its schema
+/// `#[schemars(tag = "kind")]`): the object is not buffered, as serde's internally tagged form
+/// would, so errors name the field inside the action too.
+pub fn from_action<T: serde::de::DeserializeOwned>(
+    action: &serde_json::Map<String, serde_json::Value>,
+) -> Result<T, Error> {
+    let mut rest = action.clone();
+    let kind = rest.remove("kind");
+    let rest = serde_json::Value::Object(rest);
+    crate::read::read_tagged("kind", kind.as_ref(), &rest).map_err(located)
+}
+
+/// A reader's error at its path ("." is the document itself), in plain words.
+fn located((err, path): (serde_json::Error, String)) -> Error {
+    let path = if path == "." { String::new() } else { path };
+    Error::field(path, plain(&strip_position(&err.to_string())))
 }
 
 /// serde's messages in the words a person reads: "invalid type: floating point `1e12`, expected

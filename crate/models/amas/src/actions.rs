@@ -10,7 +10,6 @@
 
 use schemars::JsonSchema;
 use serde::Deserialize;
-use serde_json::Value;
 
 use super::state::{BROKEN, CONVEYOR, MODULE, REMOVE, VACANT};
 use super::{Amas, NONE};
@@ -33,7 +32,8 @@ pub struct Checked {
 
 /// An action as written: its kind, and which cells (a count drawn at random, or a list).
 #[derive(Deserialize, JsonSchema)]
-#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(tag = "kind")]
 #[schemars(rename = "AmasDisturbance")]
 pub(super) enum Raw {
     /// Built modules disappear (section 5.4); their neighbours become growth front.
@@ -163,7 +163,7 @@ impl Amas {
 /// `cells_in_lattice` cells. Whether the cells suit the action depends on the state when it is
 /// applied (see [`Amas::check`]).
 pub(super) fn parse(action: &Action, cells_in_lattice: usize) -> Result<Checked> {
-    let (kind, which) = match kumiki_model::error::from_value(Value::Object(action.clone()))? {
+    let (kind, which) = match kumiki_model::error::from_action(action)? {
         Raw::Remove(w) => (Kind::Remove, w),
         Raw::Break(w) => (Kind::Break, w),
         Raw::Dismantle(w) => (Kind::Dismantle, w),

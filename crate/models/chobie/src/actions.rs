@@ -13,14 +13,15 @@ use serde::Deserialize;
 
 use super::motion::NONE;
 use super::Chobie;
-use kumiki_model::error::{from_value, Error, Result};
+use kumiki_model::error::{Error, Result};
 use kumiki_model::model::Action;
 
 /// The largest load, newtons.
 pub const MAX_FORCE: f64 = 1e6;
 
 #[derive(Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields, tag = "kind", rename_all = "lowercase")]
+#[serde(deny_unknown_fields, rename_all = "lowercase")]
+#[schemars(tag = "kind")]
 #[schemars(rename = "ChobieDisturbance")]
 pub(super) enum LoadAction {
     /// Puts a downward load of `force` newtons on the robot at each cell (0 takes it off).
@@ -42,7 +43,7 @@ enum Change {
 /// The cells of a load action and its change, checked for form only (whatever the state):
 /// whether the cells hold robots depends on the state when it is applied.
 fn parse_form(action: &Action) -> Result<(Vec<u64>, Change)> {
-    let (cells, change) = match from_value(serde_json::Value::Object(action.clone()))? {
+    let (cells, change) = match kumiki_model::error::from_action(action)? {
         LoadAction::Load { cells, force } => {
             if !(force.is_finite() && (0.0..=MAX_FORCE).contains(&force)) {
                 return Err(Error::field(

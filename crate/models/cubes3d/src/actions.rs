@@ -2,7 +2,6 @@
 
 use schemars::JsonSchema;
 use serde::Deserialize;
-use serde_json::Value;
 
 use super::{Cubes, HELD_USER};
 use kumiki_model::error::{Error, Result};
@@ -12,7 +11,8 @@ use kumiki_model::model::Action;
 /// (if the rest stays connected), adds one next to the structure, or toggles whether a unit is
 /// held in place; `{"kind": "switch"}` moves to the next target now.
 #[derive(Deserialize, JsonSchema)]
-#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(tag = "kind")]
 #[schemars(rename = "Cubes3dDisturbance")]
 pub(super) enum ActionSpec {
     /// Removes the unit in the one cell listed, if the rest stays connected.
@@ -52,7 +52,7 @@ struct Parsed {
 }
 
 fn parse_action(action: &Action) -> Result<Parsed> {
-    let (op, cells) = match kumiki_model::error::from_value(Value::Object(action.clone()))? {
+    let (op, cells) = match kumiki_model::error::from_action(action)? {
         ActionSpec::Remove { cells } => (Op::Remove, cells),
         ActionSpec::Add { cells } => (Op::Add, cells),
         ActionSpec::Hold { cells } => (Op::Hold, cells),

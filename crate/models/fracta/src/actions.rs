@@ -26,7 +26,8 @@ pub(super) enum Fault {
 /// numbered in reading order of the start shape); `{"kind": "fault", "cells": [i]}` of the unit
 /// on lattice cell i (the click tool).
 #[derive(Deserialize, JsonSchema)]
-#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+#[schemars(tag = "kind")]
 #[schemars(rename = "FractaDisturbance")]
 pub(super) enum FaultAction {
     /// Cuts the power of a unit, named by `unit` (its number in reading order of the start
@@ -43,8 +44,7 @@ pub(super) enum FaultAction {
 /// the lattice, an existing unit number), since a scheduled fault is checked against the
 /// starting state; whether a working unit is there is checked when it is applied.
 pub(super) fn parse_fault(action: &Action, cells_in_lattice: usize, units: usize) -> Result<Fault> {
-    let FaultAction::Fault { cells, unit } =
-        kumiki_model::error::from_value(Value::Object(action.clone()))?;
+    let FaultAction::Fault { cells, unit } = kumiki_model::error::from_action(action)?;
     match (cells, unit) {
         (Some(cells), None) => {
             if cells.is_empty() {

@@ -25,6 +25,25 @@ pub fn read<'de, T: de::Deserialize<'de>>(value: &'de Value) -> Result<T, (Error
     .map_err(|e| (e, track.path.into_inner().unwrap_or_else(|| ".".into())))
 }
 
+/// Reads the enum `T` from an object tagged by its `tag` key (`{"kind": "remove", "cells": [3]}`),
+/// as serde reads an internally tagged enum, but without buffering the object: `T` derives the
+/// externally tagged form, and the tag names its variant, which reads the object's other keys.
+/// The `tag` value is read at its key; the variant's content at the object's own place.
+pub fn read_tagged<'de, T: de::Deserialize<'de>>(
+    tag: &'static str,
+    kind: Option<&'de Value>,
+    rest: &'de Value,
+) -> Result<T, (Error, String)> {
+    let track = Track::default();
+    T::deserialize(Tagged {
+        tag,
+        kind,
+        rest,
+        track: &track,
+    })
+    .map_err(|e| (e, track.path.into_inner().unwrap_or_else(|| ".".into())))
+}
+
 /// Where a value sits in the document: a chain of steps back to the root, on the stack.
 enum At<'a> {
     Root,
@@ -466,193 +485,81 @@ impl<'de> Variant<'_, 'de> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::read;
-    use serde::{Deserialize, Serialize};
-    use serde_json::{json, Value};
-    use std::collections::BTreeMap;
+/// An object tagged by one of its keys, read as an enum: see [`read_tagged`].
+struct Tagged<'a, 'de> {
+    tag: &'static str,
+    kind: Option<&'de Value>,
+    rest: &'de Value,
+    track: &'a Track,
+}
 
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct Doc {
-        name: String,
-        count: u32,
-        #[serde(default)]
-        small: u8,
-        signed: i64,
-        ratio: f64,
-        flag: bool,
-        letter: Option<char>,
-        cells: Vec<[i32; 3]>,
-        pair: (u16, String),
-        wrapped: Wrapped,
-        unit: Unit,
-        nothing: (),
-        kind: Kind,
-        tagged: Vec<Tagged>,
-        adjacent: Adjacent,
-        either: Option<Either>,
-        table: BTreeMap<String, Vec<f32>>,
-        #[serde(flatten)]
-        rest: Rest,
-    }
+impl<'de> de::Deserializer<'de> for Tagged<'_, 'de> {
+    type Error = Error;
 
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    struct Wrapped(u64);
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    struct Unit;
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    enum Kind {
-        Plain,
-        Newtype(u32),
-        Tuple(i8, i8),
-        Struct { at: [u8; 2], note: Option<String> },
-    }
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    #[serde(tag = "kind", rename_all = "snake_case")]
-    enum Tagged {
-        Fault { unit: u32 },
-        Move { cells: Vec<i32> },
-    }
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    #[serde(tag = "t", content = "c")]
-    enum Adjacent {
-        A(String),
-        B { x: i32 },
-    }
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    #[serde(untagged)]
-    enum Either {
-        Number(f64),
-        Names(Vec<String>),
-    }
-
-    #[derive(Debug, PartialEq, Serialize, Deserialize)]
-    struct Rest {
-        extra: Option<i32>,
-    }
-
-    fn valid() -> Value {
-        json!({
-            "name": "a", "count": 3, "small": 1, "signed": -4, "ratio": 0.5, "flag": true,
-            "letter": "q", "cells": [[1, 2, 3], [4, 5, 6]], "pair": [7, "b"], "wrapped": 9,
-            "unit": null, "nothing": null, "kind": {"Struct": {"at": [1, 2], "note": null}},
-            "tagged": [{"kind": "fault", "unit": 2}, {"kind": "move", "cells": [1]}],
-            "adjacent": {"t": "B", "c": {"x": -1}}, "either": ["x", "y"],
-            "table": {"k": [1.5, 2.0]}, "extra": 5
-        })
-    }
-
-    /// Every document one change away from `root`: each place replaced by each kind of value,
-    /// each key removed, an unknown key added to each object and an item to each list.
-    fn neighbours(root: &Value) -> Vec<Value> {
-        let kinds = [
-            json!(null),
-            json!(true),
-            json!("x"),
-            json!("Plain"),
-            json!("fault"),
-            json!(-3),
-            json!(2),
-            json!(1.5),
-            json!(1e12),
-            json!(5_000_000_000u64),
-            json!([]),
-            json!([1, 2, 3]),
-            json!(["A", "B"]),
-            json!({}),
-            json!({"a": 1}),
-            json!({"Newtype": 4}),
-            json!({"Tuple": [1, 2]}),
-            json!({"Plain": null}),
-        ];
-        fn places(v: &Value, at: &mut Vec<Value>, all: &mut Vec<Vec<Value>>) {
-            all.push(at.clone());
-            match v {
-                Value::Object(m) => m.iter().for_each(|(k, c)| {
-                    at.push(json!(k));
-                    places(c, at, all);
-                    at.pop();
-                }),
-                Value::Array(a) => a.iter().enumerate().for_each(|(i, c)| {
-                    at.push(json!(i));
-                    places(c, at, all);
-                    at.pop();
-                }),
-                _ => {}
-            }
+    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        match self.kind {
+            Some(_) => visitor.visit_enum(self),
+            None => Err(self
+                .track
+                .fail(&At::Root, de::Error::missing_field(self.tag))),
         }
-        fn place<'a>(root: &'a mut Value, at: &[Value]) -> &'a mut Value {
-            at.iter().fold(root, |v, step| match step {
-                Value::String(k) => &mut v[k.as_str()],
-                _ => &mut v[step.as_u64().unwrap() as usize],
-            })
-        }
-        let mut all = Vec::new();
-        places(root, &mut Vec::new(), &mut all);
-        let mut out = Vec::new();
-        for at in &all {
-            for kind in &kinds {
-                let mut doc = root.clone();
-                *place(&mut doc, at) = kind.clone();
-                out.push(doc);
-            }
-            let mut doc = root.clone();
-            match place(&mut doc, at) {
-                Value::Object(m) => {
-                    m.insert("bogus".into(), json!(1));
-                }
-                Value::Array(a) => a.push(json!(7)),
-                _ => continue,
-            }
-            out.push(doc);
-            if let Some((last, parent)) = at.split_last() {
-                let mut doc = root.clone();
-                match (place(&mut doc, parent), last) {
-                    (Value::Object(m), Value::String(k)) => drop(m.remove(k)),
-                    (Value::Array(a), i) => drop(a.remove(i.as_u64().unwrap() as usize)),
-                    _ => unreachable!(),
-                }
-                out.push(doc);
-            }
-        }
-        out
     }
 
-    #[test]
-    fn reads_as_serde_path_to_error_over_serde_json_did() {
-        let docs = neighbours(&valid());
-        assert!(docs.len() > 800, "{} documents", docs.len());
-        let (mut oks, mut errors) = (0, 0);
-        for doc in std::iter::once(valid()).chain(docs) {
-            let ours = read::<Doc>(&doc).map_err(|(e, path)| format!("{path}: {e}"));
-            let theirs = serde_path_to_error::deserialize::<_, Doc>(doc.clone())
-                .map_err(|e| format!("{}: {}", e.path(), e.inner()));
-            assert_eq!(ours, theirs, "{doc}");
-            match ours {
-                Ok(_) => oks += 1,
-                Err(_) => errors += 1,
-            }
-        }
-        // Both kinds of outcome are compared, many times each.
-        assert!(oks > 50 && errors > 500, "{oks} read, {errors} refused");
-    }
-
-    #[test]
-    fn paths_are_written_as_serde_path_to_error_writes_them() {
-        let mut doc = valid();
-        doc["cells"][1][2] = json!("x");
-        let (_, path) = read::<Doc>(&doc).unwrap_err();
-        assert_eq!(path, "cells[1][2]");
-        let mut doc = valid();
-        doc["kind"] = json!({"Struct": {"at": [1, 300]}});
-        assert_eq!(read::<Doc>(&doc).unwrap_err().1, "kind.Struct.at[1]");
-        assert_eq!(read::<Doc>(&json!(3)).unwrap_err().1, ".");
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf option
+        unit unit_struct newtype_struct seq tuple tuple_struct map struct enum identifier
+        ignored_any
     }
 }
+
+impl<'a, 'de> de::EnumAccess<'de> for Tagged<'a, 'de> {
+    type Error = Error;
+    type Variant = Reader<'a, 'de>;
+
+    fn variant_seed<S: DeserializeSeed<'de>>(
+        self,
+        seed: S,
+    ) -> Result<(S::Value, Self::Variant), Error> {
+        let kind = self.kind.expect("deserialize_any checked the tag");
+        let at = At::Key(&At::Root, self.tag);
+        let name = seed.deserialize(Reader {
+            value: kind,
+            at: &at,
+            track: self.track,
+        })?;
+        let content = Reader {
+            value: self.rest,
+            at: &At::Root,
+            track: self.track,
+        };
+        Ok((name, content))
+    }
+}
+
+/// The content of a tagged object's variant: the object's other keys.
+impl<'de> de::VariantAccess<'de> for Reader<'_, 'de> {
+    type Error = Error;
+
+    fn unit_variant(self) -> Result<(), Error> {
+        Ok(())
+    }
+
+    fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value, Error> {
+        seed.deserialize(self)
+    }
+
+    fn tuple_variant<V: Visitor<'de>>(self, _len: usize, visitor: V) -> Result<V::Value, Error> {
+        de::Deserializer::deserialize_seq(self, visitor)
+    }
+
+    fn struct_variant<V: Visitor<'de>>(
+        self,
+        fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, Error> {
+        de::Deserializer::deserialize_struct(self, "", fields, visitor)
+    }
+}
+
+#[cfg(test)]
+mod tests;
