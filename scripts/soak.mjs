@@ -6,11 +6,16 @@
 //
 // Flat means: the largest sample of the last tenth of the steps exceeds the largest of the
 // warm-up by less than 5 %. The warm-up is the first tenth of the steps, and at least the steps
-// the page's timeline takes to fill: the wasm Sim keeps up to 256 keyframes of a run (fewer for
-// large lattices: about 96 MB of them), the first 16 steps apart, then drops every other one and
-// doubles the interval. That budget is by design; it fills in the first 256 × 16 = 4096 steps of
-// a run, after which its memory stays put however long the run goes. The script prints start, after warm-up, peak, end and the
-// least-squares slope after warm-up for every series, and exits with 1 when one is not flat.
+// the page's timeline takes to fill twice. The wasm Sim keeps up to 256 keyframes of a run
+// (fewer for large lattices: about 96 MB of them), 16 steps apart or wider when copies cost more
+// than their share of the time; when full it drops every other one and doubles the interval.
+// That budget is by design: the first fill takes 256 intervals, the second reuses the freed
+// keyframes' memory, which it finds in pieces, and from then on the memory stays put however
+// long the run goes. fracta-large in wasm copies 32 steps apart from its start: 65.7 MB at the
+// first fill (8192 steps), 69.3 MB at the second (16 384) and still 69.3 MB at 90 000 and at
+// 10^6 (2026-11-27). So the warm-up is at least 2 × 256 × 32 steps. The script prints start,
+// after warm-up, peak, end and the least-squares slope after warm-up for every series, and exits
+// with 1 when one is not flat.
 // Usage: node scripts/soak.mjs [--steps N] [--every N] [--model M] [--wasm-steps N]
 //        [--native FILE]   (the JSON lines of an earlier `kumiki soak`, instead of running it)
 //        [--native-steps 0] (wasm only)
@@ -29,8 +34,8 @@ const nativeSteps = Number(arg('native-steps', steps));
 const every = Number(arg('every', Math.max(1, Math.floor(steps / 100))));
 const only = arg('model');
 const GROWTH_LIMIT = 0.05;
-/** Steps after which a run's keyframe timeline is full (see above), with room to spare. */
-const TIMELINE_FULL = 2 * 256 * 16;
+/** Steps after which a run's keyframe timeline has filled twice (see above). */
+const TIMELINE_FULL = 2 * 256 * 32;
 
 /** Start, after warm-up, peak, end, growth and slope (bytes per 10^6 steps) of one series. */
 function summarise(points) {
