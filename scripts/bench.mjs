@@ -30,7 +30,7 @@ for (const spec of specs) {
   rows.push({ spec, native, wasm: inWasm });
 }
 
-console.log('\nworkload                        native            wasm (Node)       wasm/native  bytes/cell  page Sim/bare');
+console.log('\nworkload                        native            wasm (Node)       wasm/native  bytes/cell  page Sim/bare  native Playback/bare');
 for (const { spec, native, wasm: w } of rows) {
   if (spec.experiment) {
     console.log(
@@ -42,7 +42,7 @@ for (const { spec, native, wasm: w } of rows) {
   const n = spec.work_per_step ? native.work_per_second : native.steps_per_second;
   const m = spec.work_per_step ? w.work_per_second : w.steps_per_second;
   console.log(
-    `${spec.name.padEnd(30)}  ${fmt(n).padStart(9)} ${unit.padEnd(7)} ${fmt(m).padStart(9)} ${unit.padEnd(7)} ${fmt(m / n, 2).padStart(6)}       ${fmt(native.bytes_per_cell, 3).padEnd(10)}  ${fmt(w.page_steps_per_second / w.steps_per_second, 2)}`,
+    `${spec.name.padEnd(30)}  ${fmt(n).padStart(9)} ${unit.padEnd(7)} ${fmt(m).padStart(9)} ${unit.padEnd(7)} ${fmt(m / n, 2).padStart(6)}       ${fmt(native.bytes_per_cell, 3).padEnd(10)}  ${fmt(w.page_steps_per_second / w.steps_per_second, 2).padEnd(13)}  ${fmt(native.playback_over_bare, 2)}`,
   );
 }
 

@@ -7,7 +7,10 @@
 //! { "name": "amas-square28", "scenario": "amas-square28", "set": {"max_steps": 100000000},
 //!   "warmup": 20, "steps": 200, "repeats": 5, "work_per_step": 784, "work_unit": "cell-updates" }
 //! ```
-//! Each repeat builds a fresh run, warms it up and times `steps` steps (fewer if the run ends).
+//! Each repeat builds a fresh run, warms it up and times `steps` steps (fewer if the run ends);
+//! then the same through the [`Playback`] the page's Sim plays (every step's metrics kept for the
+//! chart, keyframes for rewind), so `playback_over_bare` (the median of the repeats' ratios) is
+//! the page's own share of a step, natively.
 //! One more repeat runs first and is not counted, so caches (and in wasm, the engine's optimising
 //! compiler) are warm. The median rate over the repeats is reported, with the bytes the run holds
 //! per lattice cell.
@@ -18,6 +21,7 @@ use std::time::Instant;
 
 use kumiki_core::experiment::Experiment;
 
+use kumiki_core::playback::Playback;
 use kumiki_core::{presets, Run, Scenario};
 use serde_json::{json, Map, Value};
 
@@ -171,6 +175,9 @@ pub fn measure(w: &Workload, threads: usize) -> Value {
         });
     }
     let mut rates = Vec::new();
+    let mut playback_rates = Vec::new();
+    let mut ratios = Vec::new();
+    let mut keyframes = (0, 0);
     let mut bytes_per_cell = 0.0;
     let mut cells = 0usize;
     for repeat in 0..=w.repeats {
@@ -182,9 +189,23 @@ pub fn measure(w: &Workload, threads: usize) -> Value {
         run.advance(w.warmup);
         let t = Instant::now();
         let done = run.advance(w.steps);
-        let secs = t.elapsed().as_secs_f64();
+        let bare = done as f64 / t.elapsed().as_secs_f64().max(1e-9);
+        // The same steps as the page's Sim plays them, right after: the Playback that keeps
+        // every step's metrics and the keyframes for rewind, with a real clock. Its set-up (the
+        // first keyframe and metrics) is not timed, as the bare run's is not.
+        let mut run = Run::new(w.scenario.clone()).expect("checked at load");
+        run.advance(w.warmup);
+        let mut playback = Playback::new(run);
+        let clock = Instant::now();
+        let mut now = || clock.elapsed().as_secs_f64() * 1e3;
+        let t = Instant::now();
+        let done = playback.advance(w.steps, &mut now);
+        let played = done as f64 / t.elapsed().as_secs_f64().max(1e-9);
+        keyframes = playback.keyframes();
         if repeat > 0 {
-            rates.push(done as f64 / secs.max(1e-9));
+            rates.push(bare);
+            playback_rates.push(played);
+            ratios.push(played / bare);
         }
     }
     let steps_per_second = median(rates);
@@ -194,6 +215,15 @@ pub fn measure(w: &Workload, threads: usize) -> Value {
     out.insert("cells".into(), cells.into());
     out.insert("steps_per_second".into(), json!(steps_per_second));
     out.insert("bytes_per_cell".into(), json!(bytes_per_cell));
+    out.insert(
+        "playback_steps_per_second".into(),
+        json!(median(playback_rates)),
+    );
+    out.insert("playback_over_bare".into(), json!(median(ratios)));
+    out.insert(
+        "keyframes".into(),
+        json!({"kept": keyframes.0, "every": keyframes.1}),
+    );
     if let Some(work) = w.work_per_step {
         out.insert("work_unit".into(), w.work_unit.clone().into());
         out.insert("work_per_second".into(), json!(work * steps_per_second));
