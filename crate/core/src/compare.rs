@@ -16,7 +16,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::error::{Error, Result};
-use crate::scenario::{envelope_role, Role};
+use kumiki_model::entry::{envelope_role, Role};
 
 /// The longest label, in characters.
 pub const MAX_LABEL_CHARS: usize = 60;
