@@ -5,9 +5,8 @@
 //! the same values, the same messages (they are serde_json's: the error type is its own) and the
 //! same paths, written the same way. Those crates wrap every visitor and every seed a description
 //! type uses, generically, so the wasm held each type's reading code several times over; this
-//! reader drives the visitors itself, with no wrapper, and forwards every typed request to one
-//! `deserialize_any` (serde_json's value deserializer answers each of them with the same call to
-//! the visitor, or the same error, as `deserialize_any` does).
+//! reader drives the visitors itself, with no wrapper, and answers every typed request through one
+//! `deserialize_any` once the value is of the kind asked for, as serde_json's does.
 
 use serde::de::{self, DeserializeSeed, Visitor};
 use serde_json::{Error, Map, Number, Value};
@@ -17,12 +16,12 @@ use std::cell::RefCell;
 /// from ("." for the document itself, as serde_path_to_error writes it).
 pub fn read<'de, T: de::Deserialize<'de>>(value: &'de Value) -> Result<T, (Error, String)> {
     let track = Track::default();
-    T::deserialize(Reader {
+    let read = T::deserialize(Reader {
         value,
         at: &At::Root,
         track: &track,
-    })
-    .map_err(|e| (e, track.path.into_inner().unwrap_or_else(|| ".".into())))
+    });
+    track.placed(read)
 }
 
 /// Reads the enum `T` from an object tagged by its `tag` key (`{"kind": "remove", "cells": [3]}`),
@@ -35,13 +34,13 @@ pub fn read_tagged<'de, T: de::Deserialize<'de>>(
     rest: &'de Value,
 ) -> Result<T, (Error, String)> {
     let track = Track::default();
-    T::deserialize(Tagged {
+    let read = T::deserialize(Tagged {
         tag,
         kind,
         rest,
         track: &track,
-    })
-    .map_err(|e| (e, track.path.into_inner().unwrap_or_else(|| ".".into())))
+    });
+    track.placed(read)
 }
 
 /// Where a value sits in the document: a chain of steps back to the root, on the stack.
@@ -90,6 +89,11 @@ struct Track {
 }
 
 impl Track {
+    /// The outcome, its error with the path recorded ("." when none was).
+    fn placed<T>(self, read: Result<T, Error>) -> Result<T, (Error, String)> {
+        read.map_err(|e| (e, self.path.into_inner().unwrap_or_else(|| ".".into())))
+    }
+
     #[cold]
     fn fail(&self, at: &At, e: Error) -> Error {
         let mut path = self.path.borrow_mut();
