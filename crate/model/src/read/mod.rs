@@ -9,7 +9,7 @@
 //! `deserialize_any` once the value is of the kind asked for, as serde_json's does.
 
 use serde::de::{self, DeserializeSeed, Visitor};
-use serde_json::{Error, Map, Number, Value};
+use serde_json::{Error, Map, Value};
 use std::cell::RefCell;
 
 /// Reads `T` from `value`; on failure, the error and the path of the innermost field it came
@@ -33,6 +33,9 @@ pub fn read_tagged<'de, T: de::Deserialize<'de>>(
     kind: Option<&'de Value>,
     rest: &'de Value,
 ) -> Result<T, (Error, String)> {
+    let Some(kind) = kind else {
+        return Err((de::Error::missing_field(tag), ".".into()));
+    };
     let track = Track::default();
     let read = T::deserialize(Tagged {
         tag,
@@ -127,20 +130,12 @@ fn unexpected(value: &Value) -> de::Unexpected<'_> {
     }
 }
 
-fn visit_number<'de, V: Visitor<'de>>(n: &Number, visitor: V) -> Result<V::Value, Error> {
-    match (n.as_u64(), n.as_i64()) {
-        (Some(u), _) => visitor.visit_u64(u),
-        (None, Some(i)) => visitor.visit_i64(i),
-        _ => visitor.visit_f64(n.as_f64().unwrap_or(f64::NAN)),
-    }
-}
-
 impl<'de> Reader<'_, 'de> {
     fn any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
         match self.value {
             Value::Null => visitor.visit_unit(),
             Value::Bool(b) => visitor.visit_bool(*b),
-            Value::Number(n) => visit_number(n, visitor),
+            Value::Number(n) => de::Deserializer::deserialize_any(n, visitor),
             Value::String(s) => visitor.visit_borrowed_str(s),
             Value::Array(items) => {
                 let mut seq = Seq {
@@ -432,24 +427,16 @@ impl<'de> de::VariantAccess<'de> for Variant<'_, 'de> {
     }
 
     fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value, Error> {
-        self.content(|inner| match inner {
-            Some(inner) => seed.deserialize(inner),
-            None => Err(de::Error::invalid_type(
-                de::Unexpected::UnitVariant,
-                &"newtype variant",
-            )),
-        })
+        self.content(|inner| seed.deserialize(shaped(inner, |_| true, "newtype variant")?))
     }
 
     fn tuple_variant<V: Visitor<'de>>(self, _len: usize, visitor: V) -> Result<V::Value, Error> {
-        self.content(|inner| match inner.map(|r| (r, r.value)) {
-            Some((_, Value::Array(items))) if items.is_empty() => visitor.visit_unit(),
-            Some((inner, Value::Array(_))) => inner.any(visitor),
-            Some((_, other)) => Err(de::Error::invalid_type(unexpected(other), &"tuple variant")),
-            None => Err(de::Error::invalid_type(
-                de::Unexpected::UnitVariant,
-                &"tuple variant",
-            )),
+        self.content(|inner| {
+            let inner = shaped(inner, Value::is_array, "tuple variant")?;
+            match inner.value {
+                Value::Array(items) if items.is_empty() => visitor.visit_unit(),
+                _ => inner.any(visitor),
+            }
         })
     }
 
@@ -458,17 +445,20 @@ impl<'de> de::VariantAccess<'de> for Variant<'_, 'de> {
         _fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, Error> {
-        self.content(|inner| match inner.map(|r| (r, r.value)) {
-            Some((inner, Value::Object(map))) => inner.map(map, visitor),
-            Some((_, other)) => Err(de::Error::invalid_type(
-                unexpected(other),
-                &"struct variant",
-            )),
-            None => Err(de::Error::invalid_type(
-                de::Unexpected::UnitVariant,
-                &"struct variant",
-            )),
-        })
+        self.content(|inner| shaped(inner, Value::is_object, "struct variant")?.any(visitor))
+    }
+}
+
+/// A variant's content when it is there and `fits`; else serde_json's error for `what`.
+fn shaped<'r, 'de>(
+    inner: Option<Reader<'r, 'de>>,
+    fits: fn(&Value) -> bool,
+    what: &'static str,
+) -> Result<Reader<'r, 'de>, Error> {
+    match inner {
+        Some(inner) if fits(inner.value) => Ok(inner),
+        Some(inner) => Err(de::Error::invalid_type(unexpected(inner.value), &what)),
+        None => Err(de::Error::invalid_type(de::Unexpected::UnitVariant, &what)),
     }
 }
 
@@ -492,7 +482,7 @@ impl<'de> Variant<'_, 'de> {
 /// An object tagged by one of its keys, read as an enum: see [`read_tagged`].
 struct Tagged<'a, 'de> {
     tag: &'static str,
-    kind: Option<&'de Value>,
+    kind: &'de Value,
     rest: &'de Value,
     track: &'a Track,
 }
@@ -501,12 +491,7 @@ impl<'de> de::Deserializer<'de> for Tagged<'_, 'de> {
     type Error = Error;
 
     fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
-        match self.kind {
-            Some(_) => visitor.visit_enum(self),
-            None => Err(self
-                .track
-                .fail(&At::Root, de::Error::missing_field(self.tag))),
-        }
+        visitor.visit_enum(self)
     }
 
     serde::forward_to_deserialize_any! {
@@ -524,10 +509,9 @@ impl<'a, 'de> de::EnumAccess<'de> for Tagged<'a, 'de> {
         self,
         seed: S,
     ) -> Result<(S::Value, Self::Variant), Error> {
-        let kind = self.kind.expect("deserialize_any checked the tag");
         let at = At::Key(&At::Root, self.tag);
         let name = seed.deserialize(Reader {
-            value: kind,
+            value: self.kind,
             at: &at,
             track: self.track,
         })?;
