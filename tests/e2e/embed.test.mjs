@@ -97,10 +97,12 @@ describe('embedded in a course page on another origin', () => {
     await waitFor(page, () => events.filter((e) => e.type === 'step').length >= 4);
     await page.evaluate(() => send({ source: 'kumiki', type: 'pause' }));
     const played = await events(page, 'step');
-    for (let i = 1; i < played.length; i++) {
-      assert.ok(played[i].at - played[i - 1].at >= 200, `step events are at least ~250 ms apart (${(played[i].at - played[i - 1].at).toFixed(0)} ms)`);
-      assert.ok(played[i].step > played[i - 1].step);
-    }
+    // Their spacing, at most one every 250 ms, is the unit test's (tests/unit/embed.test.ts, on
+    // a fake clock): here the course page sees arrivals, which bunch when its thread is busy (two
+    // sent 250 ms apart arrived 22 ms apart on a loaded machine), and the embedded view draws
+    // about every 280 ms in this headless Chromium, so a page without the throttle spaces them
+    // as widely.
+    for (let i = 1; i < played.length; i++) assert.ok(played[i].step > played[i - 1].step);
     for (const e of played) assert.equal(e.hash, coreHash(link, e.step), `the hash at step ${e.step} is the core's`);
 
     // Paused: a step command moves exactly that many steps. The last state is sent after the pause

@@ -53,8 +53,9 @@ describe('embed events', () => {
   function framed() {
     const listeners: ((e: MessageEvent) => void)[] = [];
     vi.stubGlobal('window', { addEventListener: (_: string, f: (e: MessageEvent) => void) => listeners.push(f) });
-    const posted: { type: string; step?: number }[] = [];
-    const parent = { postMessage: (m: { type: string; step?: number }) => posted.push(m) } as unknown as Window;
+    // Each message with the time it was posted.
+    const posted: { type: string; step?: number; at: number }[] = [];
+    const parent = { postMessage: (m: { type: string; step?: number }) => posted.push({ ...m, at: performance.now() }) } as unknown as Window;
     const loads: string[] = [];
     const host = {
       load: (p: string) => {
@@ -74,6 +75,30 @@ describe('embed events', () => {
     const frame = (steps: number, hash: string) => embed.frame({ steps, hash, finished: false, completed: false, metrics: {} } as unknown as Frame);
     return { posted, loads, command, frame };
   }
+
+  it("send a playing run's step events at most every 250 ms, and its last state after", () => {
+    vi.useFakeTimers({ toFake: ['setTimeout', 'clearTimeout', 'performance'] });
+    try {
+      const { posted, frame } = framed();
+      const steps = () => posted.filter((e) => e.type === 'step');
+      // A new state every 40 ms for two seconds, as a fast run draws.
+      for (let step = 0; step <= 50; step++) {
+        frame(step, `h${step}`);
+        vi.advanceTimersByTime(40);
+      }
+      vi.advanceTimersByTime(300);
+      const sentAt = steps().map((e) => e.at);
+      const gaps = sentAt.slice(1).map((t, i) => t - sentAt[i]);
+      expect(gaps.length).toBeGreaterThan(4);
+      expect(Math.min(...gaps)).toBeGreaterThanOrEqual(250);
+      // Far fewer events than states, and the run's last state is among them.
+      expect(steps().length).toBeLessThan(12);
+      expect(steps().at(-1)?.step).toBe(50);
+    } finally {
+      vi.useRealTimers();
+      vi.unstubAllGlobals();
+    }
+  });
 
   it('say ready once, then a step event per new state, and step 0 again after every load', () => {
     vi.useFakeTimers();
