@@ -355,12 +355,14 @@ export type Statistic = "mean" | "median";
 
 /**
  * Two conditions compared: the difference of means, effect sizes and the Mann-Whitney U test
- * (two-sided).
+ * (two-sided). Every signed figure takes the first condition's side: the difference and Cohen's d
+ * are the first minus the second, U counts the pairs where the first is larger, and all three are
+ * positive when the first condition's values tend to be larger.
  */
 export interface StatisticalComparison {
-  /** Cohen's d: the difference over the pooled sd (NaN when both sds are 0). */
+  /** Cohen's d: the difference (first minus second) over the pooled sd (NaN when both sds are 0). */
   cohens_d: number;
-  /** Mean of the second condition minus mean of the first. */
+  /** Mean of the first condition minus mean of the second. */
   difference: number;
   /** `exact` or `normal`. */
   method: string;
@@ -371,7 +373,7 @@ export interface StatisticalComparison {
   p: number;
   /**
    * The rank-biserial correlation 2U/(n1·n2) − 1, from −1 (all of the first below the second)
-   * to 1.
+   * to 1 (all of the first above).
    */
   rank_biserial: number;
   /** U of the first condition: pairs where its value is larger, ties counting one half. */
@@ -437,7 +439,7 @@ export interface Unpacked {
 }
 
 /** Whether the paper's claim holds in Kumiki, where the paper states a comparison. */
-export type Verdict = "holds" | "differs" | "not_stated";
+export type Verdict = "differs" | "holds" | "partial" | "not_stated";
 
 /**
  * The behaviour versions of a link's model: the one that made the link and this program's. The

@@ -18,6 +18,7 @@ export const OPEN_EXPERIMENT = 'kumiki:open-experiment';
 
 const VERDICT_TEXT: Record<Finding['verdict'], string> = {
   holds: 'holds',
+  partial: 'partial',
   differs: 'differs',
   not_stated: 'not stated',
 };
@@ -86,7 +87,7 @@ export function renderReproduction(root: HTMLElement, model: string) {
   root.append(
     el('p', { class: 'citation', text: section.citation }),
     el('p', {
-      text: `${section.findings.length} claims: ${count('holds')} hold, ${count('differs')} differ, ${count('not_stated')} with no comparison stated. Each figure comes from the built-in experiments (${section.experiments.join(', ')}), seeded, so the command line's “kumiki reproduce” gives the same. Each claim opens the experiments it reads, and “Re-run” runs them here and recomputes its figure and verdict.`,
+      text: `${section.findings.length} claims: ${count('holds')} hold, ${count('partial')} in part, ${count('differs')} differ, ${count('not_stated')} with no comparison stated. Each figure comes from the built-in experiments (${section.experiments.join(', ')}), seeded, so the command line's “kumiki reproduce” gives the same. Each claim opens the experiments it reads, and “Re-run” runs them here and recomputes its figure and verdict.`,
     }),
   );
   // Each experiment behind the figures opens in the Experiments tab, ready to run again.

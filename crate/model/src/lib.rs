@@ -11,7 +11,7 @@
 //!   carry; [`limits`]: every size a scenario may ask for;
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //!   [`error`]: errors that name the field and the rule; [`sort`]: one stable sort for the cold
-//!   paths;
+//!   paths; [`stats`]: two conditions compared (effect sizes, the Mann-Whitney U test);
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
@@ -29,6 +29,7 @@ pub mod rng;
 pub mod row;
 pub mod shape;
 pub mod sort;
+pub mod stats;
 
 pub use error::{Error, Result};
 pub use limits::Limits;

@@ -23,7 +23,12 @@ pub struct Paper {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
+    /// The runs show the claim as strongly as the text states it.
     Holds,
+    /// The runs point the way the text says, but less strongly than it states: a small or
+    /// non-significant effect where the text argues for a large one, or the behaviour in only
+    /// some of the runs where the text says "always" or "most".
+    Partial,
     Differs,
     /// The text states a figure or a behaviour but no comparison to judge.
     NotStated,
@@ -42,9 +47,150 @@ impl Verdict {
     pub fn label(self) -> &'static str {
         match self {
             Verdict::Holds => "holds",
+            Verdict::Partial => "partial",
             Verdict::Differs => "differs",
             Verdict::NotStated => "not stated",
         }
+    }
+}
+
+/// How large an effect the text's words claim, for [`Ordering::judge`]: the threshold is on
+/// Cohen's d (Cohen's conventions: 0.2 small, 0.5 medium, 0.8 large) and on the rank-biserial
+/// correlation (0.1, 0.3, 0.5), and an effect must pass both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Size {
+    /// Any effect in the stated direction that is significant ("better", "fewer").
+    Any,
+    /// At least medium ("clearly", "much").
+    Medium,
+    /// At least large: the text argues for a large effect (a bottleneck removed, a structure
+    /// that "cannot" do what the other does).
+    Large,
+}
+
+impl Size {
+    fn thresholds(self) -> (f64, f64) {
+        match self {
+            Size::Any => (0.0, 0.0),
+            Size::Medium => (0.5, 0.3),
+            Size::Large => (0.8, 0.5),
+        }
+    }
+
+    fn words(self) -> &'static str {
+        match self {
+            Size::Any => "a significant effect",
+            Size::Medium => "a significant effect of at least medium size (|d| ≥ 0.5, |r| ≥ 0.3)",
+            Size::Large => "a significant, large effect (|d| ≥ 0.8, |r| ≥ 0.5)",
+        }
+    }
+}
+
+/// A claim that one condition's values lie below (or above) another's, judged by effect size and
+/// significance (the two-sided Mann-Whitney U test at the 5 % level) rather than by the sign of a
+/// difference alone.
+#[derive(Clone, Debug)]
+pub struct Ordering {
+    /// The comparison, first condition against second.
+    pub comparison: Option<crate::stats::Comparison>,
+    /// Whether the text claims the first condition's values are the lower.
+    pub first_lower: bool,
+    pub size: Size,
+}
+
+/// The significance level of every verdict that compares two conditions.
+pub const ALPHA: f64 = 0.05;
+
+impl Ordering {
+    /// The claim "`first` lies below `second`" (`first_lower`) or above it, of effect `size`.
+    pub fn new(first: &[f64], second: &[f64], first_lower: bool, size: Size) -> Ordering {
+        Ordering {
+            comparison: crate::stats::Comparison::of(first, second),
+            first_lower,
+            size,
+        }
+    }
+
+    /// Holds when the effect points the stated way, is significant and is at least the stated
+    /// size; partial when it points the stated way but is not significant or smaller than stated;
+    /// differs when it points the other way (or there is nothing to compare).
+    pub fn verdict(&self) -> Verdict {
+        let Some(c) = self.comparison else {
+            return Verdict::Differs;
+        };
+        let sign = if self.first_lower { -1.0 } else { 1.0 };
+        let (d, r) = (sign * c.cohens_d, sign * c.rank_biserial);
+        let way = match d.is_nan() {
+            true => r > 0.0,
+            false => d > 0.0 && r > 0.0,
+        };
+        if !way {
+            return Verdict::Differs;
+        }
+        let (dmin, rmin) = self.size.thresholds();
+        let big = (d.is_nan() || d >= dmin) && r >= rmin;
+        Verdict::from(c.p < ALPHA && big).or_partial()
+    }
+
+    /// "Cohen's d -1.20, rank-biserial -0.64, Mann-Whitney p = 0.004 (n = 10, 10): a significant,
+    /// large effect", the words saying what was asked and whether it was met.
+    pub fn describe(&self) -> String {
+        let Some(c) = self.comparison else {
+            return "nothing to compare".into();
+        };
+        let met = match self.verdict() {
+            Verdict::Holds => format!("{} as claimed", self.size.words()),
+            Verdict::Partial if c.p >= ALPHA => "the claimed direction, not significant".into(),
+            Verdict::Partial => format!("the claimed direction, short of {}", self.size.words()),
+            _ => "against the claimed direction".into(),
+        };
+        format!(
+            "Cohen's d {}, rank-biserial {}, Mann-Whitney p = {} ({met})",
+            fmt(c.cohens_d, 2),
+            fmt(c.rank_biserial, 2),
+            p_value(c.p),
+        )
+    }
+}
+
+impl Verdict {
+    /// Partial where this is differs: for a claim already known to point the stated way.
+    fn or_partial(self) -> Verdict {
+        match self {
+            Verdict::Differs => Verdict::Partial,
+            v => v,
+        }
+    }
+
+    /// The verdict on a claim that something happens in all runs ("always", "in all cases"):
+    /// holds when it happens in every run, partial when in most (more than half), differs
+    /// otherwise.
+    pub fn of_all(happened: usize, runs: usize) -> Verdict {
+        match happened {
+            _ if runs == 0 => Verdict::Differs,
+            h if h == runs => Verdict::Holds,
+            h if 2 * h > runs => Verdict::Partial,
+            _ => Verdict::Differs,
+        }
+    }
+
+    /// The verdict on a claim that something happens in most runs: holds when it happens in more
+    /// than half, partial when in some, differs when in none.
+    pub fn of_most(happened: usize, runs: usize) -> Verdict {
+        match happened {
+            h if 2 * h > runs => Verdict::Holds,
+            0 => Verdict::Differs,
+            _ => Verdict::Partial,
+        }
+    }
+}
+
+/// A p value as the report writes it: three decimals, below 0.001 in scientific form.
+pub fn p_value(p: f64) -> String {
+    match p {
+        p if p.is_nan() => "n/a".into(),
+        p if p < 0.001 => format!("{p:.2e}"),
+        p => format!("{p:.3}"),
     }
 }
 
@@ -295,5 +441,72 @@ pub fn fmt(v: f64, digits: usize) -> String {
     {
         true => s.trim_start_matches('-').to_string(),
         false => s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spread(centre: f64) -> Vec<f64> {
+        (0..10).map(|i| centre + i as f64).collect()
+    }
+
+    #[test]
+    fn an_ordering_holds_only_when_large_and_significant_as_claimed() {
+        // Disjoint samples, 20 apart with sd 3: d ≈ -6.6, r = -1, p ≈ 1e-5.
+        let low = Ordering::new(&spread(0.0), &spread(20.0), true, Size::Large);
+        assert_eq!(low.verdict(), Verdict::Holds, "{}", low.describe());
+        // The same numbers claimed the other way round differ.
+        let high = Ordering::new(&spread(0.0), &spread(20.0), false, Size::Any);
+        assert_eq!(high.verdict(), Verdict::Differs);
+        // One apart: the right direction, not significant at n = 10.
+        let small = Ordering::new(&spread(0.0), &spread(1.0), true, Size::Any);
+        assert_eq!(small.verdict(), Verdict::Partial);
+        assert!(
+            small.describe().contains("not significant"),
+            "{}",
+            small.describe()
+        );
+        // One apart at n = 100 (d ≈ -0.35, rank-biserial ≈ -0.19): significant, so it holds
+        // for Any, but short of Medium.
+        let many = |c: f64| (0..100).map(|i| c + (i % 10) as f64).collect::<Vec<_>>();
+        let medium = Ordering::new(&many(0.0), &many(1.0), true, Size::Medium);
+        let c = medium.comparison.unwrap();
+        assert!(c.p < ALPHA && c.cohens_d > -0.5, "{c:?}");
+        assert_eq!(medium.verdict(), Verdict::Partial);
+        assert!(
+            medium.describe().contains("short of"),
+            "{}",
+            medium.describe()
+        );
+        assert_eq!(
+            Ordering::new(&many(0.0), &many(1.0), true, Size::Any).verdict(),
+            Verdict::Holds
+        );
+        // Nothing to compare.
+        assert_eq!(
+            Ordering::new(&[], &[1.0], true, Size::Any).verdict(),
+            Verdict::Differs
+        );
+    }
+
+    #[test]
+    fn all_and_most_are_counted_as_the_words_say() {
+        assert_eq!(Verdict::of_all(10, 10), Verdict::Holds);
+        assert_eq!(Verdict::of_all(9, 10), Verdict::Partial);
+        assert_eq!(Verdict::of_all(5, 10), Verdict::Differs);
+        assert_eq!(Verdict::of_all(0, 0), Verdict::Differs);
+        assert_eq!(Verdict::of_most(6, 10), Verdict::Holds);
+        assert_eq!(Verdict::of_most(5, 10), Verdict::Partial);
+        assert_eq!(Verdict::of_most(15, 45), Verdict::Partial);
+        assert_eq!(Verdict::of_most(0, 10), Verdict::Differs);
+    }
+
+    #[test]
+    fn p_values_are_written_in_one_way() {
+        assert_eq!(p_value(0.04567), "0.046");
+        assert_eq!(p_value(8.09e-34), "8.09e-34");
+        assert_eq!(p_value(f64::NAN), "n/a");
     }
 }

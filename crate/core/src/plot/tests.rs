@@ -543,8 +543,9 @@ fn statistics_match_values_worked_by_hand() {
     let c = Comparison::of(&a, &b).unwrap();
     assert_eq!((c.u, c.rank_biserial, c.method), (0.0, -1.0, "exact"));
     assert!(close(c.p, 2.0 / 252.0), "{}", c.p);
-    assert!(close(c.cohens_d, 5.0 / 2.5f64.sqrt()));
-    assert!(close(c.difference, 5.0));
+    // First minus second, as U takes the first's side: every value of a lies below b's.
+    assert!(close(c.cohens_d, -5.0 / 2.5f64.sqrt()));
+    assert!(close(c.difference, -5.0));
     // Interleaved: U = 12.5 of 25 pairs would be no effect; here U = 10 and p is large.
     let c = Comparison::of(&[1.0, 3.0, 5.0, 7.0, 9.0], &[2.0, 4.0, 6.0, 8.0, 10.0]).unwrap();
     assert_eq!(c.u, 10.0);
