@@ -214,6 +214,7 @@ impl Size {
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum PlotFormat {
     Svg,
+    Pdf,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]

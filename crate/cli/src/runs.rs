@@ -52,14 +52,15 @@ pub(crate) struct SweepArgs {
     experiment: String,
     #[arg(long, value_enum, default_value_t = Format::Json)]
     format: Format,
-    /// Also draw the experiment's plots: one EXPERIMENT-N.svg per plot, in --plot-dir
+    /// Also draw the experiment's plots: one EXPERIMENT-N.svg (or .pdf) per plot, in --plot-dir
     #[arg(long, value_enum, value_name = "FORMAT")]
     plot: Option<PlotFormat>,
     /// Where --plot writes its files
     #[arg(long, value_name = "DIR", default_value = ".")]
     plot_dir: PathBuf,
-    /// Print per condition n, mean, sd, median, IQR and 95% interval (and, for two conditions,
-    /// effect sizes and the Mann-Whitney U test) as JSON lines instead of the rows
+    /// Print per condition n, mean, sd, median, IQR and 95% interval, then the comparisons (for
+    /// three or more conditions the Kruskal-Wallis test, and every pair, first minus second, by
+    /// effect sizes and the Mann-Whitney U test, Holm-corrected) as JSON lines instead of the rows
     #[arg(long, conflicts_with = "shard")]
     summary: bool,
     /// Also write the traced metrics in long form (run, step, metric, unit, value) as CSV to FILE
@@ -222,38 +223,27 @@ pub(crate) fn sweep(args: SweepArgs, out: &mut impl Write) -> Result<(), Failure
     let rows = output.emit(jobs.len(), out, keep, |i| {
         experiment.run_job(&jobs[i]).map_err(|e| e.to_string())
     })?;
-    let models: Vec<&str> = experiment.scenarios.iter().map(Scenario::model).collect();
-    let figures = kumiki_core::plot::figure::figures(&experiment.plots, &rows, &models);
+    let figures = kumiki_core::plot::figure::figures_of(&experiment, &rows);
     if args.summary {
-        for f in figures
-            .iter()
-            .filter(|f| f.kind == kumiki_core::plot::figure::FigureKind::Summary)
-        {
-            for r in &f.table {
-                writeln!(
-                    out,
-                    "{}",
-                    serde_json::json!({"figure": f.title, "condition": r.condition, "runs": r.runs, "completed": r.completed, "value": r.value, "unit": r.unit, "stats": r.stats})
-                )?;
-            }
-            for c in &f.comparisons {
-                writeln!(
-                    out,
-                    "{}",
-                    serde_json::json!({"figure": f.title, "value": c.value, "conditions": c.conditions, "comparison": c.comparison})
-                )?;
-            }
+        for line in kumiki_core::plot::figure::summary_lines(&figures) {
+            writeln!(out, "{line}")?;
         }
     }
-    if let Some(PlotFormat::Svg) = args.plot {
+    if let Some(format) = args.plot {
         std::fs::create_dir_all(&args.plot_dir)
             .map_err(|e| format!("{}: {e}", args.plot_dir.display()))?;
         for (i, f) in figures.iter().enumerate() {
+            let (ext, bytes) = match format {
+                PlotFormat::Svg => ("svg", kumiki_core::plot::svg::svg(f).into_bytes()),
+                PlotFormat::Pdf => (
+                    "pdf",
+                    kumiki_core::plot::pdf::pdf(&kumiki_core::plot::svg::layout(f)),
+                ),
+            };
             let path = args
                 .plot_dir
-                .join(format!("{}-{}.svg", experiment.name, i + 1));
-            std::fs::write(&path, kumiki_core::plot::svg::svg(f))
-                .map_err(|e| format!("{}: {e}", path.display()))?;
+                .join(format!("{}-{}.{ext}", experiment.name, i + 1));
+            std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
             eprintln!("kumiki: wrote {}", path.display());
         }
     }

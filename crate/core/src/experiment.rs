@@ -17,10 +17,14 @@
 //! combined in every way (keys in sorted order, the last varying fastest); `set` applies to every
 //! run; `seeds` is a count (seeds 1..=N) or a list. Jobs are numbered scenario-major, then grid,
 //! then seed, and every runner reports rows in that order.
+//!
+//! A grid value may be a range, `sample` adds parameter points drawn at random or by Latin
+//! hypercube, and `stop` ends each run early on a condition: [`crate::design`].
 
 use serde::Serialize;
 use serde_json::{Map, Value};
 
+use crate::design::{self, Sample, Stop};
 use crate::error::{Error, Result};
 use crate::hash;
 use crate::limits::Limits;
@@ -42,6 +46,10 @@ pub struct Experiment {
     pub set: Vec<(String, Value)>,
     pub seeds: Vec<u64>,
     pub trace: Option<TraceSpec>,
+    /// Parameter points drawn from ranges, each run with every grid combination.
+    pub sample: Option<Sample>,
+    /// A condition that ends a run early, checked after every step.
+    pub stop: Option<Stop>,
     /// The plots as written in the file (absent: `null`).
     pub plot: Value,
     /// The plots, read and checked against the experiment's grid, models and traces.
@@ -159,16 +167,11 @@ impl Experiment {
             None => Vec::new(),
             Some(Value::Object(g)) => g
                 .into_iter()
-                .map(|(k, v)| match v {
-                    Value::Array(values) if !values.is_empty() => Ok((k, values)),
-                    _ => Err(Error::field(
-                        format!("grid.{k}"),
-                        "expected a non-empty list of values",
-                    )),
-                })
+                .map(|(k, v)| design::grid_values(&k, v).map(|values| (k, values)))
                 .collect::<Result<Vec<_>>>()?,
             Some(_) => return Err(Error::field("grid", "expected an object of path: [values]")),
         };
+        let sample = map.remove("sample").map(Sample::read).transpose()?;
         let set = match map.remove("set") {
             None => Vec::new(),
             Some(Value::Object(s)) => s.into_iter().collect(),
@@ -238,10 +241,11 @@ impl Experiment {
             }
         };
         let plot = map.remove("plot").unwrap_or(Value::Null);
+        let stop_value = map.remove("stop");
         if let Some(k) = map.keys().next() {
             return Err(Error::field(
                 k.as_str(),
-                "unknown field; expected version, name, title, description, scenarios, grid, set, seeds, trace or plot",
+                "unknown field; expected version, name, title, description, scenarios, grid, sample, set, seeds, trace, stop or plot",
             ));
         }
         let models: Vec<&str> = {
@@ -251,32 +255,12 @@ impl Experiment {
         };
         if let Some(t) = &trace {
             for (i, name) in t.metrics.iter().enumerate() {
-                if !models
-                    .iter()
-                    .any(|m| crate::models::metric_info(m, name).is_some())
-                {
-                    return Err(Error::field(
-                        format!("trace.metrics[{i}]"),
-                        format!(
-                            "'{name}' is not a metric of {} (see kumiki metrics)",
-                            models.join(" or ")
-                        ),
-                    ));
-                }
+                crate::models::check_metric(&models, name)
+                    .map_err(|e| e.within(&format!("trace.metrics[{i}]")))?;
             }
         }
-        let plots = PlotSpec::read_all(
-            plot.clone(),
-            &plot::Context {
-                params: grid.iter().map(|(k, _)| k.as_str()).collect(),
-                models,
-                traced: trace
-                    .iter()
-                    .flat_map(|t| t.metrics.iter().map(String::as_str))
-                    .collect(),
-            },
-        )?;
-        let experiment = Experiment {
+        let stop = stop_value.map(|v| Stop::read(v, &models)).transpose()?;
+        let mut experiment = Experiment {
             name,
             title,
             description,
@@ -285,31 +269,100 @@ impl Experiment {
             set,
             seeds,
             trace,
-            plot,
-            plots,
+            sample,
+            stop,
+            plot: Value::Null,
+            plots: Vec::new(),
             definition,
         };
-        let combos = experiment.scenarios.len() * experiment.combinations().len();
-        if combos.saturating_mul(experiment.seeds.len()) > MAX_JOBS {
-            return Err(Error::field("grid", format!("more than {MAX_JOBS} runs")));
-        }
-        // Every combination must give a valid scenario; say which one does not.
-        for (s, scenario) in experiment.scenarios.iter().enumerate() {
-            for params in experiment.combinations() {
-                experiment.scenario_for(s, &params).map_err(|e| {
-                    let at: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
-                    Error::field(
-                        "grid",
-                        format!("{} with {}: {e}", scenario.name, at.join(", ")),
-                    )
-                })?;
-            }
-        }
+        experiment.check_runs()?;
+        // The plots are read once the grid is known to be right, so a misspelt grid key is
+        // blamed on the grid, not on a plot that names the key as it should be.
+        let plots = PlotSpec::read_all(
+            plot.clone(),
+            &plot::Context {
+                params: experiment.param_keys(),
+                models,
+                traced: experiment
+                    .trace
+                    .iter()
+                    .flat_map(|t| t.metrics.iter().map(String::as_str))
+                    .collect(),
+            },
+        )?;
+        experiment.plots = plots;
+        experiment.plot = plot;
         Ok(experiment)
     }
 
-    /// Every combination of grid values, the last key varying fastest.
+    /// The number of runs, and a valid scenario for every combination; a combination that gives
+    /// none is blamed on the grid or sample key whose value the scenario refuses.
+    fn check_runs(&self) -> Result<()> {
+        if let Some(sample) = &self.sample {
+            if let Some((k, _)) = sample
+                .ranges
+                .iter()
+                .find(|(k, _)| self.grid.iter().any(|(g, _)| g == k))
+            {
+                return Err(Error::field(
+                    format!("sample.ranges.{k}"),
+                    "is also a grid key; a key is either listed or sampled",
+                ));
+            }
+        }
+        let sampled: Vec<&str> = self
+            .sample
+            .iter()
+            .flat_map(|s| s.ranges.iter().map(|(k, _)| k.as_str()))
+            .collect();
+        let combos = self.combinations();
+        if (self.scenarios.len() * combos.len()).saturating_mul(self.seeds.len()) > MAX_JOBS {
+            return Err(Error::field("grid", format!("more than {MAX_JOBS} runs")));
+        }
+        for (s, scenario) in self.scenarios.iter().enumerate() {
+            for params in &combos {
+                self.scenario_for(s, params)
+                    .map_err(|e| blame(&scenario.name, params, e, &sampled))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The keys a row's `params` holds: the grid's, then the sample's.
+    pub fn param_keys(&self) -> Vec<&str> {
+        let grid = self.grid.iter().map(|(k, _)| k.as_str());
+        let sampled = self
+            .sample
+            .iter()
+            .flat_map(|s| s.ranges.iter().map(|(k, _)| k.as_str()));
+        grid.chain(sampled).collect()
+    }
+
+    /// Scenarios × combinations × seeds.
+    pub fn job_count(&self) -> usize {
+        self.scenarios.len() * self.combinations().len() * self.seeds.len()
+    }
+
+    /// Every combination of grid values, the last key varying fastest, each with every sample
+    /// point in turn.
     fn combinations(&self) -> Vec<Vec<(String, Value)>> {
+        let grid = self.grid_combinations();
+        let Some(sample) = &self.sample else {
+            return grid;
+        };
+        let points = sample.points();
+        grid.iter()
+            .flat_map(|g| {
+                points.iter().map(move |p| {
+                    let mut c = g.clone();
+                    c.extend(p.iter().cloned());
+                    c
+                })
+            })
+            .collect()
+    }
+
+    fn grid_combinations(&self) -> Vec<Vec<(String, Value)>> {
         let mut combos: Vec<Vec<(String, Value)>> = vec![Vec::new()];
         for (key, values) in &self.grid {
             combos = combos
@@ -365,22 +418,26 @@ impl Experiment {
         let mut scenario = self.scenario_for(job.scenario, &job.params)?;
         scenario.seed = job.seed;
         let scenario_hash = hash::hex(scenario.hash_without_seed());
+        let doc = match &self.stop {
+            Some(_) => scenario.to_value(),
+            None => Value::Null,
+        };
+        let stopped = |run: &Run| self.stop.as_ref().is_some_and(|s| s.met(run, &doc));
         let mut run = Run::new(scenario)?;
-        let trace = self.trace.as_ref().map(|spec| {
-            let mut trace = Trace::default();
-            loop {
-                let steps = run.steps();
-                let finished = run.finished();
-                if steps % spec.every == 0 || finished {
-                    trace.sample(steps, &run.model().metrics(), &spec.metrics);
-                }
-                if !run.step() {
-                    break;
+        let mut trace = self.trace.as_ref().map(|_| Trace::default());
+        loop {
+            let stop = stopped(&run);
+            if let (Some(t), Some(spec)) = (&mut trace, &self.trace) {
+                if run.steps() % spec.every == 0 || stop || run.finished() {
+                    t.sample(run.steps(), &run.model().metrics(), &spec.metrics);
                 }
             }
-            trace
-        });
-        run.run_to_end();
+            // `step` applies the disturbances due at the last step before it says the run is
+            // over, as a run without a stop condition always did.
+            if stop || !run.step() {
+                break;
+            }
+        }
         Ok(Row::from_outcome(
             run.outcome(),
             canonical_params(&job.params),
@@ -388,6 +445,26 @@ impl Experiment {
             trace,
         ))
     }
+}
+
+/// The error of a combination the scenario refuses, blamed on the key whose value it refuses
+/// (`grid.robot: amas-L with robot=1: unknown field 'robot'; did you mean 'robots'?`), else on
+/// the grid with the combination spelt out.
+fn blame(scenario: &str, params: &[(String, Value)], e: Error, sampled: &[&str]) -> Error {
+    if let Error::Field { path, reason } = &e {
+        let owns = |k: &str| {
+            path == k || path.starts_with(&format!("{k}.")) || path.starts_with(&format!("{k}["))
+        };
+        if let Some((k, value)) = params.iter().find(|(k, _)| owns(k)) {
+            let at = match sampled.contains(&k.as_str()) {
+                true => format!("sample.ranges.{k}"),
+                false => format!("grid.{k}"),
+            };
+            return Error::field(at, format!("{scenario} with {k}={value}: {reason}"));
+        }
+    }
+    let at: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    Error::field("grid", format!("{scenario} with {}: {e}", at.join(", ")))
 }
 
 fn canonical_params(params: &[(String, Value)]) -> Map<String, Value> {

@@ -11,6 +11,7 @@ use serde_json::Value;
 
 use crate::experiment::{Experiment, Row, PROGRAM_VERSION};
 use crate::models;
+pub use crate::plot::figure::Partial;
 
 /// The commit this program was built from (see build.rs).
 pub const COMMIT: &str = env!("KUMIKI_COMMIT");
@@ -22,12 +23,15 @@ pub struct Provenance {
     pub commit: String,
     /// The behaviour version of each model the experiment runs (see `ModelEntry::model_version`).
     pub models: BTreeMap<String, u32>,
-    /// The seeds every grid point ran.
+    /// The seeds every grid point ran; of a partial sweep, the seeds of the runs it has.
     pub seeds: Vec<u64>,
     /// When the sweep ran, as the caller gave it (RFC 3339, UTC).
     pub time: String,
     /// The experiment as it was read, every scenario included.
     pub experiment: Value,
+    /// Set when the rows are only some of the experiment's runs (a cancelled sweep).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub partial: Option<Partial>,
 }
 
 impl Provenance {
@@ -44,7 +48,23 @@ impl Provenance {
             seeds: e.seeds.clone(),
             time: time.into(),
             experiment: e.definition.clone(),
+            partial: None,
         }
+    }
+
+    /// The provenance of `rows` of `e`: when they are fewer than its runs (a cancelled sweep),
+    /// marked partial, with only the seeds of the runs it has.
+    pub fn of_rows(e: &Experiment, time: &str, rows: &[Row]) -> Provenance {
+        let mut p = Provenance::of(e, time);
+        let of = e.job_count();
+        if rows.len() < of {
+            p.seeds.retain(|s| rows.iter().any(|r| r.seed == *s));
+            p.partial = Some(Partial {
+                runs: rows.len(),
+                of,
+            });
+        }
+        p
     }
 
     /// The provenance as `# ` comment lines, for the top of a CSV file.
@@ -54,8 +74,14 @@ impl Provenance {
             .iter()
             .map(|(m, v)| format!("{m} behaviour version {v}"))
             .collect();
+        let partial = self.partial.map_or(String::new(), |p| {
+            format!(
+                "# {}: the sweep was cancelled; seeds are those run\n",
+                p.words()
+            )
+        });
         format!(
-            "# {} (commit {})\n# models: {}\n# seeds: {}\n# time: {}\n# experiment: {}\n",
+            "# {} (commit {})\n{partial}# models: {}\n# seeds: {}\n# time: {}\n# experiment: {}\n",
             self.program,
             self.commit,
             models.join(", "),

@@ -11,7 +11,8 @@
 //! - [`link`]: the share-link codec;
 //! - [`schema`]: the JSON Schemas of scenarios and experiments, derived from the same types;
 //! - [`presets`] and [`lessons`]: the built-in scenarios and classroom exercises;
-//! - [`run`] and [`experiment`]: driving one run, and grids of runs; [`playback`]: a run played,
+//! - [`run`] and [`experiment`]: driving one run, and grids of runs ([`design`]: ranges, samples
+//!   and stop conditions); [`playback`]: a run played,
 //!   rewound and forked as the page does it, with its keyframes ([`timeline`]) and chart record
 //!   ([`series`]); [`reproduce`]: the papers'
 //!   claims beside the figures of those runs;
@@ -23,6 +24,7 @@ pub use kumiki_model::{bounds, error, hash, lattice, limits, math, rng, shape, s
 pub mod compare;
 #[cfg(test)]
 pub mod counts;
+pub mod design;
 pub mod draft;
 pub mod exercise;
 pub mod experiment;

@@ -3,7 +3,7 @@
 //! report recomputed from their rows.
 
 use kumiki_core::experiment::{Experiment, Job};
-use kumiki_core::{json, link, presets, Scenario};
+use kumiki_core::{json, link, presets};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -90,13 +90,13 @@ struct Drawn {
 
 /// The figures of an experiment's plots from its rows (a JSON array of rows as
 /// `ExperimentRunner::run` gives them): each figure's data and its SVG, as `kumiki sweep --plot
-/// svg` draws it.
+/// svg` draws it. Rows fewer than the experiment's runs (a cancelled sweep) give figures marked
+/// "partial: N of M runs".
 #[wasm_bindgen]
 pub fn experiment_figures(experiment_json: &str, rows_json: &str) -> Result<JsValue, JsError> {
     let e = Experiment::named_or_json(experiment_json).map_err(js_err)?;
     let rows = json::parse_rows(rows_json).map_err(js_err)?;
-    let models: Vec<&str> = e.scenarios.iter().map(Scenario::model).collect();
-    let drawn: Vec<Drawn> = kumiki_core::plot::figure::figures(&e.plots, &rows, &models)
+    let drawn: Vec<Drawn> = kumiki_core::plot::figure::figures_of(&e, &rows)
         .into_iter()
         .map(|figure| Drawn {
             svg: kumiki_core::plot::svg::svg(&figure),
@@ -108,7 +108,9 @@ pub fn experiment_figures(experiment_json: &str, rows_json: &str) -> Result<JsVa
 
 /// An experiment's rows (a JSON array of row texts) exported with their provenance, the bytes
 /// `kumiki sweep` writes: `format` is `csv`, `json` (JSON lines) or `traces` (the traced
-/// metrics in long form, as `--traces`); `time` is when the sweep ran (RFC 3339).
+/// metrics in long form, as `--traces`); `time` is when the sweep ran (RFC 3339). Rows fewer than
+/// the experiment's runs (a cancelled sweep) are marked "partial: N of M runs", with only their
+/// seeds.
 #[wasm_bindgen]
 pub fn experiment_export(
     experiment_json: &str,
@@ -119,7 +121,7 @@ pub fn experiment_export(
     use kumiki_core::export;
     let e = Experiment::named_or_json(experiment_json).map_err(js_err)?;
     let rows = json::parse_rows(rows_json).map_err(js_err)?;
-    let p = export::Provenance::of(&e, time);
+    let p = export::Provenance::of_rows(&e, time, &rows);
     match format {
         "csv" => Ok(export::csv(&p, &rows)),
         "json" => Ok(export::json_lines(&p, &rows)),
@@ -128,6 +130,33 @@ pub fn experiment_export(
             "'{other}' is not an export format; expected csv, json or traces"
         ))),
     }
+}
+
+/// Figure `index` of an experiment's plots from its rows, as a one-page PDF (the SVG's layout,
+/// set in Helvetica), marked partial as [`experiment_figures`] marks it.
+#[wasm_bindgen]
+pub fn experiment_figure_pdf(
+    experiment_json: &str,
+    rows_json: &str,
+    index: u32,
+) -> Result<Vec<u8>, JsError> {
+    let e = Experiment::named_or_json(experiment_json).map_err(js_err)?;
+    let rows = json::parse_rows(rows_json).map_err(js_err)?;
+    let figures = kumiki_core::plot::figure::figures_of(&e, &rows);
+    let f = figures
+        .get(index as usize)
+        .ok_or_else(|| JsError::new(&format!("the experiment has {} figures", figures.len())))?;
+    Ok(kumiki_core::plot::pdf::pdf(
+        &kumiki_core::plot::svg::layout(f),
+    ))
+}
+
+/// A number as every figure and table shows it (`kumiki_core::plot::number`): four significant
+/// digits below 1000, one decimal at most above, commas between thousands, scientific form below
+/// 0.001, rounded half away from zero.
+#[wasm_bindgen]
+pub fn format_number(value: f64) -> String {
+    kumiki_core::plot::number::format(value)
 }
 
 /// A claim of the reproduction report (`id`, as in `docs/reproduction.json`) recomputed from the

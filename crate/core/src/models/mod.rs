@@ -34,6 +34,35 @@ pub fn metric_info(model: &str, name: &str) -> Option<&'static MetricInfo> {
     entry(model).ok()?.metrics.iter().find(|m| m.name == name)
 }
 
+/// Whether `name` is a metric of one of `models`; if not, an error that suggests the nearest
+/// metric name ("'totl_steps' is not a metric of amas; did you mean 'total_steps'?").
+pub fn check_metric(models: &[&str], name: &str) -> Result<()> {
+    if models.iter().any(|m| metric_info(m, name).is_some()) {
+        return Ok(());
+    }
+    let names: Vec<&str> = models
+        .iter()
+        .filter_map(|m| metric_table(m).ok())
+        .flat_map(|t| t.iter().map(|i| i.name))
+        .collect();
+    let near = kumiki_model::error::nearest_within(name, names, (name.chars().count() / 3).max(1));
+    let mut list: Vec<&str> = models.to_vec();
+    list.dedup();
+    Err(crate::Error::field(
+        "",
+        match near {
+            Some(n) => format!(
+                "'{name}' is not a metric of {}; did you mean '{n}'?",
+                list.join(" or ")
+            ),
+            None => format!(
+                "'{name}' is not a metric of {} (each model's metrics are in docs/metrics.md)",
+                list.join(" or ")
+            ),
+        },
+    ))
+}
+
 /// The metric tables of every model as Markdown (docs/metrics.md, written by `kumiki schema`).
 pub fn metrics_markdown() -> String {
     let mut out = String::from(

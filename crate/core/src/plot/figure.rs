@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::labels::{
     axis_label, condition_words, facet_title, name_of, spread_words, statistic_words, unit_of,
 };
-use super::stats::{Comparison, Stats};
+use super::stats::{holm, Comparison, KruskalWallis, Stats};
 use super::values::{group_by, num_at, sampled, value_at, words};
 use super::{statistic_of, Carry, PlotSpec, Spread, Statistic, Where};
 use crate::experiment::Row;
@@ -45,8 +45,33 @@ pub struct Figure {
     pub panels: Vec<Panel>,
     /// For `summary`: one row per condition and value.
     pub table: Vec<SummaryRow>,
-    /// For `summary` with exactly two conditions: one comparison per value.
+    /// For `summary` with two or more conditions: every pair of conditions compared, value by
+    /// value, the first condition minus the second (see [`DIRECTION`]).
     pub comparisons: Vec<ComparisonRow>,
+    /// For `summary` with three or more conditions: the Kruskal-Wallis test of each value.
+    pub omnibus: Vec<OmnibusRow>,
+    /// How every signed figure of the comparisons reads, stated once: [`DIRECTION`], or empty
+    /// without comparisons.
+    pub direction: String,
+    /// Set when the figure draws only some of the experiment's runs (a cancelled sweep).
+    pub partial: Option<Partial>,
+}
+
+/// The direction of every comparison, in words.
+pub const DIRECTION: &str = "each comparison is the first condition minus the second: a positive difference, Cohen's d or rank-biserial correlation means the first condition's values tend to be larger";
+
+/// Runs drawn of the runs the experiment has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, serde::Deserialize, JsonSchema)]
+pub struct Partial {
+    pub runs: usize,
+    pub of: usize,
+}
+
+impl Partial {
+    /// "partial: 120 of 600 runs".
+    pub fn words(&self) -> String {
+        format!("partial: {} of {} runs", self.runs, self.of)
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
@@ -91,9 +116,21 @@ pub struct SummaryRow {
 #[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
 pub struct ComparisonRow {
     pub value: String,
-    /// The two conditions, first and second.
+    /// The two conditions, first and second: every signed figure is the first minus the second.
     pub conditions: [String; 2],
     pub comparison: Comparison,
+    /// With three or more conditions: the Mann-Whitney p corrected by Holm's method for the
+    /// number of pairs compared on this value.
+    pub p_holm: Option<f64>,
+}
+
+/// The Kruskal-Wallis test of one value across three or more conditions.
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
+pub struct OmnibusRow {
+    pub value: String,
+    /// The conditions tested, in words.
+    pub conditions: Vec<String>,
+    pub test: KruskalWallis,
 }
 
 /// The statistic and band of `values` as the figure draws them.
@@ -155,6 +192,9 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
         panels: Vec::new(),
         table: Vec::new(),
         comparisons: Vec::new(),
+        omnibus: Vec::new(),
+        direction: String::new(),
+        partial: None,
     };
     match spec {
         PlotSpec::Lines(s) => {
@@ -434,19 +474,7 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
                     });
                 }
             }
-            if let [(ka, a), (kb, b)] = conditions.as_slice() {
-                for v in &values {
-                    let xa: Vec<f64> = a.iter().map(|r| num_at(r, v)).collect();
-                    let xb: Vec<f64> = b.iter().map(|r| num_at(r, v)).collect();
-                    if let Some(c) = Comparison::of(&xa, &xb) {
-                        f.comparisons.push(ComparisonRow {
-                            value: v.clone(),
-                            conditions: [condition_words(&group, ka), condition_words(&group, kb)],
-                            comparison: c,
-                        });
-                    }
-                }
-            }
+            compare_conditions(&mut f, &group, &values, &conditions);
             f.x_label = group
                 .iter()
                 .map(|g| name_of(g))
@@ -454,11 +482,112 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
                 .join(", ");
             f.described = format!(
                 "per condition: n, mean, sd, median, interquartile range and 95% confidence interval of the mean{}",
-                if f.comparisons.is_empty() { "" } else { "; the two conditions compared by Cohen's d, the rank-biserial correlation and the Mann-Whitney U test" }
+                match (f.comparisons.is_empty(), f.omnibus.is_empty()) {
+                    (true, _) => "",
+                    (false, true) => "; the two conditions compared by the difference of means, Cohen's d, the rank-biserial correlation and the Mann-Whitney U test",
+                    (false, false) => "; the conditions tested together by the Kruskal-Wallis H test, then each pair compared by the difference of means, Cohen's d, the rank-biserial correlation and the Mann-Whitney U test, its p corrected for the pairs by Holm's method",
+                }
             );
         }
     }
     f
+}
+
+type Condition<'a> = (Vec<String>, Vec<&'a Row>);
+
+/// Two or more conditions compared on each value: every pair (first minus second, in the
+/// conditions' order), and with three or more the Kruskal-Wallis test and Holm's correction of
+/// the pairs' p.
+fn compare_conditions(
+    f: &mut Figure,
+    group: &[String],
+    values: &[String],
+    conditions: &[Condition],
+) {
+    if conditions.len() < 2 {
+        return;
+    }
+    let names: Vec<String> = conditions
+        .iter()
+        .map(|(k, _)| condition_words(group, k))
+        .collect();
+    for v in values {
+        let xs: Vec<Vec<f64>> = conditions
+            .iter()
+            .map(|(_, rows)| rows.iter().map(|r| num_at(r, v)).collect())
+            .collect();
+        let mut pairs = Vec::new();
+        for i in 0..xs.len() {
+            for j in i + 1..xs.len() {
+                if let Some(c) = Comparison::of(&xs[i], &xs[j]) {
+                    pairs.push(ComparisonRow {
+                        value: v.clone(),
+                        conditions: [names[i].clone(), names[j].clone()],
+                        comparison: c,
+                        p_holm: None,
+                    });
+                }
+            }
+        }
+        if conditions.len() > 2 {
+            let adjusted = holm(&pairs.iter().map(|c| c.comparison.p).collect::<Vec<_>>());
+            for (c, p) in pairs.iter_mut().zip(adjusted) {
+                c.p_holm = Some(p);
+            }
+            if let Some(test) = KruskalWallis::of(&xs) {
+                f.omnibus.push(OmnibusRow {
+                    value: v.clone(),
+                    conditions: names.clone(),
+                    test,
+                });
+            }
+        }
+        f.comparisons.extend(pairs);
+    }
+    if !f.comparisons.is_empty() {
+        f.direction = DIRECTION.to_string();
+    }
+}
+
+/// Every figure of an experiment's plots from its rows, marked partial when the rows are fewer
+/// than the experiment's runs (a cancelled sweep).
+pub fn figures_of(e: &crate::experiment::Experiment, rows: &[Row]) -> Vec<Figure> {
+    let models: Vec<&str> = e.scenarios.iter().map(|s| s.model()).collect();
+    let mut figs = figures(&e.plots, rows, &models);
+    let of = e.job_count();
+    if rows.len() < of {
+        for f in &mut figs {
+            f.partial = Some(Partial {
+                runs: rows.len(),
+                of,
+            });
+        }
+    }
+    figs
+}
+
+/// The summaries of `figures` as `kumiki sweep --summary` prints them, one JSON object a line:
+/// each condition's statistics, then each Kruskal-Wallis test, then each pair compared, every
+/// comparison line saying its direction ("first minus second"). The Python package gives the same
+/// records.
+pub fn summary_lines(figures: &[Figure]) -> Vec<serde_json::Value> {
+    use serde_json::json;
+    let mut out = Vec::new();
+    for f in figures.iter().filter(|f| f.kind == FigureKind::Summary) {
+        for r in &f.table {
+            out.push(json!({"figure": f.title, "condition": r.condition, "runs": r.runs, "completed": r.completed, "value": r.value, "unit": r.unit, "stats": r.stats}));
+        }
+        for o in &f.omnibus {
+            out.push(json!({"figure": f.title, "value": o.value, "conditions": o.conditions, "kruskal_wallis": o.test}));
+        }
+        for c in &f.comparisons {
+            out.push(json!({"figure": f.title, "value": c.value, "conditions": c.conditions, "direction": "first minus second", "comparison": c.comparison, "p_holm": c.p_holm}));
+        }
+        if let Some(p) = f.partial {
+            out.push(json!({"figure": f.title, "partial": p}));
+        }
+    }
+    out
 }
 
 fn described(statistic: Statistic, spread: Spread, panels: &[Panel], per: &str) -> String {

@@ -1,16 +1,23 @@
 //! Plot specifications, part of the experiment contract: typed and checked when an experiment is
 //! read, like scenarios. A plot names the rows' values by path (`steps`, `params.robots`,
 //! `metrics.total_steps`), the statistic drawn (`mean` or `median`) and the spread around it;
-//! [`figure`] computes what is drawn and how it is described, [`svg`] draws it, and [`stats`]
-//! holds the statistics the summaries report. The page and `kumiki sweep --plot svg` draw the
+//! [`figure`] computes what is drawn and how it is described, [`svg`] lays it out ([`draw`]) and
+//! writes it as SVG or, by [`pdf`], as PDF, in one font ([`text`]) with one rule for numbers
+//! ([`number`]), and [`stats`] holds the statistics the summaries report. The page and `kumiki sweep --plot svg` draw the
 //! same figures from the same code.
 
+#[cfg(test)]
+mod clip_tests;
+pub mod draw;
 pub mod figure;
 mod labels;
+pub mod number;
+pub mod pdf;
 pub mod stats;
 pub mod svg;
 #[cfg(test)]
 mod tests;
+pub mod text;
 mod values;
 
 use serde::{Deserialize, Serialize};
@@ -364,20 +371,7 @@ fn check_path(p: &str, ctx: &Context) -> Result<()> {
         };
     }
     if let Some(name) = p.strip_prefix("metrics.") {
-        return match ctx
-            .models
-            .iter()
-            .any(|m| crate::models::metric_info(m, name).is_some())
-        {
-            true => Ok(()),
-            false => Err(Error::field(
-                "",
-                format!(
-                    "'{p}' is not a metric of {} (see kumiki metrics)",
-                    ctx.models.join(" or ")
-                ),
-            )),
-        };
+        return crate::models::check_metric(&ctx.models, name);
     }
     Err(Error::field(
         "",

@@ -1,7 +1,8 @@
-//! The statistics of a condition's runs and of a two-condition comparison: n, mean, sd, median,
+//! The statistics of a condition's runs and of conditions compared: n, mean, sd, median,
 //! quartiles and a 95% interval of the mean (Student's t). Two conditions are compared by
-//! [`Comparison`], which lives in the contract so that a model's paper findings test their claims
-//! with the same statistics the figures show.
+//! [`Comparison`] (first minus second), three or more by [`KruskalWallis`] and every pair with
+//! [`holm`]'s correction; these live in the contract so that a model's paper findings test their
+//! claims with the same statistics the figures show.
 
 use serde::Serialize;
 
@@ -70,4 +71,4 @@ pub fn t975(df: usize) -> f64 {
         + (3.0 * z.powi(7) + 19.0 * z.powi(5) + 17.0 * z.powi(3) - 15.0 * z) / (384.0 * d.powi(3))
 }
 
-pub use kumiki_model::stats::Comparison;
+pub use kumiki_model::stats::{holm, Comparison, KruskalWallis};

@@ -1,51 +1,100 @@
-//! A [`Figure`] as a standalone SVG document: the title and what is drawn in words, one panel
-//! per facet with labelled axes (units in brackets), the series in the palette with their bands
-//! or whiskers, and a legend in words. The page shows and exports this text; `kumiki sweep
-//! --plot svg` writes it.
+//! A [`Figure`] laid out for publishing: the title, a "partial" mark for a cancelled sweep, what
+//! is drawn in words, one panel per facet on one shared y axis (said under the legend), labelled
+//! axes (units in brackets; the y label once for all panels), the series with their bands or
+//! whiskers, a legend in words, and for a summary its table and comparisons, with the direction
+//! of every signed figure stated once. Every text is measured with the figures' font and wrapped
+//! or given room, so nothing is clipped at any length; [`svg`] writes the layout as SVG and
+//! [`super::pdf::pdf`] as PDF. The page shows and exports the SVG; `kumiki sweep --plot` writes
+//! either.
 
-use std::fmt::Write;
-
+use super::draw::{Anchor, Drawing, Item, Text};
 use super::figure::{Figure, FigureKind, Panel};
 use super::labels::{name_of, spread_words, statistic_words};
+use super::number::format as num;
+use super::text::{width, wrap};
 use super::Spread;
+
+pub use super::draw::escape;
 
 pub const COLORS: [&str; 10] = [
     "#2b6cb0", "#d9822b", "#0f9960", "#c23030", "#7157d9", "#29a634", "#a67908", "#d13913",
     "#00998c", "#634dbf",
 ];
+const INK: &str = "#1f2933";
+const MUTED: &str = "#52606d";
+const GRID: &str = "#d9e2ec";
+const WARN: &str = "#c23030";
 const WIDTH: f64 = 720.0;
-const LEFT: f64 = 78.0;
+/// The canvas's margin left and right of every text.
+const MARGIN: f64 = 16.0;
 const RIGHT: f64 = 24.0;
 const PLOT_H: f64 = 240.0;
-const SUMMARY_WIDTH: f64 = 820.0;
-const FONT: &str = "font-family=\"system-ui, -apple-system, Segoe UI, Roboto, sans-serif\"";
+const SUMMARY_MIN_WIDTH: f64 = 640.0;
+/// The widest a summary's text column grows before its cells wrap.
+const SUMMARY_TEXT_COLUMN: f64 = 240.0;
 
-/// Text for SVG: `&`, `<`, `>` and `"` escaped.
-pub fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+/// The figure as an SVG document.
+pub fn svg(f: &Figure) -> String {
+    layout(f).svg()
 }
 
-/// A number as an axis or table shows it: up to 4 significant digits, no trailing zeros.
-pub fn short_number(v: f64) -> String {
-    if !v.is_finite() {
-        return "–".into();
+/// The figure laid out on its canvas.
+pub fn layout(f: &Figure) -> Drawing {
+    let width = match f.kind {
+        FigureKind::Summary => summary_width(f),
+        _ => WIDTH,
+    };
+    let mut d = Drawing {
+        width,
+        height: 0.0,
+        title: f.title.clone(),
+        desc: f.described.clone(),
+        items: Vec::new(),
+    };
+    let mut y = 10.0;
+    y = paragraph(&mut d, &f.title, 17.0, true, INK, y, 22.0);
+    if let Some(p) = f.partial {
+        y = paragraph(
+            &mut d,
+            &format!("{} (cancelled)", p.words()),
+            13.0,
+            true,
+            WARN,
+            y,
+            17.0,
+        );
     }
-    if v == 0.0 {
-        return "0".into();
+    y = paragraph(&mut d, &f.described, 12.0, false, MUTED, y, 16.0);
+    y += 6.0;
+    y = match f.kind {
+        FigureKind::Summary => summary(&mut d, f, y),
+        _ => charts(&mut d, f, y),
+    };
+    d.height = (y + 12.0).ceil();
+    d
+}
+
+/// Wrapped text from the left margin, one line every `leading`, the first line's top at `top`;
+/// returns the top of what follows.
+#[allow(clippy::too_many_arguments)]
+fn paragraph(
+    d: &mut Drawing,
+    text: &str,
+    size: f64,
+    bold: bool,
+    fill: &'static str,
+    top: f64,
+    leading: f64,
+) -> f64 {
+    if text.is_empty() {
+        return top;
     }
-    let a = v.abs();
-    if !(1e-3..1e6).contains(&a) {
-        return format!("{v:.2e}");
+    let mut y = top;
+    for line in wrap(text, size, bold, d.width - 2.0 * MARGIN) {
+        d.text(MARGIN, y + size, size, bold, Anchor::Start, fill, line);
+        y += leading;
     }
-    let digits = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
-    let s = format!("{v:.digits$}");
-    match s.contains('.') {
-        true => s.trim_end_matches('0').trim_end_matches('.').to_string(),
-        false => s,
-    }
+    y
 }
 
 /// Round tick values covering `lo..hi` (1, 2 or 5 times a power of ten apart).
@@ -85,74 +134,127 @@ impl Scale {
     }
 }
 
-/// The figure as an SVG document.
-pub fn svg(f: &Figure) -> String {
-    let mut body = String::new();
-    let mut y = 28.0;
-    let _ = writeln!(body, "<text x=\"{LEFT}\" y=\"{y}\" font-size=\"17\" font-weight=\"600\" fill=\"#1f2933\">{}</text>", escape(&f.title));
-    y += 20.0;
-    let _ = writeln!(
-        body,
-        "<text x=\"{LEFT}\" y=\"{y}\" font-size=\"12\" fill=\"#52606d\">{}</text>",
-        escape(&f.described)
-    );
-    y += 16.0;
-    if f.kind == FigureKind::Summary {
-        y = summary(&mut body, f, y);
-    } else {
-        for p in &f.panels {
-            y = panel(&mut body, f, p, y);
-        }
-        y = legend(&mut body, f, y);
-    }
-    let height = y + 12.0;
-    let width = if f.kind == FigureKind::Summary {
-        SUMMARY_WIDTH
-    } else {
-        WIDTH
-    };
-    format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\" {FONT} role=\"img\">\n<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n{body}</svg>\n",
-        escape(&f.title),
-        escape(&f.described)
-    )
-}
-
-fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
-    if !p.title.is_empty() {
-        y += 18.0;
-        let _ = writeln!(out, "<text x=\"{LEFT}\" y=\"{y}\" font-size=\"13\" font-weight=\"600\" fill=\"#1f2933\">{}</text>", escape(&p.title));
-    }
-    y += 10.0;
-    let top = y;
-    let bottom = y + PLOT_H;
-    let points = p.series.iter().flat_map(|s| s.points.iter());
-    let (mut xlo, mut xhi, mut ylo, mut yhi) = (
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-    );
-    for pt in points {
-        xlo = xlo.min(pt.x);
-        xhi = xhi.max(pt.x);
+/// The y range every panel shares, and its ticks; `None` when nothing has a value.
+fn y_axis(f: &Figure) -> Option<(f64, f64, Vec<f64>)> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for pt in f
+        .panels
+        .iter()
+        .flat_map(|p| p.series.iter().flat_map(|s| s.points.iter()))
+    {
         for v in [Some(pt.y), pt.band.map(|b| b[0]), pt.band.map(|b| b[1])]
             .into_iter()
             .flatten()
         {
             if v.is_finite() && (!f.log_y || v > 0.0) {
-                ylo = ylo.min(v);
-                yhi = yhi.max(v);
+                lo = lo.min(v);
+                hi = hi.max(v);
             }
         }
     }
-    if !xlo.is_finite() {
-        let _ = writeln!(out, "<text x=\"{LEFT}\" y=\"{}\" font-size=\"12\" fill=\"#52606d\">No values to draw.</text>", top + 16.0);
-        return top + 28.0;
+    if !lo.is_finite() {
+        return None;
     }
-    let bars = f.kind == FigureKind::Bars || f.kind == FigureKind::Histogram;
-    if bars {
-        ylo = ylo.min(0.0);
+    if matches!(f.kind, FigureKind::Bars | FigureKind::Histogram) {
+        lo = lo.min(0.0);
+    }
+    if hi <= lo {
+        hi = lo + 1.0;
+    }
+    Some(match f.log_y {
+        true => {
+            let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+            let b = b.max(a + 1);
+            (
+                10f64.powi(a),
+                10f64.powi(b),
+                (a..=b).map(|e| 10f64.powi(e)).collect(),
+            )
+        }
+        false => {
+            let t = ticks(lo, hi);
+            (lo.min(t[0]), hi.max(*t.last().unwrap_or(&hi)), t)
+        }
+    })
+}
+
+/// Every panel on one y axis, the y label once beside them all, then the legend and notes.
+fn charts(d: &mut Drawing, f: &Figure, top: f64) -> f64 {
+    let Some((ylo, yhi, yticks)) = y_axis(f) else {
+        d.text(
+            MARGIN,
+            top + 14.0,
+            12.0,
+            false,
+            Anchor::Start,
+            MUTED,
+            "No values to draw.",
+        );
+        return top + 24.0;
+    };
+    let tick_w = yticks
+        .iter()
+        .map(|t| width(&num(*t), 11.0, false))
+        .fold(0.0, f64::max);
+    // The y label's lines stand beside the ticks, each turned to read upwards, centred on the
+    // panels; wrapped to one plot's height, they never run past the panels.
+    let label_lines = wrap(&f.y_label, 12.0, false, PLOT_H);
+    let left = MARGIN + 15.0 * label_lines.len() as f64 + 8.0 + tick_w + 6.0;
+    let mut y = top;
+    let mut span = (f64::INFINITY, top);
+    for p in &f.panels {
+        let (plot_top, plot_bottom, next) = panel(d, f, p, y, left, (ylo, yhi, &yticks));
+        span = (span.0.min(plot_top), plot_bottom);
+        y = next;
+    }
+    let mid = (span.0 + span.1) / 2.0;
+    for (i, line) in label_lines.into_iter().enumerate() {
+        d.items.push(Item::Text(Text {
+            x: MARGIN + 9.0 + 15.0 * i as f64,
+            y: mid,
+            size: 12.0,
+            bold: false,
+            anchor: Anchor::Middle,
+            fill: INK,
+            text: line,
+            rotated: true,
+        }));
+    }
+    legend(d, f, y)
+}
+
+/// One panel: its title, grid, ticks, x label and series. Returns the plot's top and bottom and
+/// the top of what follows.
+fn panel(
+    d: &mut Drawing,
+    f: &Figure,
+    p: &Panel,
+    mut y: f64,
+    left: f64,
+    (ylo, yhi, yticks): (f64, f64, &[f64]),
+) -> (f64, f64, f64) {
+    if !p.title.is_empty() {
+        y = paragraph(d, &p.title, 13.0, true, INK, y + 4.0, 17.0);
+    }
+    y += 8.0;
+    let (top, bottom) = (y, y + PLOT_H);
+    let right = d.width - RIGHT;
+    let (mut xlo, mut xhi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for pt in p.series.iter().flat_map(|s| s.points.iter()) {
+        xlo = xlo.min(pt.x);
+        xhi = xhi.max(pt.x);
+    }
+    if !xlo.is_finite() {
+        d.text(
+            left,
+            top + 16.0,
+            12.0,
+            false,
+            Anchor::Start,
+            MUTED,
+            "No values to draw.",
+        );
+        return (top, top + 20.0, top + 28.0);
     }
     if let Some(w) = p.bin_width {
         xlo -= w / 2.0;
@@ -166,29 +268,12 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         xlo -= 0.5;
         xhi += 0.5;
     }
-    if yhi <= ylo {
-        yhi = ylo + 1.0;
-    }
-    let yticks: Vec<f64> = match f.log_y {
-        true => {
-            let (a, b) = (ylo.log10().floor() as i32, yhi.log10().ceil() as i32);
-            ylo = 10f64.powi(a);
-            yhi = 10f64.powi(b.max(a + 1));
-            (a..=b.max(a + 1)).map(|e| 10f64.powi(e)).collect()
-        }
-        false => {
-            let t = ticks(ylo, yhi);
-            ylo = ylo.min(t[0]);
-            yhi = yhi.max(*t.last().unwrap_or(&yhi));
-            t
-        }
-    };
     let xs = Scale {
         lo: xlo,
         hi: xhi,
         log: false,
-        from: LEFT,
-        to: WIDTH - RIGHT,
+        from: left,
+        to: right,
     };
     let ys = Scale {
         lo: ylo,
@@ -197,14 +282,18 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
         from: bottom,
         to: top,
     };
-    for t in &yticks {
+    for t in yticks {
         let yy = ys.at(*t);
-        let _ = writeln!(
-            out,
-            "<line x1=\"{LEFT}\" x2=\"{}\" y1=\"{yy:.1}\" y2=\"{yy:.1}\" stroke=\"#d9e2ec\"/>",
-            WIDTH - RIGHT
+        d.line((left, yy), (right, yy), GRID);
+        d.text(
+            left - 6.0,
+            yy + 4.0,
+            11.0,
+            false,
+            Anchor::End,
+            MUTED,
+            num(*t),
         );
-        let _ = writeln!(out, "<text x=\"{}\" y=\"{:.1}\" font-size=\"11\" text-anchor=\"end\" fill=\"#52606d\">{}</text>", LEFT - 6.0, yy + 4.0, short_number(*t));
     }
     let xticks: Vec<(f64, String)> = match f.kind {
         FigureKind::Bars => p
@@ -213,36 +302,48 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
             .enumerate()
             .map(|(i, c)| (i as f64, c.clone()))
             .collect(),
-        _ => ticks(xlo, xhi)
-            .into_iter()
-            .map(|t| (t, short_number(t)))
-            .collect(),
+        _ => ticks(xlo, xhi).into_iter().map(|t| (t, num(t))).collect(),
     };
     for (t, label) in &xticks {
         let xx = xs.at(*t);
-        let _ = writeln!(
-            out,
-            "<line x1=\"{xx:.1}\" x2=\"{xx:.1}\" y1=\"{bottom}\" y2=\"{}\" stroke=\"#52606d\"/>",
-            bottom + 4.0
+        d.line((xx, bottom), (xx, bottom + 4.0), MUTED);
+        // A long label is moved in to stay on the canvas.
+        let half = width(label, 11.0, false) / 2.0;
+        let at = xx.clamp(MARGIN + half, d.width - MARGIN - half);
+        d.text(
+            at,
+            bottom + 16.0,
+            11.0,
+            false,
+            Anchor::Middle,
+            MUTED,
+            label.clone(),
         );
-        let _ = writeln!(out, "<text x=\"{xx:.1}\" y=\"{}\" font-size=\"11\" text-anchor=\"middle\" fill=\"#52606d\">{}</text>", bottom + 16.0, escape(label));
     }
-    let _ = writeln!(
-        out,
-        "<line x1=\"{LEFT}\" x2=\"{}\" y1=\"{bottom}\" y2=\"{bottom}\" stroke=\"#52606d\"/>",
-        WIDTH - RIGHT
-    );
-    let _ = writeln!(
-        out,
-        "<line x1=\"{LEFT}\" x2=\"{LEFT}\" y1=\"{top}\" y2=\"{bottom}\" stroke=\"#52606d\"/>"
-    );
-    let _ = writeln!(out, "<text x=\"{:.1}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\" fill=\"#1f2933\">{}</text>", (LEFT + WIDTH - RIGHT) / 2.0, bottom + 34.0, escape(&f.x_label));
-    let mid = (top + bottom) / 2.0;
-    let _ = writeln!(out, "<text x=\"16\" y=\"{mid:.1}\" font-size=\"12\" text-anchor=\"middle\" fill=\"#1f2933\" transform=\"rotate(-90 16 {mid:.1})\">{}</text>", escape(&f.y_label));
+    d.line((left, bottom), (right, bottom), MUTED);
+    d.line((left, top), (left, bottom), MUTED);
+    let mut y_after = bottom + 22.0;
+    for line in wrap(&f.x_label, 12.0, false, right - left) {
+        d.text(
+            (left + right) / 2.0,
+            y_after + 12.0,
+            12.0,
+            false,
+            Anchor::Middle,
+            INK,
+            line,
+        );
+        y_after += 15.0;
+    }
+    series(d, f, p, &xs, &ys, ylo);
+    (top, bottom, y_after + 10.0)
+}
+
+fn series(d: &mut Drawing, f: &Figure, p: &Panel, xs: &Scale, ys: &Scale, ylo: f64) {
     let groups = p.series.len().max(1) as f64;
     for (i, s) in p.series.iter().enumerate() {
         let color = COLORS[i % COLORS.len()];
-        let _ = writeln!(out, "<g data-series=\"{}\">", escape(&s.label));
+        d.items.push(Item::Group(s.label.clone()));
         match f.kind {
             FigureKind::Bars | FigureKind::Histogram => {
                 let slot = match p.bin_width {
@@ -255,10 +356,22 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
                         None => xs.at(pt.x) - (xs.at(1.0) - xs.at(0.0)) * 0.4 + slot * i as f64,
                     };
                     let (y0, y1) = (ys.at(pt.y), ys.at(ylo.max(0.0)));
-                    let _ = writeln!(out, "<rect x=\"{x0:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"{color}\" data-y=\"{}\" data-n=\"{}\"/>", y0.min(y1), slot * 0.92, (y1 - y0).abs(), pt.y, pt.n);
+                    d.items.push(Item::Rect {
+                        x: x0,
+                        y: y0.min(y1),
+                        w: slot * 0.92,
+                        h: (y1 - y0).abs(),
+                        fill: color,
+                        data: format!(" data-y=\"{}\" data-n=\"{}\"", pt.y, pt.n),
+                    });
                     if let Some([lo, hi]) = pt.band {
                         let xm = x0 + slot * 0.46;
-                        let _ = writeln!(out, "<line x1=\"{xm:.1}\" x2=\"{xm:.1}\" y1=\"{:.1}\" y2=\"{:.1}\" stroke=\"#1f2933\" data-band=\"{lo} {hi}\"/>", ys.at(lo), ys.at(hi));
+                        d.items.push(Item::Line {
+                            from: (xm, ys.at(lo)),
+                            to: (xm, ys.at(hi)),
+                            stroke: INK,
+                            data: format!(" data-band=\"{lo} {hi}\""),
+                        });
                     }
                 }
             }
@@ -269,47 +382,49 @@ fn panel(out: &mut String, f: &Figure, p: &Panel, mut y: f64) -> f64 {
                     .filter_map(|pt| pt.band.map(|b| (pt.x, b)))
                     .collect();
                 if banded.len() == s.points.len() && !banded.is_empty() {
-                    let mut d = String::new();
-                    for (k, (x, b)) in banded.iter().enumerate() {
-                        let _ = write!(
-                            d,
-                            "{}{:.1},{:.1}",
-                            if k == 0 { "M" } else { " L" },
-                            xs.at(*x),
-                            ys.at(b[1])
-                        );
-                    }
-                    for (x, b) in banded.iter().rev() {
-                        let _ = write!(d, " L{:.1},{:.1}", xs.at(*x), ys.at(b[0]));
-                    }
-                    let _ = writeln!(out, "<path d=\"{d} Z\" fill=\"{color}\" fill-opacity=\"0.15\" stroke=\"none\"/>");
+                    let mut points: Vec<(f64, f64)> = banded
+                        .iter()
+                        .map(|(x, b)| (xs.at(*x), ys.at(b[1])))
+                        .collect();
+                    points.extend(banded.iter().rev().map(|(x, b)| (xs.at(*x), ys.at(b[0]))));
+                    d.items.push(Item::Band {
+                        points,
+                        fill: color,
+                    });
                 }
-                let line: Vec<String> = s
-                    .points
-                    .iter()
-                    .map(|pt| format!("{:.1},{:.1}", xs.at(pt.x), ys.at(pt.y)))
-                    .collect();
-                let _ = writeln!(
-                    out,
-                    "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>",
-                    line.join(" ")
-                );
+                d.items.push(Item::Polyline {
+                    points: s
+                        .points
+                        .iter()
+                        .map(|pt| (xs.at(pt.x), ys.at(pt.y)))
+                        .collect(),
+                    stroke: color,
+                });
                 if s.points.len() < 40 {
                     for pt in &s.points {
                         let band = pt.band.map_or(String::new(), |[lo, hi]| {
                             format!(" data-band=\"{lo} {hi}\"")
                         });
-                        let _ = writeln!(out, "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3\" fill=\"{color}\" data-x=\"{}\" data-y=\"{}\" data-n=\"{}\"{band}/>", xs.at(pt.x), ys.at(pt.y), pt.x, pt.y, pt.n);
+                        d.items.push(Item::Circle {
+                            at: (xs.at(pt.x), ys.at(pt.y)),
+                            r: 3.0,
+                            fill: color,
+                            data: format!(
+                                " data-x=\"{}\" data-y=\"{}\" data-n=\"{}\"{band}",
+                                pt.x, pt.y, pt.n
+                            ),
+                        });
                     }
                 }
             }
         }
-        let _ = writeln!(out, "</g>");
+        d.items.push(Item::End);
     }
-    bottom + 44.0
 }
 
-fn legend(out: &mut String, f: &Figure, mut y: f64) -> f64 {
+/// The legend, each label beside its colour (wrapped when it is longer than a line), then what
+/// the lines and bands are and, with facets, that the panels share their y axis.
+fn legend(d: &mut Drawing, f: &Figure, mut y: f64) -> f64 {
     let mut labels: Vec<&str> = Vec::new();
     for p in &f.panels {
         for s in &p.series {
@@ -318,30 +433,45 @@ fn legend(out: &mut String, f: &Figure, mut y: f64) -> f64 {
             }
         }
     }
-    let mut x = LEFT;
+    let room = d.width - 2.0 * MARGIN - 19.0;
+    let mut x = MARGIN;
     y += 4.0;
     for (i, label) in labels.iter().enumerate() {
-        let w = 28.0 + 6.5 * label.chars().count() as f64;
-        if x + w > WIDTH - RIGHT && x > LEFT {
-            x = LEFT;
+        let lines = wrap(label, 12.0, false, room);
+        let w = 19.0
+            + lines
+                .iter()
+                .map(|l| width(l, 12.0, false))
+                .fold(0.0, f64::max)
+            + 14.0;
+        if x + w > d.width - MARGIN && x > MARGIN {
+            x = MARGIN;
             y += 18.0;
         }
-        let _ = writeln!(
-            out,
-            "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"14\" height=\"10\" fill=\"{}\"/>",
-            y - 9.0,
-            COLORS[i % COLORS.len()]
-        );
-        let _ = writeln!(
-            out,
-            "<text x=\"{:.1}\" y=\"{y:.1}\" font-size=\"12\" fill=\"#1f2933\">{}</text>",
-            x + 19.0,
-            escape(label)
-        );
+        d.items.push(Item::Rect {
+            x,
+            y: y + 3.0,
+            w: 14.0,
+            h: 10.0,
+            fill: COLORS[i % COLORS.len()],
+            data: String::new(),
+        });
+        for (k, line) in lines.iter().enumerate() {
+            d.text(
+                x + 19.0,
+                y + 12.0 + 15.0 * k as f64,
+                12.0,
+                false,
+                Anchor::Start,
+                INK,
+                line.clone(),
+            );
+        }
+        y += 15.0 * (lines.len() - 1) as f64;
         x += w;
     }
+    y += 20.0;
     if let (Some(st), Some(sp)) = (f.statistic, f.spread) {
-        y += 18.0;
         let what = match (f.kind, sp) {
             (_, Spread::None) => format!("{}s; no spread drawn", statistic_words(st)),
             (FigureKind::Bars, sp) => format!(
@@ -355,89 +485,159 @@ fn legend(out: &mut String, f: &Figure, mut y: f64) -> f64 {
                 spread_words(sp)
             ),
         };
-        let _ = writeln!(
-            out,
-            "<text x=\"{LEFT}\" y=\"{y:.1}\" font-size=\"12\" fill=\"#52606d\">{}</text>",
-            escape(&what)
+        y = paragraph(d, &what, 12.0, false, MUTED, y, 16.0);
+    }
+    if f.panels.len() > 1 {
+        y = paragraph(
+            d,
+            "The panels share one y axis.",
+            12.0,
+            false,
+            MUTED,
+            y,
+            16.0,
         );
     }
-    y + 6.0
+    y
 }
 
-fn summary(out: &mut String, f: &Figure, mut y: f64) -> f64 {
-    let head = [
-        "condition",
-        "value",
-        "n",
-        "mean",
-        "sd",
-        "median",
-        "IQR",
-        "95% CI",
-    ];
-    // Text columns start at their x; number columns end there.
-    let cols = [
-        18.0,
-        220.0,
-        400.0,
-        470.0,
-        535.0,
-        600.0,
-        705.0,
-        SUMMARY_WIDTH - 12.0,
-    ];
-    y += 8.0;
-    let row = |out: &mut String, y: f64, cells: &[String], weight: &str| {
-        for (c, (x, t)) in cols.iter().zip(cells).enumerate() {
-            let anchor = if c >= 2 { "end" } else { "start" };
+const HEAD: [&str; 8] = [
+    "condition",
+    "value",
+    "n",
+    "mean",
+    "sd",
+    "median",
+    "IQR",
+    "95% CI",
+];
 
-            let _ = writeln!(out, "<text x=\"{x:.1}\" y=\"{y:.1}\" font-size=\"11\" font-weight=\"{weight}\" text-anchor=\"{anchor}\" fill=\"#1f2933\">{}</text>", escape(t));
+/// A summary's cells as shown: condition and value (wrapped when long), then the numbers.
+fn summary_cells(f: &Figure) -> Vec<Vec<String>> {
+    f.table
+        .iter()
+        .map(|r| {
+            let value = match r.unit.as_str() {
+                "" => name_of(&r.value),
+                u => format!("{} [{u}]", name_of(&r.value)),
+            };
+            let mut cells = vec![r.condition.join(", "), value];
+            match &r.stats {
+                Some(s) => cells.extend([
+                    s.n.to_string(),
+                    num(s.mean),
+                    num(s.sd),
+                    num(s.median),
+                    format!("{} to {}", num(s.q1), num(s.q3)),
+                    format!("{} to {}", num(s.ci95[0]), num(s.ci95[1])),
+                ]),
+                None => cells.push("0".into()),
+            }
+            cells
+        })
+        .collect()
+}
+
+/// Each column's width: its widest cell or heading, text columns at most
+/// [`SUMMARY_TEXT_COLUMN`] (their cells wrap).
+fn column_widths(f: &Figure) -> [f64; 8] {
+    let mut w = HEAD.map(|h| width(h, 11.0, true));
+    for cells in summary_cells(f) {
+        for (c, t) in cells.iter().enumerate() {
+            w[c] = w[c].max(width(t, 11.0, false));
         }
-    };
-    row(out, y, &head.map(String::from), "600");
-    for r in &f.table {
+    }
+    w[0] = w[0].min(SUMMARY_TEXT_COLUMN);
+    w[1] = w[1].min(SUMMARY_TEXT_COLUMN);
+    w
+}
+
+const GAP: f64 = 18.0;
+
+fn summary_width(f: &Figure) -> f64 {
+    let w = column_widths(f);
+    (2.0 * MARGIN + w.iter().sum::<f64>() + GAP * 7.0)
+        .max(SUMMARY_MIN_WIDTH)
+        .ceil()
+}
+
+/// The table (text columns start at their x, number columns end there), then the comparisons:
+/// their direction stated once, each test and pair on its own wrapped lines.
+fn summary(d: &mut Drawing, f: &Figure, mut y: f64) -> f64 {
+    let w = column_widths(f);
+    let mut xs = [0.0; 8];
+    let mut x = MARGIN;
+    for c in 0..8 {
+        xs[c] = if c >= 2 { x + w[c] } else { x };
+        x += w[c] + GAP;
+    }
+    y += 12.0;
+    for (c, h) in HEAD.iter().enumerate() {
+        let anchor = if c >= 2 { Anchor::End } else { Anchor::Start };
+        d.text(xs[c], y, 11.0, true, anchor, INK, *h);
+    }
+    for cells in summary_cells(f) {
         y += 16.0;
-        let cond = r.condition.join(", ");
-        let value = match r.unit.as_str() {
-            "" => name_of(&r.value),
-            u => format!("{} [{u}]", name_of(&r.value)),
-        };
-        let cells = match &r.stats {
-            Some(s) => vec![
-                cond,
-                value,
-                s.n.to_string(),
-                short_number(s.mean),
-                short_number(s.sd),
-                short_number(s.median),
-                format!("{}–{}", short_number(s.q1), short_number(s.q3)),
-                format!("{}–{}", short_number(s.ci95[0]), short_number(s.ci95[1])),
-            ],
-            None => vec![cond, value, "0".into()],
-        };
-        row(out, y, &cells, "400");
+        let mut lines = 1;
+        for (c, t) in cells.iter().enumerate() {
+            match c {
+                0 | 1 => {
+                    let wrapped = wrap(t, 11.0, false, w[c]);
+                    lines = lines.max(wrapped.len());
+                    for (k, line) in wrapped.into_iter().enumerate() {
+                        d.text(
+                            xs[c],
+                            y + 14.0 * k as f64,
+                            11.0,
+                            false,
+                            Anchor::Start,
+                            INK,
+                            line,
+                        );
+                    }
+                }
+                _ => d.text(xs[c], y, 11.0, false, Anchor::End, INK, t.clone()),
+            }
+        }
+        y += 14.0 * (lines - 1) as f64;
+    }
+    if f.comparisons.is_empty() && f.omnibus.is_empty() {
+        return y + 8.0;
+    }
+    y += 12.0;
+    let direction = format!("Comparisons: {}.", f.direction);
+    y = paragraph(d, &direction, 11.0, true, INK, y, 15.0);
+    for o in &f.omnibus {
+        let t = &o.test;
+        let text = format!(
+            "{}: Kruskal-Wallis H = {}, df = {}, p = {} ({} conditions, n = {})",
+            name_of(&o.value),
+            num(t.h),
+            t.df,
+            num(t.p),
+            o.conditions.len(),
+            t.n
+        );
+        y = paragraph(d, &text, 11.0, false, INK, y + 2.0, 15.0);
     }
     for c in &f.comparisons {
-        y += 18.0;
         let k = &c.comparison;
+        let holm = c.p_holm.map_or(String::new(), |p| {
+            format!(", Holm-corrected p = {}", num(p))
+        });
         let text = format!(
-            "{}: {} vs {}: difference {}, Cohen's d {}, rank-biserial {}, Mann-Whitney U {} (p = {}, {})",
+            "{}: {} minus {}: difference {}, Cohen's d {}, rank-biserial {}, Mann-Whitney U {} (p = {}, {}{holm})",
             name_of(&c.value),
             c.conditions[0],
             c.conditions[1],
-            short_number(k.difference),
-            short_number(k.cohens_d),
-            short_number(k.rank_biserial),
-            short_number(k.u),
-            short_number(k.p),
+            num(k.difference),
+            num(k.cohens_d),
+            num(k.rank_biserial),
+            num(k.u),
+            num(k.p),
             k.method
         );
-        let _ = writeln!(
-            out,
-            "<text x=\"{}\" y=\"{y:.1}\" font-size=\"11\" fill=\"#1f2933\">{}</text>",
-            18.0,
-            escape(&text)
-        );
+        y = paragraph(d, &text, 11.0, false, INK, y + 2.0, 15.0);
     }
-    y + 8.0
+    y + 4.0
 }

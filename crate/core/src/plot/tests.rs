@@ -13,7 +13,7 @@ use crate::run::Outcome;
 
 /// Rows for every job of `e`, with made-up metric values (a fixed hash of the job, so medians
 /// and means differ), so every plot has something to draw.
-fn made_up_rows(e: &Experiment) -> Vec<Row> {
+pub(super) fn made_up_rows(e: &Experiment) -> Vec<Row> {
     let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
     let mut next = move || {
         state ^= state << 13;
@@ -442,11 +442,25 @@ fn check_summary(at: &str, s: &super::Summary, f: &Figure, rows: &[Row]) {
         conditions * values.len(),
         "{at}: each condition gives every value"
     );
+    // Every pair of conditions, value by value (made-up values are never all missing); with
+    // three or more a Kruskal-Wallis test of each value and Holm's p on every pair.
     assert_eq!(
         f.comparisons.len(),
-        if conditions == 2 { values.len() } else { 0 },
-        "{at}: two conditions are compared, value by value"
+        conditions * (conditions - 1) / 2 * values.len(),
+        "{at}: every pair of conditions is compared, value by value"
     );
+    assert_eq!(
+        f.omnibus.len(),
+        if conditions > 2 { values.len() } else { 0 },
+        "{at}"
+    );
+    assert!(
+        f.comparisons
+            .iter()
+            .all(|c| c.p_holm.is_some() == (conditions > 2)),
+        "{at}"
+    );
+    assert_eq!(f.direction.is_empty(), f.comparisons.is_empty(), "{at}");
 }
 
 #[test]

@@ -11,7 +11,8 @@ use schemars::generate::SchemaSettings;
 use serde_json::{json, Map, Value};
 
 use crate::compare::Compare;
-use crate::exercise::Exercise;
+use crate::design;
+use crate::exercise::{Exercise, MAX_GOAL_CHARS};
 use crate::experiment::MAX_JOBS;
 use crate::models::MODELS;
 use crate::presets;
@@ -158,9 +159,55 @@ pub fn experiment() -> Value {
                 },
             },
             "grid": {
-                "description": "Dotted scenario paths and the values each takes; every combination runs.",
+                "description": "Dotted scenario paths and the values each takes, listed or as a range; every combination runs.",
                 "type": "object",
-                "additionalProperties": { "type": "array", "minItems": 1 },
+                "additionalProperties": {
+                    "oneOf": [
+                        { "description": "The values, listed.", "type": "array", "minItems": 1 },
+                        {
+                            "description": "start, start + step, ... up to end (included when a whole number of steps reaches it).",
+                            "type": "object",
+                            "properties": {
+                                "start": { "type": "number" },
+                                "step": { "type": "number", "exclusiveMinimum": 0 },
+                                "end": { "type": "number" },
+                            },
+                            "required": ["start", "step", "end"],
+                            "additionalProperties": false,
+                        },
+                    ],
+                },
+            },
+            "sample": {
+                "description": "Parameter points drawn from ranges, each run with every grid combination: `latin` (a Latin hypercube, every stratum of each range once) or `random`, from `seed`.",
+                "type": "object",
+                "properties": {
+                    "method": { "enum": ["latin", "random"], "default": "latin" },
+                    "count": { "type": "integer", "minimum": 1, "maximum": design::MAX_POINTS },
+                    "seed": { "type": "integer", "minimum": 0, "default": 1 },
+                    "ranges": {
+                        "description": "Dotted scenario paths and the range each is drawn from; `integer` draws whole numbers from min to max inclusive.",
+                        "type": "object",
+                        "minProperties": 1,
+                        "additionalProperties": {
+                            "type": "object",
+                            "properties": {
+                                "min": { "type": "number" },
+                                "max": { "type": "number" },
+                                "integer": { "type": "boolean", "default": false },
+                            },
+                            "required": ["min", "max"],
+                            "additionalProperties": false,
+                        },
+                    },
+                },
+                "required": ["count", "ranges"],
+                "additionalProperties": false,
+            },
+            "stop": {
+                "description": "A condition in the goal language (completed, steps, metrics.NAME, scenario.PATH; and, or, not, comparisons, arithmetic), checked after every step: a run stops at the first step where it holds.",
+                "type": "string",
+                "maxLength": MAX_GOAL_CHARS,
             },
             "set": {
                 "description": "Overrides applied to every run: dotted scenario paths and their values.",
