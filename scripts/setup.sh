@@ -3,7 +3,9 @@
 #   - the wasm32-unknown-unknown Rust target (rustup),
 #   - the wasm-bindgen CLI at exactly the version Cargo.toml pins,
 #   - the npm packages (npm ci, when node_modules is missing or older than package-lock.json),
-#   - with --browser: Debian's chromium for the browser tests (installed when running as root).
+#   - with --browser: Debian's chromium for the browser tests (installed when running as root);
+#   - with --python: the project's virtual environment .venv with python/requirements-dev.txt
+#     from PyPI (the Python package's build backend, pandas, pytest, SciPy, nbconvert).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,6 +14,8 @@ fail() { printf '\033[1;31msetup:\033[0m %s\n' "$*" >&2; exit 1; }
 
 want_browser=0
 [ "${1:-}" = "--browser" ] && want_browser=1
+want_python=0
+[ "${1:-}" = "--python" ] && want_python=1
 
 command -v cargo >/dev/null || fail "Rust is not installed. Install it from https://rustup.rs and run this again."
 command -v node >/dev/null || fail "Node.js 20 or newer is needed (https://nodejs.org)."
@@ -52,5 +56,19 @@ if [ "$want_browser" = 1 ]; then
     else
       fail "the browser tests need Chromium at $chromium_bin. Install it (Debian/Ubuntu: 'sudo apt-get install chromium') or point KUMIKI_CHROMIUM at a Chromium binary, then run 'npm test' again."
     fi
+  fi
+fi
+
+if [ "$want_python" = 1 ]; then
+  command -v python3 >/dev/null || fail "Python 3.9 or newer is needed for the Python package (https://www.python.org)."
+  if [ ! -x .venv/bin/python ]; then
+    say "creating the virtual environment .venv"
+    python3 -m venv .venv || fail "python3 -m venv failed; on Debian/Ubuntu install python3-venv."
+  fi
+  # Installed once, again when the list is newer than the last install.
+  if [ ! -f .venv/.requirements-dev ] || [ python/requirements-dev.txt -nt .venv/.requirements-dev ]; then
+    say "installing python/requirements-dev.txt into .venv"
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check -r python/requirements-dev.txt
+    touch .venv/.requirements-dev
   fi
 fi

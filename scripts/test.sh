@@ -72,6 +72,9 @@ cargo test --workspace --quiet
 step "the JSON Schemas in docs/schema are current (kumiki schema --check)"
 cargo run --profile quick --quiet -p kumiki-cli -- schema --check
 
+step "the Python package and the docs' notebook (scripts/test-python.sh)"
+bash scripts/test-python.sh
+
 step "the page (waiting for its build)"
 if ! wait "$page_build"; then
   cat "$page_log" >&2

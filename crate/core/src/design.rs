@@ -302,7 +302,8 @@ impl Stop {
         let goal = Goal::parse(&text).map_err(|e| e.within("stop"))?;
         for name in goal.names() {
             if let Some(metric) = name.strip_prefix("metrics.") {
-                crate::models::check_metric(models, metric).map_err(|e| e.within("stop"))?;
+                crate::models::check_metric(models, metric, "metrics.")
+                    .map_err(|e| e.within("stop"))?;
             }
         }
         Ok(Stop { goal })
@@ -397,6 +398,79 @@ mod tests {
             .points()
             .iter()
             .all(|p| (0.0..1.0).contains(&p[0].1.as_f64().unwrap())));
+    }
+
+    fn experiment(extra: Value) -> crate::Result<crate::Experiment> {
+        let mut doc = json!({"version": 1, "name": "t", "scenarios": ["amas-L"], "seeds": 2});
+        doc.as_object_mut()
+            .unwrap()
+            .extend(extra.as_object().unwrap().clone());
+        crate::Experiment::from_value(doc)
+    }
+
+    #[test]
+    fn a_misspelt_key_or_metric_is_blamed_by_name_with_the_nearest() {
+        let err = |extra: Value| experiment(extra).unwrap_err().to_string();
+        // The plot names the key as it should be; the grid is where the mistake is.
+        assert_eq!(
+            err(
+                json!({"grid": {"robot": [1, 2]}, "plot": {"kind": "lines", "x": "params.robots", "y": "steps", "series": "params.robots"}})
+            ),
+            "grid.robot: amas-L with robot=1: unknown field 'robot'; did you mean 'robots'?"
+        );
+        assert_eq!(
+            err(
+                json!({"sample": {"count": 2, "ranges": {"robots": {"min": 0, "max": 3, "integer": true}}}})
+            ),
+            "sample.ranges.robots: amas-L with robots=0: at least one robot is needed"
+        );
+        assert_eq!(
+            err(json!({"stop": "metrics.placd >= 20"})),
+            "stop: 'metrics.placd' is not a metric of amas; did you mean 'metrics.placed'?"
+        );
+        assert_eq!(
+            err(json!({"trace": {"metrics": ["colisions"]}})),
+            "trace.metrics[0]: 'colisions' is not a metric of amas; did you mean 'collisions'?"
+        );
+        assert!(err(json!({"stop": "steps"})).starts_with("stop: the goal is a number"));
+        assert_eq!(
+            err(
+                json!({"grid": {"robots": [1]}, "sample": {"count": 1, "ranges": {"robots": {"min": 1, "max": 2}}}})
+            ),
+            "sample.ranges.robots: is also a grid key; a key is either listed or sampled"
+        );
+    }
+
+    #[test]
+    fn a_sampled_sweep_with_a_stop_condition_runs_each_point_until_it_holds() {
+        let e = experiment(json!({
+            "grid": {"field": ["continuous", "discrete"]},
+            "sample": {"count": 3, "seed": 5, "ranges": {"robots": {"min": 2, "max": 6, "integer": true}}},
+            "stop": "metrics.placed >= 10",
+        }))
+        .unwrap();
+        let jobs = e.jobs();
+        assert_eq!(
+            (jobs.len(), e.job_count()),
+            (12, 12),
+            "2 fields × 3 points × 2 seeds"
+        );
+        assert_eq!(e.param_keys(), vec!["field", "robots"]);
+        for job in jobs.iter().step_by(5) {
+            let row = e.run_job(job).unwrap();
+            assert!(
+                row.metrics["placed"].as_u64().unwrap() >= 10,
+                "{:?}",
+                job.params
+            );
+            assert!(!row.completed);
+            assert_eq!(e.run_job(job).unwrap(), row, "a run replays");
+        }
+        // Without the stop condition the same job runs on to its end.
+        let mut whole = e.clone();
+        whole.stop = None;
+        let row = whole.run_job(&jobs[0]).unwrap();
+        assert!(row.completed && row.steps > e.run_job(&jobs[0]).unwrap().steps);
     }
 
     #[test]

@@ -255,7 +255,7 @@ impl Experiment {
         };
         if let Some(t) = &trace {
             for (i, name) in t.metrics.iter().enumerate() {
-                crate::models::check_metric(&models, name)
+                crate::models::check_metric(&models, name, "")
                     .map_err(|e| e.within(&format!("trace.metrics[{i}]")))?;
             }
         }

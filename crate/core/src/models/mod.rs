@@ -35,8 +35,9 @@ pub fn metric_info(model: &str, name: &str) -> Option<&'static MetricInfo> {
 }
 
 /// Whether `name` is a metric of one of `models`; if not, an error that suggests the nearest
-/// metric name ("'totl_steps' is not a metric of amas; did you mean 'total_steps'?").
-pub fn check_metric(models: &[&str], name: &str) -> Result<()> {
+/// metric name, each written after `prefix` as the input wrote it ("'metrics.totl_steps' is not
+/// a metric of amas; did you mean 'metrics.total_steps'?").
+pub fn check_metric(models: &[&str], name: &str, prefix: &str) -> Result<()> {
     if models.iter().any(|m| metric_info(m, name).is_some()) {
         return Ok(());
     }
@@ -52,11 +53,11 @@ pub fn check_metric(models: &[&str], name: &str) -> Result<()> {
         "",
         match near {
             Some(n) => format!(
-                "'{name}' is not a metric of {}; did you mean '{n}'?",
+                "'{prefix}{name}' is not a metric of {}; did you mean '{prefix}{n}'?",
                 list.join(" or ")
             ),
             None => format!(
-                "'{name}' is not a metric of {} (each model's metrics are in docs/metrics.md)",
+                "'{prefix}{name}' is not a metric of {} (each model's metrics are in docs/metrics.md)",
                 list.join(" or ")
             ),
         },

@@ -371,7 +371,7 @@ fn check_path(p: &str, ctx: &Context) -> Result<()> {
         };
     }
     if let Some(name) = p.strip_prefix("metrics.") {
-        return crate::models::check_metric(&ctx.models, name);
+        return crate::models::check_metric(&ctx.models, name, "metrics.");
     }
     Err(Error::field(
         "",

@@ -526,7 +526,7 @@ fn a_plot_that_names_an_unknown_choice_is_refused_with_the_choices() {
     );
     assert!(
         err(json!({"kind": "bars", "x": "scenario", "y": "metrics.totl_steps"}))
-            .starts_with("plot.y: 'metrics.totl_steps' is not a metric of amas")
+            == "plot.y: 'metrics.totl_steps' is not a metric of amas; did you mean 'metrics.total_steps'?"
     );
     assert!(err(json!({"kind": "lines", "x": "params.robots", "y": "steps", "statistic": "median", "spread": "sd"})).contains("sd belongs to a mean"));
     assert!(
