@@ -62,8 +62,13 @@ export type Comparison = {
 
 export interface ComparisonRow {
   comparison: StatisticalComparison;
-  /** The two conditions, first and second. */
+  /** The two conditions, first and second: every signed figure is the first minus the second. */
   conditions: [string, string];
+  /**
+   * With three or more conditions: the Mann-Whitney p corrected by Holm's method for the
+   * number of pairs compared on this value.
+   */
+  p_holm?: number | null;
   value: string;
 }
 
@@ -100,16 +105,28 @@ export interface FieldInfo {
 
 /** What a plot draws, as the page's table and the SVG read it. */
 export interface Figure {
-  /** For `summary` with exactly two conditions: one comparison per value. */
+  /**
+   * For `summary` with two or more conditions: every pair of conditions compared, value by
+   * value, the first condition minus the second (as `direction` says).
+   */
   comparisons: ComparisonRow[];
   /**
    * What is drawn, in words, from the spec and the rows: "median and interquartile range of
    * 10 runs per point".
    */
   described: string;
+  /**
+   * How every signed figure of the comparisons reads, stated once (the words of `DIRECTION`), or empty
+   * without comparisons.
+   */
+  direction: string;
   kind: FigureKind;
   log_y: boolean;
+  /** For `summary` with three or more conditions: the Kruskal-Wallis test of each value. */
+  omnibus: OmnibusRow[];
   panels: Panel[];
+  /** Set when the figure draws only some of the experiment's runs (a cancelled sweep). */
+  partial?: Partial | null;
   spread?: Spread | null;
   statistic?: Statistic | null;
   /** For `summary`: one row per condition and value. */
@@ -164,6 +181,23 @@ export type Graded = {
   /** Why the hand-in could not be graded (a bad link, no exercise). */
   error: string;
 };
+
+/**
+ * The Kruskal-Wallis H test of three or more conditions (any number from two): whether their
+ * values come from one distribution, on ranks (ties share their mean rank), H corrected for ties
+ * and its p from the chi-squared distribution with k − 1 degrees of freedom, as
+ * `scipy.stats.kruskal` computes them.
+ */
+export interface KruskalWallis {
+  /** Degrees of freedom: the conditions with values, less one. */
+  df: number;
+  /** H, corrected for ties. */
+  h: number;
+  /** Values in all conditions together. */
+  n: number;
+  /** The upper tail of chi-squared(df) at H. */
+  p: number;
+}
 
 export type LatticeKind = "square" | "hex" | "cubic";
 
@@ -241,6 +275,14 @@ export interface MetricInfo {
  */
 export type Metrics = Record<string, Metric>;
 
+/** The Kruskal-Wallis test of one value across three or more conditions. */
+export interface OmnibusRow {
+  /** The conditions tested, in words. */
+  conditions: string[];
+  test: KruskalWallis;
+  value: string;
+}
+
 export interface Panel {
   /** Width of a histogram's bins. */
   bin_width?: number | null;
@@ -249,6 +291,12 @@ export interface Panel {
   series: Series[];
   /** The facet, in words ("tip load: 0"); empty without facets. */
   title: string;
+}
+
+/** Runs drawn of the runs the experiment has. */
+export interface Partial {
+  of: number;
+  runs: number;
 }
 
 export interface Point {

@@ -460,6 +460,9 @@ fn blame(scenario: &str, params: &[(String, Value)], e: Error, sampled: &[&str])
                 true => format!("sample.ranges.{k}"),
                 false => format!("grid.{k}"),
             };
+            // The scenario's own reason, cut as its message would be (a misspelt key gets the
+            // nearest name rather than the list of them all).
+            let reason = Error::field("", reason.clone()).to_string();
             return Error::field(at, format!("{scenario} with {k}={value}: {reason}"));
         }
     }

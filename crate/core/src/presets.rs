@@ -48,6 +48,29 @@ pub fn scenario(name: &str) -> Result<Scenario> {
     scenario_in(PRESET_FILES, "preset", name)
 }
 
+/// How `scenario` differs from the built-in scenario it is named after, each changed field in
+/// words (`robots: 10 → 3`, a shape's cells added and removed), the description and the exercise
+/// left out; `None` when no preset has its name. A shared edited scenario introduces itself with
+/// this rather than with the preset's text alone.
+pub fn changes_from_preset(scenario: &Scenario) -> Option<Vec<String>> {
+    let preset = scenario_in(PRESET_FILES, "preset", &scenario.name).ok()?;
+    let (was, now) = (preset.to_value(), scenario.to_value());
+    Some(
+        crate::exercise::differences(&was, &now)
+            .into_iter()
+            .filter(|p| p != "description" && !p.starts_with("exercise"))
+            .map(|p| {
+                let at = |doc: &serde_json::Value| {
+                    crate::exercise::lookup_path(doc, &p)
+                        .cloned()
+                        .unwrap_or(serde_json::Value::Null)
+                };
+                crate::grading::change_text(&p, &at(&was), &at(&now))
+            })
+            .collect(),
+    )
+}
+
 /// The scenario `name` of `table` (presets or lessons), its errors naming which `kind` it is.
 pub(crate) fn scenario_in(
     table: &'static [(&str, &str)],
@@ -94,6 +117,24 @@ pub(crate) fn lookup(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn an_edited_preset_says_what_differs_from_it() {
+        let mut s = super::scenario("amas-L").unwrap();
+        assert_eq!(super::changes_from_preset(&s), Some(vec![]));
+        s = s
+            .with_overrides(&[
+                ("robots".into(), 3.into()),
+                ("description".into(), "mine".into()),
+            ])
+            .unwrap();
+        assert_eq!(
+            super::changes_from_preset(&s),
+            Some(vec!["robots: 5 → 3".to_string()])
+        );
+        s.name = "mine".into();
+        assert_eq!(super::changes_from_preset(&s), None);
+    }
+
     use super::*;
     use crate::models;
     use serde_json::Value;

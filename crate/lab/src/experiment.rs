@@ -151,14 +151,6 @@ pub fn experiment_figure_pdf(
     ))
 }
 
-/// A number as every figure and table shows it (`kumiki_core::plot::number`): four significant
-/// digits below 1000, one decimal at most above, commas between thousands, scientific form below
-/// 0.001, rounded half away from zero.
-#[wasm_bindgen]
-pub fn format_number(value: f64) -> String {
-    kumiki_core::plot::number::format(value)
-}
-
 /// A claim of the reproduction report (`id`, as in `docs/reproduction.json`) recomputed from the
 /// rows of its experiments, by the function `kumiki reproduce` writes the report with:
 /// `rows_json` is an object from experiment name to its rows (each as `ExperimentRunner::run`

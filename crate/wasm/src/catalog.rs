@@ -50,3 +50,19 @@ pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, J
         .map(|v| v.to_string())
         .map_err(js_err)
 }
+
+/// A number as every figure, table and export shows it: the core's one rule
+/// (`kumiki_core::plot::number`), so the page's tables and metric cards round as the figures do.
+#[wasm_bindgen]
+pub fn format_number(value: f64) -> String {
+    kumiki_core::plot::number::format(value)
+}
+
+/// How a scenario (its JSON text) differs from the built-in scenario it is named after, each
+/// changed field in words (`robots: 5 → 3`), or `null` when no preset has its name: what a shared
+/// edited scenario says beside the preset's description.
+#[wasm_bindgen]
+pub fn preset_changes(scenario_json: &str) -> Result<JsValue, JsError> {
+    let s = kumiki_core::Scenario::from_json(scenario_json).map_err(js_err)?;
+    to_js(&presets::changes_from_preset(&s))
+}

@@ -213,7 +213,7 @@ fn figures_keep_long_titles_names_and_labels_inside_their_canvas() {
     let label = "an axis label written out in full, with its reasons, ".repeat(4);
     let plots = json!([
         {"kind": "summary", "group": ["scenario", "params.field"], "values": ["steps", "metrics.total_steps", "metrics.collisions"]},
-        {"kind": "lines", "x": "params.field", "y": ["steps", "metrics.total_steps"], "series": "scenario", "facet": "params.field", "x_label": label, "y_label": label},
+        {"kind": "lines", "x": "seed", "y": ["steps", "metrics.total_steps"], "series": "scenario", "facet": "params.field", "x_label": label, "y_label": label},
         {"kind": "bars", "x": "scenario", "y": "metrics.total_steps", "series": "params.field", "y_label": label},
         {"kind": "histogram", "value": "metrics.total_steps", "series": "scenario", "x_label": label},
     ]);
@@ -233,7 +233,7 @@ fn figures_keep_long_titles_names_and_labels_inside_their_canvas() {
 #[test]
 fn faceted_panels_share_one_y_axis_and_one_y_label() {
     let e = long_experiment(
-        json!({"kind": "lines", "x": "params.field", "y": "steps", "facet": "scenario", "y_label": "steps taken"}),
+        json!({"kind": "lines", "x": "seed", "y": "steps", "facet": "scenario", "y_label": "steps taken"}),
     );
     let f = &figures(&e.plots, &made_up_rows(&e), &["amas"])[0];
     assert_eq!(f.panels.len(), 3);

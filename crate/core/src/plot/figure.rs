@@ -46,11 +46,11 @@ pub struct Figure {
     /// For `summary`: one row per condition and value.
     pub table: Vec<SummaryRow>,
     /// For `summary` with two or more conditions: every pair of conditions compared, value by
-    /// value, the first condition minus the second (see [`DIRECTION`]).
+    /// value, the first condition minus the second (as `direction` says).
     pub comparisons: Vec<ComparisonRow>,
     /// For `summary` with three or more conditions: the Kruskal-Wallis test of each value.
     pub omnibus: Vec<OmnibusRow>,
-    /// How every signed figure of the comparisons reads, stated once: [`DIRECTION`], or empty
+    /// How every signed figure of the comparisons reads, stated once (the words of `DIRECTION`), or empty
     /// without comparisons.
     pub direction: String,
     /// Set when the figure draws only some of the experiment's runs (a cancelled sweep).

@@ -1,5 +1,5 @@
 //! One rule for every number a figure, a summary, an export's figure or the page shows, so a
-//! value reads the same everywhere (the page gets it through the lab module's `format_number`):
+//! value reads the same everywhere (the page gets it through its wasm module's `format_number`):
 //!
 //! - below 1000 (in size): four significant digits, trailing zeros dropped (165.25 → 165.3,
 //!   0.98876 → 0.9888, 2.5 → 2.5);

@@ -233,8 +233,13 @@ fn panel(
     left: f64,
     (ylo, yhi, yticks): (f64, f64, &[f64]),
 ) -> (f64, f64, f64) {
+    // A panel's title stands over its plot, clear of the y label beside the panels.
     if !p.title.is_empty() {
-        y = paragraph(d, &p.title, 13.0, true, INK, y + 4.0, 17.0);
+        y += 4.0;
+        for line in wrap(&p.title, 13.0, true, d.width - left - MARGIN) {
+            d.text(left, y + 13.0, 13.0, true, Anchor::Start, INK, line);
+            y += 17.0;
+        }
     }
     y += 8.0;
     let (top, bottom) = (y, y + PLOT_H);
@@ -339,10 +344,29 @@ fn panel(
     (top, bottom, y_after + 10.0)
 }
 
+/// Every series label of the figure, in the order the legend lists them: a series has one colour
+/// in every panel, the legend's.
+fn labels(f: &Figure) -> Vec<&str> {
+    let mut labels: Vec<&str> = Vec::new();
+    for p in &f.panels {
+        for s in &p.series {
+            if !labels.contains(&s.label.as_str()) {
+                labels.push(&s.label);
+            }
+        }
+    }
+    labels
+}
+
+fn color_of(f: &Figure, label: &str) -> &'static str {
+    let i = labels(f).iter().position(|l| *l == label).unwrap_or(0);
+    COLORS[i % COLORS.len()]
+}
+
 fn series(d: &mut Drawing, f: &Figure, p: &Panel, xs: &Scale, ys: &Scale, ylo: f64) {
     let groups = p.series.len().max(1) as f64;
     for (i, s) in p.series.iter().enumerate() {
-        let color = COLORS[i % COLORS.len()];
+        let color = color_of(f, &s.label);
         d.items.push(Item::Group(s.label.clone()));
         match f.kind {
             FigureKind::Bars | FigureKind::Histogram => {
@@ -425,14 +449,7 @@ fn series(d: &mut Drawing, f: &Figure, p: &Panel, xs: &Scale, ys: &Scale, ylo: f
 /// The legend, each label beside its colour (wrapped when it is longer than a line), then what
 /// the lines and bands are and, with facets, that the panels share their y axis.
 fn legend(d: &mut Drawing, f: &Figure, mut y: f64) -> f64 {
-    let mut labels: Vec<&str> = Vec::new();
-    for p in &f.panels {
-        for s in &p.series {
-            if !labels.contains(&s.label.as_str()) {
-                labels.push(&s.label);
-            }
-        }
-    }
+    let labels = labels(f);
     let room = d.width - 2.0 * MARGIN - 19.0;
     let mut x = MARGIN;
     y += 4.0;
