@@ -9,10 +9,10 @@ use std::collections::BTreeMap;
 use schemars::JsonSchema;
 use serde::Serialize;
 
-use super::labels::{
-    axis_label, condition_words, facet_title, name_of, spread_words, statistic_words, unit_of,
-};
-use super::stats::{holm, Comparison, KruskalWallis, Stats};
+use super::compared;
+pub use super::compared::summary_lines;
+use super::labels::{axis_label, facet_title, name_of, spread_words, statistic_words, unit_of};
+use super::stats::{Comparison, KruskalWallis, Stats};
 use super::values::{group_by, num_at, sampled, value_at, words};
 use super::{statistic_of, Carry, PlotSpec, Spread, Statistic, Where};
 use crate::experiment::Row;
@@ -474,7 +474,7 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
                     });
                 }
             }
-            compare_conditions(&mut f, &group, &values, &conditions);
+            compared::compare_conditions(&mut f, &group, &values, &conditions);
             f.x_label = group
                 .iter()
                 .map(|g| name_of(g))
@@ -493,62 +493,6 @@ pub fn figure(spec: &PlotSpec, rows: &[Row], models: &[&str]) -> Figure {
     f
 }
 
-type Condition<'a> = (Vec<String>, Vec<&'a Row>);
-
-/// Two or more conditions compared on each value: every pair (first minus second, in the
-/// conditions' order), and with three or more the Kruskal-Wallis test and Holm's correction of
-/// the pairs' p.
-fn compare_conditions(
-    f: &mut Figure,
-    group: &[String],
-    values: &[String],
-    conditions: &[Condition],
-) {
-    if conditions.len() < 2 {
-        return;
-    }
-    let names: Vec<String> = conditions
-        .iter()
-        .map(|(k, _)| condition_words(group, k))
-        .collect();
-    for v in values {
-        let xs: Vec<Vec<f64>> = conditions
-            .iter()
-            .map(|(_, rows)| rows.iter().map(|r| num_at(r, v)).collect())
-            .collect();
-        let mut pairs = Vec::new();
-        for i in 0..xs.len() {
-            for j in i + 1..xs.len() {
-                if let Some(c) = Comparison::of(&xs[i], &xs[j]) {
-                    pairs.push(ComparisonRow {
-                        value: v.clone(),
-                        conditions: [names[i].clone(), names[j].clone()],
-                        comparison: c,
-                        p_holm: None,
-                    });
-                }
-            }
-        }
-        if conditions.len() > 2 {
-            let adjusted = holm(&pairs.iter().map(|c| c.comparison.p).collect::<Vec<_>>());
-            for (c, p) in pairs.iter_mut().zip(adjusted) {
-                c.p_holm = Some(p);
-            }
-            if let Some(test) = KruskalWallis::of(&xs) {
-                f.omnibus.push(OmnibusRow {
-                    value: v.clone(),
-                    conditions: names.clone(),
-                    test,
-                });
-            }
-        }
-        f.comparisons.extend(pairs);
-    }
-    if !f.comparisons.is_empty() {
-        f.direction = DIRECTION.to_string();
-    }
-}
-
 /// Every figure of an experiment's plots from its rows, marked partial when the rows are fewer
 /// than the experiment's runs (a cancelled sweep).
 pub fn figures_of(e: &crate::experiment::Experiment, rows: &[Row]) -> Vec<Figure> {
@@ -564,30 +508,6 @@ pub fn figures_of(e: &crate::experiment::Experiment, rows: &[Row]) -> Vec<Figure
         }
     }
     figs
-}
-
-/// The summaries of `figures` as `kumiki sweep --summary` prints them, one JSON object a line:
-/// each condition's statistics, then each Kruskal-Wallis test, then each pair compared, every
-/// comparison line saying its direction ("first minus second"). The Python package gives the same
-/// records.
-pub fn summary_lines(figures: &[Figure]) -> Vec<serde_json::Value> {
-    use serde_json::json;
-    let mut out = Vec::new();
-    for f in figures.iter().filter(|f| f.kind == FigureKind::Summary) {
-        for r in &f.table {
-            out.push(json!({"figure": f.title, "condition": r.condition, "runs": r.runs, "completed": r.completed, "value": r.value, "unit": r.unit, "stats": r.stats}));
-        }
-        for o in &f.omnibus {
-            out.push(json!({"figure": f.title, "value": o.value, "conditions": o.conditions, "kruskal_wallis": o.test}));
-        }
-        for c in &f.comparisons {
-            out.push(json!({"figure": f.title, "value": c.value, "conditions": c.conditions, "direction": "first minus second", "comparison": c.comparison, "p_holm": c.p_holm}));
-        }
-        if let Some(p) = f.partial {
-            out.push(json!({"figure": f.title, "partial": p}));
-        }
-    }
-    out
 }
 
 fn described(statistic: Statistic, spread: Spread, panels: &[Panel], per: &str) -> String {

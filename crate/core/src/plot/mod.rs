@@ -8,6 +8,7 @@
 
 #[cfg(test)]
 mod clip_tests;
+mod compared;
 pub mod draw;
 pub mod figure;
 mod labels;
@@ -15,6 +16,7 @@ pub mod number;
 pub mod pdf;
 pub mod stats;
 pub mod svg;
+mod table;
 #[cfg(test)]
 mod tests;
 pub mod text;

@@ -9,8 +9,9 @@
 
 use super::draw::{Anchor, Drawing, Item, Text};
 use super::figure::{Figure, FigureKind, Panel};
-use super::labels::{name_of, spread_words, statistic_words};
+use super::labels::{spread_words, statistic_words};
 use super::number::format as num;
+use super::table;
 use super::text::{width, wrap};
 use super::Spread;
 
@@ -20,18 +21,18 @@ pub const COLORS: [&str; 10] = [
     "#2b6cb0", "#d9822b", "#0f9960", "#c23030", "#7157d9", "#29a634", "#a67908", "#d13913",
     "#00998c", "#634dbf",
 ];
-const INK: &str = "#1f2933";
+pub(super) const INK: &str = "#1f2933";
 const MUTED: &str = "#52606d";
 const GRID: &str = "#d9e2ec";
 const WARN: &str = "#c23030";
 const WIDTH: f64 = 720.0;
 /// The canvas's margin left and right of every text.
-const MARGIN: f64 = 16.0;
+pub(super) const MARGIN: f64 = 16.0;
 const RIGHT: f64 = 24.0;
 const PLOT_H: f64 = 240.0;
-const SUMMARY_MIN_WIDTH: f64 = 640.0;
+pub(super) const SUMMARY_MIN_WIDTH: f64 = 640.0;
 /// The widest a summary's text column grows before its cells wrap.
-const SUMMARY_TEXT_COLUMN: f64 = 240.0;
+pub(super) const SUMMARY_TEXT_COLUMN: f64 = 240.0;
 
 /// The figure as an SVG document.
 pub fn svg(f: &Figure) -> String {
@@ -41,7 +42,7 @@ pub fn svg(f: &Figure) -> String {
 /// The figure laid out on its canvas.
 pub fn layout(f: &Figure) -> Drawing {
     let width = match f.kind {
-        FigureKind::Summary => summary_width(f),
+        FigureKind::Summary => table::width_of(f),
         _ => WIDTH,
     };
     let mut d = Drawing {
@@ -67,7 +68,7 @@ pub fn layout(f: &Figure) -> Drawing {
     y = paragraph(&mut d, &f.described, 12.0, false, MUTED, y, 16.0);
     y += 6.0;
     y = match f.kind {
-        FigureKind::Summary => summary(&mut d, f, y),
+        FigureKind::Summary => table::summary(&mut d, f, y),
         _ => charts(&mut d, f, y),
     };
     d.height = (y + 12.0).ceil();
@@ -77,7 +78,7 @@ pub fn layout(f: &Figure) -> Drawing {
 /// Wrapped text from the left margin, one line every `leading`, the first line's top at `top`;
 /// returns the top of what follows.
 #[allow(clippy::too_many_arguments)]
-fn paragraph(
+pub(super) fn paragraph(
     d: &mut Drawing,
     text: &str,
     size: f64,
@@ -516,145 +517,4 @@ fn legend(d: &mut Drawing, f: &Figure, mut y: f64) -> f64 {
         );
     }
     y
-}
-
-const HEAD: [&str; 8] = [
-    "condition",
-    "value",
-    "n",
-    "mean",
-    "sd",
-    "median",
-    "IQR",
-    "95% CI",
-];
-
-/// A summary's cells as shown: condition and value (wrapped when long), then the numbers.
-fn summary_cells(f: &Figure) -> Vec<Vec<String>> {
-    f.table
-        .iter()
-        .map(|r| {
-            let value = match r.unit.as_str() {
-                "" => name_of(&r.value),
-                u => format!("{} [{u}]", name_of(&r.value)),
-            };
-            let mut cells = vec![r.condition.join(", "), value];
-            match &r.stats {
-                Some(s) => cells.extend([
-                    s.n.to_string(),
-                    num(s.mean),
-                    num(s.sd),
-                    num(s.median),
-                    format!("{} to {}", num(s.q1), num(s.q3)),
-                    format!("{} to {}", num(s.ci95[0]), num(s.ci95[1])),
-                ]),
-                None => cells.push("0".into()),
-            }
-            cells
-        })
-        .collect()
-}
-
-/// Each column's width: its widest cell or heading, text columns at most
-/// [`SUMMARY_TEXT_COLUMN`] (their cells wrap).
-fn column_widths(f: &Figure) -> [f64; 8] {
-    let mut w = HEAD.map(|h| width(h, 11.0, true));
-    for cells in summary_cells(f) {
-        for (c, t) in cells.iter().enumerate() {
-            w[c] = w[c].max(width(t, 11.0, false));
-        }
-    }
-    w[0] = w[0].min(SUMMARY_TEXT_COLUMN);
-    w[1] = w[1].min(SUMMARY_TEXT_COLUMN);
-    w
-}
-
-const GAP: f64 = 18.0;
-
-fn summary_width(f: &Figure) -> f64 {
-    let w = column_widths(f);
-    (2.0 * MARGIN + w.iter().sum::<f64>() + GAP * 7.0)
-        .max(SUMMARY_MIN_WIDTH)
-        .ceil()
-}
-
-/// The table (text columns start at their x, number columns end there), then the comparisons:
-/// their direction stated once, each test and pair on its own wrapped lines.
-fn summary(d: &mut Drawing, f: &Figure, mut y: f64) -> f64 {
-    let w = column_widths(f);
-    let mut xs = [0.0; 8];
-    let mut x = MARGIN;
-    for c in 0..8 {
-        xs[c] = if c >= 2 { x + w[c] } else { x };
-        x += w[c] + GAP;
-    }
-    y += 12.0;
-    for (c, h) in HEAD.iter().enumerate() {
-        let anchor = if c >= 2 { Anchor::End } else { Anchor::Start };
-        d.text(xs[c], y, 11.0, true, anchor, INK, *h);
-    }
-    for cells in summary_cells(f) {
-        y += 16.0;
-        let mut lines = 1;
-        for (c, t) in cells.iter().enumerate() {
-            match c {
-                0 | 1 => {
-                    let wrapped = wrap(t, 11.0, false, w[c]);
-                    lines = lines.max(wrapped.len());
-                    for (k, line) in wrapped.into_iter().enumerate() {
-                        d.text(
-                            xs[c],
-                            y + 14.0 * k as f64,
-                            11.0,
-                            false,
-                            Anchor::Start,
-                            INK,
-                            line,
-                        );
-                    }
-                }
-                _ => d.text(xs[c], y, 11.0, false, Anchor::End, INK, t.clone()),
-            }
-        }
-        y += 14.0 * (lines - 1) as f64;
-    }
-    if f.comparisons.is_empty() && f.omnibus.is_empty() {
-        return y + 8.0;
-    }
-    y += 12.0;
-    let direction = format!("Comparisons: {}.", f.direction);
-    y = paragraph(d, &direction, 11.0, true, INK, y, 15.0);
-    for o in &f.omnibus {
-        let t = &o.test;
-        let text = format!(
-            "{}: Kruskal-Wallis H = {}, df = {}, p = {} ({} conditions, n = {})",
-            name_of(&o.value),
-            num(t.h),
-            t.df,
-            num(t.p),
-            o.conditions.len(),
-            t.n
-        );
-        y = paragraph(d, &text, 11.0, false, INK, y + 2.0, 15.0);
-    }
-    for c in &f.comparisons {
-        let k = &c.comparison;
-        let holm = c.p_holm.map_or(String::new(), |p| {
-            format!(", Holm-corrected p = {}", num(p))
-        });
-        let text = format!(
-            "{}: {} minus {}: difference {}, Cohen's d {}, rank-biserial {}, Mann-Whitney U {} (p = {}, {}{holm})",
-            name_of(&c.value),
-            c.conditions[0],
-            c.conditions[1],
-            num(k.difference),
-            num(k.cohens_d),
-            num(k.rank_biserial),
-            num(k.u),
-            num(k.p),
-            k.method
-        );
-        y = paragraph(d, &text, 11.0, false, INK, y + 2.0, 15.0);
-    }
-    y + 4.0
 }
