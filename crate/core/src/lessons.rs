@@ -127,7 +127,7 @@ fn section(description: &str) -> Option<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grading::grade;
+    use crate::grading::{grade, Teacher};
 
     #[test]
     fn every_lesson_is_an_exercise_named_after_its_file_and_citing_its_section() {
@@ -184,22 +184,24 @@ mod tests {
     fn every_lesson_fails_as_given_and_is_met_by_its_solution() {
         for name in names() {
             let lesson = scenario(name).unwrap();
-            let given = grade(&lesson, None).unwrap();
+            let teacher = Teacher::given(&lesson).unwrap();
+            let given = grade(lesson.clone(), &teacher, &mut || 0.0).unwrap();
             assert!(
                 !given.met,
                 "{name}: the goal is met before any edit ({})",
                 given.because
             );
             assert!(
-                given.locked_edited.is_empty(),
-                "{name}: the unedited lesson breaks its own locks: {:?}",
-                given.locked_edited
+                given.locked_edited.is_empty() && given.disturbances.is_empty(),
+                "{name}: the unedited lesson breaks its own rules: {:?} {:?}",
+                given.locked_edited,
+                given.disturbances
             );
             let edits = solution(name).unwrap_or_else(|e| {
                 panic!("{e}: add the edit that solves it to the lesson's file")
             });
             let solved = lesson.with_overrides(&edits).unwrap();
-            let graded = grade(&solved, Some(&lesson)).unwrap();
+            let graded = grade(solved, &teacher, &mut || 0.0).unwrap();
             assert!(
                 graded.met,
                 "{name}: the intended solution does not meet the goal: {}",

@@ -28,6 +28,9 @@ pub mod exercise;
 pub mod experiment;
 pub mod export;
 pub mod grading;
+pub mod handin;
+#[cfg(feature = "sheets")]
+pub mod handins;
 pub mod json;
 pub mod lessons;
 #[cfg(test)]
