@@ -17,6 +17,9 @@ use crate::scenario::Scenario;
 
 /// The key of a lesson file that holds its solution, beside the scenario's keys.
 const SOLUTION: &str = "solution";
+/// The keys of a lesson file beside the scenario's: its solution and the teacher's guide to it
+/// ([`crate::guide`]).
+const BESIDE: [&str; 2] = [SOLUTION, "guide"];
 
 /// Names of the built-in lessons, sorted.
 pub fn names() -> impl Iterator<Item = &'static str> {
@@ -29,14 +32,14 @@ pub fn json(name: &str) -> Result<&'static str> {
 }
 
 pub fn scenario(name: &str) -> Result<Scenario> {
-    let (doc, _) = file(name)?;
+    let doc = file(name)?;
     in_file("lesson", name, Scenario::from_value(Value::Object(doc)))
 }
 
 /// The edit lesson `name` is designed to be solved by, as dotted paths and their values (its
 /// file's `solution`): a student who makes it meets the goal.
 pub fn solution(name: &str) -> Result<Vec<(String, Value)>> {
-    match file(name)?.1 {
+    match part(name, SOLUTION)? {
         Some(Value::Object(edits)) if !edits.is_empty() => Ok(edits.into_iter().collect()),
         _ => Err(Error::field(
             SOLUTION,
@@ -47,17 +50,30 @@ pub fn solution(name: &str) -> Result<Vec<(String, Value)>> {
     }
 }
 
-/// A lesson file: the scenario's keys, and its solution apart.
-fn file(name: &str) -> Result<(Map<String, Value>, Option<Value>)> {
+/// The part `key` of lesson `name`'s file beside its scenario (its solution, its guide).
+pub fn part(name: &str, key: &str) -> Result<Option<Value>> {
+    Ok(document(name)?.remove(key))
+}
+
+/// A lesson's scenario keys, without what its file holds beside them.
+fn file(name: &str) -> Result<Map<String, Value>> {
+    let mut doc = document(name)?;
+    for key in BESIDE {
+        doc.remove(key);
+    }
+    Ok(doc)
+}
+
+/// A lesson file, as written.
+fn document(name: &str) -> Result<Map<String, Value>> {
     let doc: Value = serde_json::from_str(json(name)?).map_err(|e| Error::json(&e))?;
-    let Value::Object(mut doc) = doc else {
+    let Value::Object(doc) = doc else {
         return Err(Error::field(
             "",
             format!("lesson '{name}' is not a JSON object"),
         ));
     };
-    let solution = doc.remove(SOLUTION);
-    Ok((doc, solution))
+    Ok(doc)
 }
 
 /// What a list of lessons shows of one.

@@ -28,6 +28,7 @@ pub mod exercise;
 pub mod experiment;
 pub mod export;
 pub mod grading;
+pub mod guide;
 pub mod handin;
 #[cfg(feature = "sheets")]
 pub mod handins;

@@ -26,7 +26,7 @@ pub struct Part {
 }
 
 /// A part as judged: its points, those earned, and why.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Credit {
     pub goal: String,
     pub points: u32,

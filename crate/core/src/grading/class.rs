@@ -19,6 +19,21 @@ pub enum Source {
     Handins { carried: usize, of: usize },
 }
 
+/// The class's exercise as the Grade view shows it and hands it to its grading workers.
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct ClassExercise {
+    /// The teacher as JSON ([`Teacher::to_json`]), handed to each grading worker.
+    pub teacher: String,
+    pub title: String,
+    /// Where it came from, in words: "“Fewer collisions”, given".
+    pub describe: String,
+    pub source: Source,
+    /// The question students answer in words; empty when the exercise asks none.
+    pub question: String,
+    /// The CSV header of the class's grade table.
+    pub header: String,
+}
+
 /// The exercise hand-ins are graded by, with the teacher's scenario when it is known (the fields a
 /// hand-in changed are listed against it). It travels to grading workers as JSON.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -29,6 +44,24 @@ pub struct Teacher {
     source: Source,
     #[serde(skip)]
     read: Option<Exercise>,
+}
+
+/// An exercise the hand-ins carry: its canonical text, how many carry it, the first scenario that
+/// does, and the disturbance lists of those that do, each with how many have it.
+struct Carried {
+    key: String,
+    count: usize,
+    doc: Value,
+    lists: Vec<(String, usize, Value)>,
+}
+
+/// The list most of `lists` are (ties to the first met).
+fn most_common(lists: &[(String, usize, Value)]) -> Value {
+    let most = lists.iter().map(|(_, n, _)| *n).max().unwrap_or(0);
+    lists
+        .iter()
+        .find(|(_, n, _)| *n == most)
+        .map_or(Value::Array(Vec::new()), |(.., list)| list.clone())
 }
 
 impl Teacher {
@@ -46,11 +79,11 @@ impl Teacher {
     }
 
     /// The exercise most of the hand-ins `docs` carry (each a hand-in's scenario document, as its
-    /// link holds it; ties go to the one met first), read as the scenario that carries it first
-    /// reads it.
+    /// link holds it; ties go to the one met first). An exercise made before disturbances could be
+    /// locked does not say which disturbances are the teacher's: they are the ones most of the
+    /// hand-ins that carry it have (a student's clicks are the student's own).
     pub fn from_handins(docs: impl IntoIterator<Item = Value>) -> Result<Teacher> {
-        // Each distinct exercise, by its canonical text: how many carry it, and it read.
-        let mut seen: Vec<(String, usize, Result<Exercise>)> = Vec::new();
+        let mut seen: Vec<Carried> = Vec::new();
         let mut of = 0;
         for doc in docs {
             let Some(section) = doc.get("exercise") else {
@@ -58,29 +91,57 @@ impl Teacher {
             };
             of += 1;
             let key = canonical(section.clone()).to_string();
-            match seen.iter_mut().find(|(k, ..)| *k == key) {
-                Some((_, n, _)) => *n += 1,
+            let list = Value::Array(crate::exercise::listed(&doc).to_vec());
+            let at = match seen.iter().position(|c| c.key == key) {
+                Some(at) => at,
                 None => {
-                    let read = Exercise::from_value(section.clone(), &doc);
-                    seen.push((key, 1, read));
+                    seen.push(Carried {
+                        key,
+                        count: 0,
+                        doc: doc.clone(),
+                        lists: Vec::new(),
+                    });
+                    seen.len() - 1
                 }
+            };
+            let carried = &mut seen[at];
+            carried.count += 1;
+            let list_key = canonical(list.clone()).to_string();
+            match carried.lists.iter_mut().find(|(k, ..)| *k == list_key) {
+                Some((_, n, _)) => *n += 1,
+                None => carried.lists.push((list_key, 1, list)),
             }
         }
-        let most = seen.iter().map(|(_, n, _)| *n).max().ok_or_else(|| {
+        let most = seen.iter().map(|c| c.count).max().ok_or_else(|| {
             Error::field(
                 "exercise",
                 "none of the hand-ins carries an exercise: give the teacher's exercise (its link or a lesson's name)",
             )
         })?;
-        let (_, carried, read) = seen
+        let carried = seen
             .into_iter()
-            .find(|(_, n, _)| *n == most)
+            .find(|c| c.count == most)
             .expect("the most carried exercise is among those seen");
-        let exercise = read.map_err(|e| e.within("exercise"))?;
+        let mut section = carried.doc["exercise"].clone();
+        if let Some(Value::Object(locked)) = section.get_mut("locked") {
+            locked
+                .entry(DISTURBANCES.to_string())
+                .or_insert_with(|| most_common(&carried.lists));
+        } else if let Value::Object(map) = &mut section {
+            map.insert(
+                "locked".into(),
+                serde_json::json!({ DISTURBANCES: most_common(&carried.lists) }),
+            );
+        }
+        let exercise =
+            Exercise::from_value(section, &carried.doc).map_err(|e| e.within("exercise"))?;
         Ok(Teacher {
             exercise: serde_json::to_value(&exercise).expect("an exercise serialises"),
             scenario: None,
-            source: Source::Handins { carried, of },
+            source: Source::Handins {
+                carried: carried.count,
+                of,
+            },
             read: Some(exercise),
         })
     }
@@ -108,6 +169,18 @@ impl Teacher {
     /// Where it came from.
     pub fn source(&self) -> &Source {
         &self.source
+    }
+
+    /// What the Grade view shows of the class's exercise, and the teacher for its workers.
+    pub fn summary(&self) -> ClassExercise {
+        ClassExercise {
+            teacher: self.to_json(),
+            title: self.exercise().title.clone(),
+            describe: self.describe(),
+            source: self.source.clone(),
+            question: self.exercise().question.clone(),
+            header: super::table::csv_header(self),
+        }
     }
 
     /// The class's exercise in words: `“Fewer collisions”, given` or `“Fewer collisions”, which

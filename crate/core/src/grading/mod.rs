@@ -10,7 +10,7 @@
 
 use std::collections::BTreeMap;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::exercise::{listed, lookup_path, Credit, Exercise, Outcome, Verdict, DISTURBANCES};
@@ -21,13 +21,13 @@ mod replay;
 pub mod table;
 mod words;
 
-pub use class::{Source, Teacher};
+pub use class::{ClassExercise, Source, Teacher};
 pub use replay::{grade, Replay};
 pub use words::{change_text, shape_change, shown_name, unknown_name};
 
 /// A graded hand-in: the student's scenario judged by the teacher's exercise, replayed to its end
 /// (or to the exercise's budget) when it kept to the exercise's rules.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Grade {
     pub name: String,
     pub met: bool,
@@ -57,7 +57,7 @@ pub struct Grade {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_points: Option<u32>,
     /// Each part of the exercise's credit, judged.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub credit: Vec<Credit>,
     /// The hand-in's record of itself: when, how many checks and hints, the answer.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -70,7 +70,7 @@ pub struct Grade {
 
 /// A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
 /// it could not be graded.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(untagged)]
 pub enum Graded {
     Graded {

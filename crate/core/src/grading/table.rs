@@ -1,7 +1,7 @@
 //! The grade table: one [`Row`] a hand-in, numbered as the table shows it, and its CSV, the same
 //! bytes from `kumiki check --format csv` and the page's Grade view (both write it here).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::{Graded, Teacher};
@@ -9,12 +9,12 @@ use crate::export::csv_text;
 
 /// One row of the grade table: the hand-in's number (its row in the table, from 1), the student's
 /// name as the class's file gives it, its link, and its grade or why it could not be graded.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Row {
     pub handin: usize,
     /// The student's name from the class's file (empty when the file gives none; the grade's
     /// `name` is the one the hand-in carries).
-    #[serde(skip_serializing_if = "String::is_empty")]
+    #[serde(default, skip_serializing_if = "String::is_empty")]
     pub student: String,
     /// The hand-in's link, as the file gave it.
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -439,3 +439,34 @@ fn the_grade_table_is_one_csv_for_the_cli_and_the_page() {
     );
     assert_eq!(lines[1].split(',').count() >= 23, true);
 }
+
+/// Hand-ins of an exercise made before disturbances could be locked carry no list of the
+/// teacher's: graded from the links, it is the one most of them have, so the click of the first
+/// hand-in is not taken for the teacher's.
+#[test]
+fn old_hand_ins_graded_from_their_links_take_the_teachers_disturbances_from_most_of_them() {
+    let old = |disturbances: Value| {
+        let mut doc = presets::scenario("amas-L").unwrap().to_value();
+        doc["exercise"] =
+            json!({"title": "t", "locked": {"seed": 1}, "goal": "completed and steps <= 200"});
+        if !disturbances.is_null() {
+            doc["disturbances"] = disturbances;
+        }
+        doc
+    };
+    let clicked = old(json!([{"at": 25, "kind": "remove", "cells": [144]}]));
+    let docs = [clicked.clone(), old(Value::Null), old(Value::Null)];
+    let class = Teacher::from_handins(docs).unwrap();
+    assert!(class.exercise().kept().is_empty());
+    let g = grade(
+        Scenario::from_value(clicked).unwrap(),
+        &class,
+        &mut no_clock,
+    )
+    .unwrap();
+    assert!(!g.met && !g.exercise_edited);
+    assert_eq!(
+        g.disturbances,
+        vec!["'remove' added at step 25 (the exercise allows none)"]
+    );
+}

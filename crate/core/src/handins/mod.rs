@@ -7,7 +7,7 @@
 //! view (through the lab module) read files with this code, so both find the same hand-ins, and
 //! number them as the grade table does.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
@@ -21,7 +21,7 @@ pub const NOT_HANDINS: &str = "this file is neither text (links one a line, or a
 pub const MAX_HANDINS: usize = 1_000_000;
 
 /// One hand-in of a class's file.
-#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Handin {
     /// Its number in the grade table, from 1.
     pub row: usize,

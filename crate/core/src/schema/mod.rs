@@ -284,6 +284,10 @@ pub fn contract() -> Value {
     generator.subschema_for::<crate::exercise::Check>();
     generator.subschema_for::<crate::exercise::Verdict>();
     generator.subschema_for::<crate::grading::Graded>();
+    generator.subschema_for::<crate::grading::table::Row>();
+    generator.subschema_for::<crate::grading::ClassExercise>();
+    #[cfg(feature = "sheets")]
+    generator.subschema_for::<crate::handins::Handin>();
     generator.subschema_for::<crate::scenario::EnvelopeKey>();
     generator.subschema_for::<crate::draft::Proposal>();
     generator.subschema_for::<crate::draft::Comparison>();
@@ -326,6 +330,7 @@ pub fn spliced() -> crate::error::Result<Vec<(&'static str, &'static str, String
         ),
         ("README.md", "models", pages::models_markdown()?),
         ("docs/teaching.md", "lessons", crate::lessons::markdown()?),
+        ("docs/teaching.md", "guide", crate::guide::markdown()?),
     ])
 }
 
