@@ -325,6 +325,34 @@ mod tests {
         }
     }
 
+    /// The page asks before a click whether the exercise in view allows it, and hands in a link
+    /// that carries the hand-in's record.
+    #[test]
+    fn a_locked_click_is_known_before_it_is_made_and_a_hand_in_carries_its_record() {
+        let mut draft = opened("lesson-amas-heatmap");
+        assert_eq!(
+            draft.click_problem("dismantle", "Mark to be removed (6.2)").unwrap(),
+            "Mark to be removed (6.2) is locked by the exercise: it allows no 'dismantle' disturbance"
+        );
+        let record =
+            json!({"made": "2026-11-28T10:15:00Z", "checks": 2, "hints": 1, "answer": "A T."});
+        let link = draft.handin("Ada", record).unwrap();
+        let handin = crate::link::decode(&link).unwrap();
+        assert_eq!(handin.name, "Ada");
+        assert_eq!(handin.handin.unwrap().answer, "A T.");
+        assert!(draft
+            .handin("Ada", json!({"made": "now"}))
+            .unwrap_err()
+            .to_string()
+            .starts_with("handin.made:"));
+        draft = opened("amas-L");
+        assert_eq!(draft.click_problem("remove", "Remove module"), None);
+        assert!(
+            draft.handin("Ada", json!({})).is_err(),
+            "no exercise in view"
+        );
+    }
+
     /// A refused edit says why, by field, and leaves the scenario in view as it was.
     #[test]
     fn a_refused_edit_keeps_the_scenario_in_view() {

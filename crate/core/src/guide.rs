@@ -97,21 +97,25 @@ fn outcome(name: &str, edits: &[(String, Value)]) -> Result<String> {
     })
 }
 
-/// An edit in Markdown: `collision` = `"relay"`, a shape as a block of its own.
-fn edit_text(edits: &[(String, Value)]) -> String {
-    edits
+/// An edit in Markdown: `collision` = `"relay"` inline, and the shapes it sets as blocks to
+/// follow the line (a shape is named "the shape below").
+fn edit_text(edits: &[(String, Value)]) -> (String, String) {
+    let mut blocks = String::new();
+    let inline = edits
         .iter()
         .map(|(path, value)| match value {
             Value::String(s) if s.contains('\n') => {
-                format!(
-                    "`{path}` =\n\n  ```text\n  {}\n  ```\n",
+                blocks.push_str(&format!(
+                    "\n  ```text\n  {}\n  ```\n",
                     s.trim_end().replace('\n', "\n  ")
-                )
+                ));
+                format!("`{path}` = the shape below")
             }
             other => format!("`{path}` = `{other}`"),
         })
         .collect::<Vec<_>>()
-        .join(", ")
+        .join(", ");
+    (inline, blocks)
 }
 
 /// The teachers' guide to every lesson, in name order: docs/teaching.md's part between
@@ -140,18 +144,18 @@ pub fn markdown() -> Result<String> {
         ));
         for t in &g.tries {
             let edits: Vec<(String, Value)> = t.set.clone().into_iter().collect();
+            let (inline, blocks) = edit_text(&edits);
             out.push_str(&format!(
-                "- {} ({}): {}.\n",
+                "- {} ({inline}): {}.\n{blocks}",
                 t.what.trim(),
-                edit_text(&edits),
                 outcome(name, &edits)?
             ));
         }
         let solution = lessons::solution(name)?;
+        let (inline, blocks) = edit_text(&solution);
         out.push_str(&format!(
-            "\n**The answer.** {} The lesson's solution, {}: {}.\n\n",
+            "\n**The answer.** {} The lesson's solution, {inline}: {}.\n{blocks}\n",
             g.answer.trim(),
-            edit_text(&solution),
             outcome(name, &solution)?
         ));
     }
