@@ -8,6 +8,7 @@
 
 use std::io::Write;
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 use kumiki_core::grading::table::{self, Row};
@@ -48,12 +49,20 @@ pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<Handin>, F
 }
 
 /// A hand-in's scenario: its link, or (a command-line argument, a one-cell row) a scenario file.
-fn load(h: &Handin, limits: &'static Limits) -> Result<Scenario, String> {
+/// `older` counts the links made with another behaviour version of their model, said once at the
+/// end rather than once a hand-in.
+fn load(h: &Handin, limits: &'static Limits, older: &AtomicUsize) -> Result<Scenario, String> {
     let failed = |e: Failure| match e {
         Failure::Usage(m) | Failure::Run(m) => m,
     };
     match &h.link {
-        Some(link) => runs::load_scenario(link, limits).map_err(failed),
+        Some(link) => {
+            let opened = link::open_within(link, limits).map_err(|e| e.to_string())?;
+            if opened.version_differs() {
+                older.fetch_add(1, Ordering::Relaxed);
+            }
+            Ok(opened.scenario)
+        }
         None if Path::new(h.text.trim()).is_file() => {
             runs::load_scenario(h.text.trim(), limits).map_err(failed)
         }
@@ -136,6 +145,7 @@ pub fn run(
         writeln!(out, "{}", table::csv_header(teacher))?;
     }
     let mut tally = Tally::default();
+    let older = AtomicUsize::new(0);
     pool::run_ordered(
         handins.len(),
         threads,
@@ -143,7 +153,7 @@ pub fn run(
             let h = &handins[i];
             let started = Instant::now();
             let mut clock = || started.elapsed().as_secs_f64();
-            let graded = load(h, limits)
+            let graded = load(h, limits, &older)
                 .and_then(|s| grading::grade(s, teacher, &mut clock).map_err(|e| e.to_string()));
             Row {
                 handin: h.row,
@@ -176,5 +186,11 @@ pub fn run(
             Ok(())
         },
     )?;
+    match older.into_inner() {
+        0 => {}
+        n => eprintln!(
+            "kumiki: {n} of the hand-ins were made with another behaviour version of their model than this Kumiki runs; their runs may differ from the ones their students saw"
+        ),
+    }
     Ok(tally)
 }
