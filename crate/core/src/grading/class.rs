@@ -229,8 +229,11 @@ impl Teacher {
         differences(ours, doc)
             .into_iter()
             .filter(|p| {
-                !(p == "exercise" || p.starts_with("exercise.") || p == "name")
-                    && !(p == "handin" || p.starts_with("handin."))
+                !(p == "exercise"
+                    || p.starts_with("exercise.")
+                    || p == "name"
+                    || p == "handin"
+                    || p.starts_with("handin."))
             })
             .collect()
     }

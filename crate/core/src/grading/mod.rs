@@ -75,7 +75,7 @@ pub struct Grade {
 pub enum Graded {
     Graded {
         #[serde(flatten)]
-        grade: Grade,
+        grade: Box<Grade>,
         /// The metrics the goal reads, at the end of the replayed run.
         goal_metrics: BTreeMap<String, Value>,
     },
@@ -108,7 +108,7 @@ impl From<Grade> for Graded {
     fn from(mut grade: Grade) -> Graded {
         Graded::Graded {
             goal_metrics: std::mem::take(&mut grade.goal_metrics),
-            grade,
+            grade: Box::new(grade),
         }
     }
 }
