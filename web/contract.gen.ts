@@ -186,8 +186,6 @@ export type Graded = {
   exercise_edited: boolean;
   /** The metrics the goal reads, at the end of the replayed run. */
   goal_metrics: Record<string, unknown>;
-  /** The hand-in's record of itself: when, how many checks and hints, the answer. */
-  handin?: Handin | null;
   /** The state hash at the end of the replay (empty when it was not replayed). */
   hash: string;
   /** Locked fields the hand-in changed: "robots: 5 → 7". */
@@ -200,6 +198,11 @@ export type Graded = {
   over_budget: boolean;
   /** The points earned; absent when the exercise gives none. */
   points?: number | null;
+  /**
+   * The hand-in's record of itself (its `handin` section): when, how many checks and hints,
+   * the answer. (`record`, as a table's row numbers its hand-ins `handin`.)
+   */
+  record?: Handin | null;
   /** The steps replayed (0 when it was not replayed). */
   steps: number;
 } | {

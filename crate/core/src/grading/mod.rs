@@ -59,9 +59,10 @@ pub struct Grade {
     /// Each part of the exercise's credit, judged.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub credit: Vec<Credit>,
-    /// The hand-in's record of itself: when, how many checks and hints, the answer.
+    /// The hand-in's record of itself (its `handin` section): when, how many checks and hints,
+    /// the answer. (`record`, as a table's row numbers its hand-ins `handin`.)
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub handin: Option<Handin>,
+    pub record: Option<Handin>,
     /// The metrics the goal and the credit read, at the end of the replayed run (the page's Grade
     /// view shows them; `kumiki check` writes them into its CSV).
     #[serde(skip)]

@@ -75,7 +75,7 @@ impl Replay {
             points: None,
             max_points: None,
             credit: Vec::new(),
-            handin: handin.handin.clone(),
+            record: handin.handin.clone(),
             goal_metrics: BTreeMap::new(),
         };
         let run = match broken.is_empty() {

@@ -75,7 +75,7 @@ pub fn csv_row(row: &Row, teacher: &Teacher) -> String {
             grade: g,
             goal_metrics,
         } => {
-            let handin = g.handin.clone().unwrap_or_default();
+            let handin = g.record.clone().unwrap_or_default();
             let credit: Vec<String> = g
                 .credit
                 .iter()
@@ -97,11 +97,11 @@ pub fn csv_row(row: &Row, teacher: &Teacher) -> String {
                 g.exercise_edited.to_string(),
                 list(&credit),
                 csv_text(&handin.made),
-                match g.handin {
+                match g.record {
                     Some(_) => handin.checks.to_string(),
                     None => String::new(),
                 },
-                match g.handin {
+                match g.record {
                     Some(_) => handin.hints.to_string(),
                     None => String::new(),
                 },

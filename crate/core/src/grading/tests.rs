@@ -351,7 +351,7 @@ fn the_grade_gives_points_for_each_part_and_carries_the_hand_ins_record() {
         g.summary(),
         format!("Ada: not met ({}), 8 of 10 points", g.because)
     );
-    assert_eq!(g.handin.as_ref().unwrap().answer, "Because.");
+    assert_eq!(g.record.as_ref().unwrap().answer, "Because.");
     assert_eq!(
         g.goal_metrics.keys().collect::<Vec<_>>(),
         vec!["collisions"]
@@ -404,6 +404,7 @@ fn the_grade_table_is_one_csv_for_the_cli_and_the_page() {
     let class = Teacher::given(&teacher).unwrap();
     let mut doc = teacher.to_value();
     doc["name"] = json!("=HYPERLINK(\"x\")");
+    doc["handin"] = json!({"made": "2026-11-28T10:15:00Z", "checks": 3, "answer": "Two, lines"});
     let g = grade(Scenario::from_value(doc).unwrap(), &class, &mut no_clock).unwrap();
     let rows = [
         table::Row {
@@ -421,6 +422,15 @@ fn the_grade_table_is_one_csv_for_the_cli_and_the_page() {
             },
         },
     ];
+    // The row's number and the hand-in's record are two keys of the row's JSON.
+    let json = serde_json::to_value(&rows[0]).unwrap();
+    assert_eq!(json["handin"], 1);
+    assert_eq!(json["record"]["checks"], 3);
+    let back: table::Row = serde_json::from_value(json).unwrap();
+    assert_eq!(
+        back.graded.grade().unwrap().record,
+        rows[0].graded.grade().unwrap().record
+    );
     let csv = table::csv(&rows, &class);
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
@@ -432,7 +442,11 @@ fn the_grade_table_is_one_csv_for_the_cli_and_the_page() {
         "{}",
         lines[1]
     );
-    assert!(lines[1].ends_with(",9,,#k1.x"), "{}", lines[1]);
+    assert!(
+        lines[1].ends_with(",2026-11-28T10:15:00Z,3,0,\"Two, lines\",9,,#k1.x"),
+        "{}",
+        lines[1]
+    );
     assert_eq!(
         lines[2],
         "2,,,false,,,,,,,,,,,,,,,,,,holds no Kumiki link (line 3 of the file): Grace,"
