@@ -57,7 +57,11 @@ export function benchGrade(wasm, lab, root, count = 60) {
   for (const row of rows) lab.grade_row(row, teacher);
   const wasmMs = (performance.now() - started) / count;
   const dir = mkdtempSync(join(tmpdir(), 'kumiki-bench-grade-'));
-  const check = (file) => execFileSync(`${root}target/release/kumiki`, ['check', '--file', file, '--exercise', LESSON, '--format', 'csv'], { cwd: root, stdio: ['ignore', 'ignore', 'ignore'] });
+  const check = (file) =>
+    execFileSync(`${root}target/release/kumiki`, ['check', '--file', file, '--exercise', LESSON, '--format', 'csv'], {
+      cwd: root,
+      stdio: ['ignore', 'ignore', 'ignore'],
+    });
   const list = join(dir, 'handins.txt');
   writeFileSync(list, `${links.join('\n')}\n`);
   const t0 = performance.now();
