@@ -46,7 +46,21 @@ export interface Claim {
   runs: number;
   /** Where the paper makes the claim: "§5.2, fig. 23". */
   section: string;
-  verdict: Verdict;
+  verdict: Verdict2;
+}
+
+/** The class's exercise as the Grade view shows it and hands it to its grading workers. */
+export interface ClassExercise {
+  /** Where it came from, in words: "“Fewer collisions”, given". */
+  describe: string;
+  /** The CSV header of the class's grade table. */
+  header: string;
+  /** The question students answer in words; empty when the exercise asks none. */
+  question: string;
+  source: Source;
+  /** The teacher as JSON ([`Teacher::to_json`]), handed to each grading worker. */
+  teacher: string;
+  title: string;
 }
 
 /** A scenario's comparison (its `compare` section), as the page opens it. */
@@ -70,6 +84,14 @@ export interface ComparisonRow {
    */
   p_holm?: number | null;
   value: string;
+}
+
+/** A part as judged: its points, those earned, and why. */
+export interface Credit {
+  because: string;
+  earned: number;
+  goal: string;
+  points: number;
 }
 
 /** One key of the envelope, the keys every model's scenario has beside its own. */
@@ -152,7 +174,7 @@ export interface Finding {
   runs: number;
   /** Where the paper makes the claim: "§5.2, fig. 23". */
   section: string;
-  verdict: Verdict;
+  verdict: Verdict2;
 }
 
 /**
@@ -162,25 +184,77 @@ export interface Finding {
 export type Graded = {
   because: string;
   /**
-   * Every field that differs from the teacher's exercise, when it is known (the name, which
+   * Every field that differs from the teacher's scenario, when it is known (the name, which
    * Hand in sets, left out).
    */
   changed: string[];
   completed: boolean;
-  /** The hand-in's exercise section is not the teacher's (its goal or locks were edited). */
+  /** Each part of the exercise's credit, judged. */
+  credit?: Credit[];
+  /**
+   * Disturbances the exercise does not allow: "'remove' added at step 25 (the exercise allows
+   * none)", or the teacher's left out.
+   */
+  disturbances: string[];
+  /**
+   * The hand-in's exercise section is not the class's (its goal, locks or points differ, or it
+   * has none).
+   */
   exercise_edited: boolean;
   /** The metrics the goal reads, at the end of the replayed run. */
   goal_metrics: Record<string, unknown>;
+  /** The state hash at the end of the replay (empty when it was not replayed). */
   hash: string;
   /** Locked fields the hand-in changed: "robots: 5 → 7". */
   locked_edited: string[];
+  /** The most points the exercise gives; absent when it gives none. */
+  max_points?: number | null;
   met: boolean;
   name: string;
+  /** The replay was stopped at the exercise's budget before its run ended: not judged. */
+  over_budget: boolean;
+  /** The points earned; absent when the exercise gives none. */
+  points?: number | null;
+  /**
+   * The hand-in's record of itself (its `handin` section): when, how many checks and hints,
+   * the answer. (`record`, as a table's row numbers its hand-ins `handin`.)
+   */
+  record?: Handin | null;
+  /** The steps replayed (0 when it was not replayed). */
   steps: number;
 } | {
-  /** Why the hand-in could not be graded (a bad link, no exercise). */
+  /** Why the hand-in could not be graded (a bad link, a row without one). */
   error: string;
 };
+
+/** A hand-in's record of itself. */
+export interface Handin {
+  /** The answer to the exercise's question, in words (not graded). */
+  answer?: string;
+  /** How many times the student checked the goal before handing in. */
+  checks: number;
+  /** How many of the exercise's hints the student revealed. */
+  hints: number;
+  /**
+   * When it was handed in: an RFC 3339 time in UTC, `2026-11-28T10:15:00Z`, as the student's
+   * clock had it.
+   */
+  made?: string;
+}
+
+/** One hand-in of a class's file. */
+export interface Handin2 {
+  /** The line of the file (a workbook's row) it starts on, from 1. */
+  line: number;
+  /** The Kumiki link in it, or `None` when the row holds none (it is then graded as an error). */
+  link?: string | null;
+  /** Its number in the grade table, from 1. */
+  row: number;
+  /** The student's name from the file's other cells; empty when it has none. */
+  student: string;
+  /** The row as it was, its cells joined by the file's separator, for a row without a link. */
+  text: string;
+}
 
 /**
  * The Kruskal-Wallis H test of three or more conditions (any number from two): whether their
@@ -342,10 +416,25 @@ export interface Proposal {
 export type Role = "format" | "text" | "setting" | "section";
 
 /**
+ * One row of the grade table: the hand-in's number (its row in the table, from 1), the student's
+ * name as the class's file gives it, its link, and its grade or why it could not be graded.
+ */
+export interface Row {
+  handin: number;
+  /** The hand-in's link, as the file gave it. */
+  link?: string | null;
+  /**
+   * The student's name from the class's file (empty when the file gives none; the grade's
+   * `name` is the one the hand-in carries).
+   */
+  student?: string;
+}
+
+/**
  * The result of one run, traceable to its scenario and program: its [`Outcome`] (which it
  * dereferences to) and where it came from.
  */
-export interface Row {
+export interface Row2 {
   /** The run reached its goal. */
   completed: boolean;
   /** The state hash at the end, in hex. */
@@ -394,6 +483,15 @@ export interface Series {
   label: string;
   points: Point[];
 }
+
+/** Where the class's exercise came from. */
+export type Source = {
+  from: "given";
+} | {
+  carried: number;
+  from: "handins";
+  of: number;
+};
 
 /** The band or whisker around the statistic. */
 export type Spread = "none" | "minmax" | "sd" | "ci95" | "iqr";
@@ -486,8 +584,23 @@ export interface Unpacked {
   scenario: string;
 }
 
+/**
+ * An exercise's verdict on a run: whether it meets the goal (never when it broke a rule of the
+ * exercise: a locked field, a disturbance), why, and the points its parts earn.
+ */
+export interface Verdict {
+  because: string;
+  /** Each part, judged. */
+  credit: Credit[];
+  /** The most points the exercise gives; absent when it gives none. */
+  max_points?: number | null;
+  met: boolean;
+  /** The points earned; absent when the exercise gives none. */
+  points?: number | null;
+}
+
 /** Whether the paper's claim holds in Kumiki, where the paper states a comparison. */
-export type Verdict = "differs" | "holds" | "partial" | "not_stated";
+export type Verdict2 = "differs" | "holds" | "partial" | "not_stated";
 
 /**
  * The behaviour versions of a link's model: the one that made the link and this program's. The
@@ -501,4 +614,4 @@ export interface Versions {
 }
 
 /** The envelope's keys, in the order a form shows them (kumiki_model::entry::ENVELOPE). */
-export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"}];
+export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"},{"key":"handin","role":"section"}];

@@ -48,6 +48,7 @@ export interface AmasScenario {
   field_updates_per_step: number;
   /** Footnote 3: below this spread of the neighbours' values there is no effective gradient. */
   gradient_threshold?: number | null;
+  handin?: Handin;
   /** Modules already built when the run starts. */
   initial?: unknown;
   /** The run stops after this many steps if its goal is not reached first. */
@@ -81,6 +82,17 @@ export interface AmasScenario {
   turn_duration: number;
   /** The scenario format version; older versions are migrated when read. */
   version: number;
+}
+
+/**
+ * The most a hand-in's replay may take: steps (the same on every machine) or seconds of the
+ * grading machine's time, or both (whichever comes first).
+ */
+export interface Budget {
+  /** Seconds of replay on the machine that grades (building the run included). */
+  seconds?: number | null;
+  /** Steps: a run that has not ended after this many is stopped. */
+  steps?: number | null;
 }
 
 export type ChobieDisturbance = {
@@ -130,6 +142,7 @@ export interface ChobieScenario {
   /** Completed when the crawl has moved this many cells, or the bridge spans this many cells. */
   goal?: number | null;
   gravity: number;
+  handin?: Handin;
   /** Time for a signal to cross one robot, microseconds (section 3.2: about 10). */
   hop_us: number;
   /** Who decides which line drives. */
@@ -226,6 +239,7 @@ export interface Cubes3dScenario {
   exercise?: Exercise;
   /** A ground plane under the lowest layer. */
   ground: Ground;
+  handin?: Handin;
   /** The direction in which the light source lies: +x, -x, +y, -y, +z or -z. */
   light?: string | null;
   /**
@@ -281,15 +295,38 @@ export interface Cubes3dScenario {
  * "exercise": {
  *   "title": "Fewer collisions",
  *   "instructions": "Change the collision rule so that the L is built with *fewer* collisions.",
- *   "locked": { "robots": 10, "target": "..." },
+ *   "locked": { "robots": 10, "target": "...", "disturbances": [] },
+ *   "disturbances": { "remove": 3 },
  *   "goal": "completed and metrics.collisions < 20",
+ *   "credit": [{ "goal": "completed", "points": 5 }, { "goal": "metrics.collisions < 40", "points": 2 }],
+ *   "question": "Why does the relay help?",
+ *   "budget": { "steps": 100000 },
  *   "hints": ["Section 4.2 compares three rules."]
  * }
  * ```
  * `locked` maps dotted scenario paths to the teacher's values: the page shows those fields
- * read-only, and `kumiki check` reports a hand-in whose values differ.
+ * read-only, and `kumiki check` reports a hand-in whose values differ. Every change a student
+ * can make is a field or a disturbance: a disturbance (a click of the page's tools, or one
+ * written into the scenario) beyond the teacher's is allowed only as `disturbances` says, by
+ * kind and count; none when it says nothing.
  */
 export interface Exercise {
+  /**
+   * How long a hand-in may take to replay: a run not ended within it is stopped and marked
+   * "over budget" (`kumiki check` and the page's grading alike).
+   */
+  budget?: Budget | null;
+  /**
+   * Points for parts of the outcome, each a goal of its own: a hand-in earns the points of
+   * every part it meets, whether or not it meets the whole goal.
+   */
+  credit?: Part[];
+  /**
+   * The disturbances students may add beside the teacher's, by the model's action kind
+   * (`remove`, `extend`, `fault`, ...), with how many of each: `{"remove": 3}` allows at most
+   * three "Remove module" clicks and nothing else. Left out or empty, none may be added.
+   */
+  disturbances?: Record<string, number>;
   /** A condition on the run's outcome, such as `completed and steps <= 800`. */
   goal: string;
   /** Hints shown one at a time. */
@@ -298,6 +335,11 @@ export interface Exercise {
   instructions: string;
   /** Dotted scenario paths and the teacher's values: fields students may not change. */
   locked: Record<string, unknown>;
+  /**
+   * A question the student answers in words, handed in with the link and shown to the
+   * teacher; it is not graded.
+   */
+  question?: string;
   /** The exercise's title. */
   title: string;
 }
@@ -339,6 +381,7 @@ export interface FractaScenario {
   exercise?: Exercise;
   /** The goal statements (see [`goal`]). */
   goal: string;
+  handin?: Handin;
   /** How much x is raised when irritation fires. */
   irritation_gain: number;
   /** Free cells around the start shape's bounding box. */
@@ -370,11 +413,34 @@ export interface FractaScenario {
 
 export type Ground = "none" | "floor" | "fixed" | "anchor";
 
+/** A hand-in's record of itself. */
+export interface Handin {
+  /** The answer to the exercise's question, in words (not graded). */
+  answer?: string;
+  /** How many times the student checked the goal before handing in. */
+  checks: number;
+  /** How many of the exercise's hints the student revealed. */
+  hints: number;
+  /**
+   * When it was handed in: an RFC 3339 time in UTC, `2026-11-28T10:15:00Z`, as the student's
+   * clock had it.
+   */
+  made?: string;
+}
+
 /** Who decides which line drives. */
 export type Leader = "temporary" | "permanent";
 
 /** How the crawl copes with initial forms the first algorithm cannot handle (section IV). */
 export type Method = "first" | "trial_and_error" | "cautious";
+
+/** A part of the outcome and the points it gives. */
+export interface Part {
+  /** The part, a goal in the goal language: `steps < 300`. */
+  goal: string;
+  /** The points it gives when it is met. */
+  points: number;
+}
 
 /**
  * How statements of lower priority take part in the difference. See the documentation of

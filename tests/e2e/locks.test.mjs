@@ -157,7 +157,7 @@ describe('locks', () => {
     await page.waitForSelector('#exercise:not([hidden])');
     const verdict = await playToEnd(page);
     assert.match(verdict, /^Not met/);
-    assert.match(verdict, /locked fields differ from the exercise's values \(seed: 1 → 7\)/);
+    assert.match(verdict, /the exercise does not allow what this scenario changed \(seed: 1 → 7\)/);
     // The completion badge carries no colour of its own beside a goal not met.
     assert.equal(await page.$eval('#run-status', (e) => e.classList.contains('plain')), true);
     await context.close();

@@ -1,45 +1,93 @@
-//! `kumiki check`: grades classroom hand-ins. Each hand-in link is replayed to its end and judged
-//! by its exercise's goal (the core's `grading::grade`); one row per hand-in, in input order.
+//! `kumiki check`: grades classroom hand-ins by the teacher's exercise. The hand-ins are links on
+//! the command line and the rows of a file (links one a line, a form's CSV or text export, or a
+//! workbook, read by the core's `handins`, as the page's Grade view reads them); the exercise is
+//! the teacher's when given, else the one most hand-ins carry (never a hand-in's own). Each
+//! hand-in that keeps to the exercise's rules is replayed within its budget and judged (the
+//! core's `grading`); one row a hand-in, numbered as the page's table numbers them, in input
+//! order.
 
 use std::io::Write;
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
 
-use kumiki_core::export::csv_text;
-use kumiki_core::grading::{self, Grade};
-use kumiki_core::Scenario;
-use serde::Serialize;
+use kumiki_core::grading::table::{self, Row};
+use kumiki_core::grading::{self, Graded, Teacher};
+use kumiki_core::handins::{self, Handin};
+use kumiki_core::{link, Limits, Scenario};
+use serde_json::Value;
 
-use crate::{pool, Failure};
+use crate::{pool, runs, Failure};
 
-/// One hand-in's row: its place in the input, and its grade or why it could not be graded.
-#[derive(Serialize)]
-struct Row {
-    handin: usize,
-    #[serde(flatten)]
-    grade: Option<Grade>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    error: Option<String>,
-}
-
-/// The hand-ins named on the command line, then those in `file`, one a line (blank lines and
-/// lines starting with `#` skipped: a link's own `#` comes after its address).
-pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<String>, Failure> {
-    let mut all = links;
+/// The hand-ins named on the command line (links, or scenario files), then the rows of `file`,
+/// numbered from 1 in that order.
+pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<Handin>, Failure> {
+    let mut all: Vec<Handin> = links
+        .into_iter()
+        .map(|text| Handin {
+            row: 0,
+            line: 0,
+            student: String::new(),
+            link: handins::find_link(&text).map(str::to_string),
+            text,
+        })
+        .collect();
     if let Some(file) = file {
-        let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
-        all.extend(
-            text.lines()
-                .map(str::trim)
-                .filter(|l| !l.is_empty() && !l.starts_with('#'))
-                .map(str::to_string),
-        );
+        let bytes = std::fs::read(file).map_err(|e| format!("{}: {e}", file.display()))?;
+        let read = handins::read(&bytes).map_err(|e| format!("{}: {e}", file.display()))?;
+        all.extend(read);
     }
     if all.is_empty() {
         return Err(Failure::Usage(
             "check needs hand-in links, as arguments or with --file".into(),
         ));
     }
+    for (i, h) in all.iter_mut().enumerate() {
+        h.row = i + 1;
+    }
     Ok(all)
+}
+
+/// A hand-in's scenario: its link, or (a command-line argument, a one-cell row) a scenario file.
+/// `older` counts the links made with another behaviour version of their model, said once at the
+/// end rather than once a hand-in.
+fn load(h: &Handin, limits: &'static Limits, older: &AtomicUsize) -> Result<Scenario, String> {
+    let failed = |e: Failure| match e {
+        Failure::Usage(m) | Failure::Run(m) => m,
+    };
+    match &h.link {
+        Some(link) => {
+            let opened = link::open_within(link, limits).map_err(|e| e.to_string())?;
+            if opened.version_differs() {
+                older.fetch_add(1, Ordering::Relaxed);
+            }
+            Ok(opened.scenario)
+        }
+        None if Path::new(h.text.trim()).is_file() => {
+            runs::load_scenario(h.text.trim(), limits).map_err(failed)
+        }
+        None => Err(h.no_link()),
+    }
+}
+
+/// A hand-in's scenario document, unread, to find the exercise most hand-ins carry.
+fn document(h: &Handin) -> Option<Value> {
+    match &h.link {
+        Some(l) => link::unpack(l).ok().map(|(doc, _)| doc),
+        None => {
+            let text = std::fs::read_to_string(h.text.trim()).ok()?;
+            serde_json::from_str(&text).ok()
+        }
+    }
+}
+
+/// The class's exercise: the teacher's (`given`), else the one most hand-ins carry.
+pub fn teacher(given: Option<&Scenario>, all: &[Handin]) -> Result<Teacher, Failure> {
+    let teacher = match given {
+        Some(s) => Teacher::given(s),
+        None => Teacher::from_handins(all.iter().filter_map(document)),
+    };
+    teacher.map_err(|e| Failure::Usage(format!("--exercise: {e}")))
 }
 
 /// How `kumiki check` writes its rows.
@@ -47,17 +95,19 @@ pub fn handins(links: Vec<String>, file: Option<&Path>) -> Result<Vec<String>, F
 pub enum CheckFormat {
     /// One JSON object a line
     Json,
-    /// A CSV table with a header
+    /// A CSV table with a header: the page's Grade view exports the same
     Csv,
     /// One line a student: `Ada: met in 209 steps`
     Text,
 }
 
-/// How many hand-ins met the goal, did not, and could not be graded.
+/// How many hand-ins met the goal, did not (and of those, how many ran over the budget), and
+/// could not be graded.
 #[derive(Default)]
 pub struct Tally {
     pub met: usize,
     pub unmet: usize,
+    pub over_budget: usize,
     pub errors: usize,
 }
 
@@ -71,55 +121,57 @@ impl std::fmt::Display for Tally {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let total = self.met + self.unmet + self.errors;
         let s = if total == 1 { "" } else { "s" };
+        let over = match self.over_budget {
+            0 => String::new(),
+            n => format!(" ({n} over budget)"),
+        };
         write!(
             f,
-            "{total} hand-in{s}: {} met, {} not met, {} could not be graded",
+            "{total} hand-in{s}: {} met, {} not met{over}, {} could not be graded",
             self.met, self.unmet, self.errors
         )
     }
 }
 
 pub fn run(
-    handins: &[String],
-    original: Option<&Scenario>,
+    handins: &[Handin],
+    teacher: &Teacher,
     format: CheckFormat,
     threads: usize,
-    load: impl Fn(&str) -> Result<Scenario, Failure> + Sync,
+    limits: &'static Limits,
     out: &mut impl Write,
 ) -> Result<Tally, Failure> {
     if format == CheckFormat::Csv {
-        writeln!(
-            out,
-            "handin,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,error"
-        )?;
+        writeln!(out, "{}", table::csv_header(teacher))?;
     }
     let mut tally = Tally::default();
+    let older = AtomicUsize::new(0);
     pool::run_ordered(
         handins.len(),
         threads,
         |i| {
-            let graded = load(&handins[i])
-                .map_err(|e| match e {
-                    Failure::Usage(m) | Failure::Run(m) => m,
-                })
-                .and_then(|s| grading::grade(&s, original).map_err(|e| e.to_string()));
-            match graded {
-                Ok(grade) => Row {
-                    handin: i + 1,
-                    grade: Some(grade),
-                    error: None,
-                },
-                Err(error) => Row {
-                    handin: i + 1,
-                    grade: None,
-                    error: Some(error),
+            let h = &handins[i];
+            let started = Instant::now();
+            let mut clock = || started.elapsed().as_secs_f64();
+            let graded = load(h, limits, &older)
+                .and_then(|s| grading::grade(s, teacher, &mut clock).map_err(|e| e.to_string()));
+            Row {
+                handin: h.row,
+                student: h.student.clone(),
+                link: h.link.clone(),
+                graded: match graded {
+                    Ok(grade) => Graded::from(grade),
+                    Err(error) => Graded::Failed { error },
                 },
             }
         },
         |_, row| -> Result<(), Failure> {
-            match &row.grade {
+            match row.graded.grade() {
                 Some(g) if g.met => tally.met += 1,
-                Some(_) => tally.unmet += 1,
+                Some(g) => {
+                    tally.unmet += 1;
+                    tally.over_budget += usize::from(g.over_budget);
+                }
                 None => tally.errors += 1,
             }
             match format {
@@ -128,47 +180,17 @@ pub fn run(
                     "{}",
                     serde_json::to_string(&row).expect("rows serialise")
                 )?,
-                CheckFormat::Csv => writeln!(out, "{}", csv_row(&row))?,
-                CheckFormat::Text => writeln!(out, "{}", text_row(&row))?,
+                CheckFormat::Csv => writeln!(out, "{}", table::csv_row(&row, teacher))?,
+                CheckFormat::Text => writeln!(out, "{}", table::text_row(&row))?,
             }
             Ok(())
         },
     )?;
+    match older.into_inner() {
+        0 => {}
+        n => eprintln!(
+            "kumiki: {n} of the hand-ins were made with another behaviour version of their model than this Kumiki runs; their runs may differ from the ones their students saw"
+        ),
+    }
     Ok(tally)
-}
-
-/// `3. Ada: met in 209 steps`, or the reason it could not be graded.
-fn text_row(row: &Row) -> String {
-    match (&row.grade, &row.error) {
-        (Some(g), _) => format!("{}. {}", row.handin, g.summary()),
-        (None, error) => format!(
-            "{}. could not be graded: {}",
-            row.handin,
-            error.as_deref().unwrap_or_default()
-        ),
-    }
-}
-
-fn csv_row(row: &Row) -> String {
-    let list = |items: &[String]| csv_text(&items.join("; "));
-    match (&row.grade, &row.error) {
-        (Some(g), _) => format!(
-            "{},{},{},{},{},{},{},{},{},{},",
-            row.handin,
-            csv_text(&g.name),
-            g.met,
-            csv_text(&g.because),
-            g.completed,
-            g.steps,
-            g.hash,
-            list(&g.locked_edited),
-            list(&g.changed),
-            g.exercise_edited
-        ),
-        (None, error) => format!(
-            "{},,false,,,,,,,,{}",
-            row.handin,
-            csv_text(error.as_deref().unwrap_or_default())
-        ),
-    }
 }

@@ -142,16 +142,19 @@ enum Command {
         #[arg(long, value_name = "DIR", default_value = ".")]
         root: PathBuf,
     },
-    /// Grade classroom hand-ins: replay each link and judge it by its exercise's goal
+    /// Grade classroom hand-ins: replay each link within the exercise's budget and judge it by
+    /// the teacher's exercise
     Check {
         /// Hand-in links (or scenario files)
         #[arg(value_name = "LINK")]
         links: Vec<String>,
-        /// A file of hand-in links, one a line
+        /// A file of hand-ins: links one a line, a form's CSV or text export (comma, semicolon or
+        /// tab), or a workbook (.xlsx, .ods, .xls)
         #[arg(long, value_name = "FILE")]
         file: Option<PathBuf>,
-        /// The exercise as the teacher made it (a link, file or preset): hand-ins are judged by
-        /// its goal and locks, and every field they changed is listed
+        /// The exercise as the teacher made it (a link, file or lesson): hand-ins are judged by
+        /// its goal, locks and allowed disturbances, and every field they changed is listed.
+        /// Without it, the exercise most hand-ins carry is the class's; one that differs fails
         #[arg(long, value_name = "EXERCISE")]
         exercise: Option<String>,
         #[arg(long, value_enum, default_value_t = check::CheckFormat::Json)]
@@ -405,18 +408,13 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
         }) => {
             let limits = size.limits();
             let handins = check::handins(links, file.as_deref())?;
-            let original = exercise
+            let given = exercise
                 .as_deref()
                 .map(|e| load_scenario(e, limits))
                 .transpose()?;
-            let tally = check::run(
-                &handins,
-                original.as_ref(),
-                format,
-                jobs.threads(),
-                |h| load_scenario(h, limits),
-                &mut out,
-            )?;
+            let teacher = check::teacher(given.as_ref(), &handins)?;
+            eprintln!("kumiki: graded by {}", teacher.describe());
+            let tally = check::run(&handins, &teacher, format, jobs.threads(), limits, &mut out)?;
             eprintln!("kumiki: {tally}");
             if strict && !tally.all_met() {
                 return Err(Failure::Run(format!("--strict: {tally}")));

@@ -1,5 +1,7 @@
 //! `kumiki check` grades hand-ins from their links: a fair one, one that misses the goal, one that
-//! edits a locked field, one that edits the exercise, and one that is not a link at all.
+//! edits a locked field, one that edits the exercise, one with a disturbance the exercise does not
+//! allow, one over the exercise's budget, and one that is not a link at all; from a list of links,
+//! a form's CSV export and a workbook alike; by the teacher's exercise or the class's.
 
 use std::process::Command;
 
@@ -105,10 +107,10 @@ fn hand_ins_are_replayed_and_graded_one_row_each() {
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(
         lines[0],
-        "handin,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,error"
+        "handin,student,name,met,points,max_points,because,completed,steps,over_budget,hash,locked_edited,disturbances,changed,exercise_edited,credit,made,checks,hints,answer,error,link"
     );
     assert!(
-        lines[1].starts_with("1,amas-L,false,") && lines[1].contains(",robots: 5 → 8,,false,"),
+        lines[1].starts_with("1,,amas-L,false,,,") && lines[1].contains(",robots: 5 → 8,,,false,"),
         "{}",
         lines[1]
     );
@@ -200,7 +202,7 @@ fn strict_fails_when_a_hand_in_fails_and_text_gives_one_line_a_student() {
     assert!(lines[0].starts_with("1. Ada: met in "), "{text}");
     assert!(
         lines[1].starts_with(&format!(
-            "2. Linus: not met (the hand-in edited the exercise itself; the hand-in changed locked fields (target: 1 cell removed at ({column}, 1))"
+            "2. Linus: not met (not replayed: its exercise is not the class's (locked.target differs); it changed locked fields (target: 1 cell removed at ({column}, 1)))"
         )),
         "{text}"
     );
@@ -276,4 +278,222 @@ fn run_prints_both_runs_of_a_comparison() {
     }
     // The collision rule matters: tokens only collide more than relay.
     assert!(rows[1]["metrics"]["collisions"].as_u64() > rows[0]["metrics"]["collisions"].as_u64());
+}
+
+#[path = "../../../tests/support/xlsx.rs"]
+mod xlsx;
+
+/// The output of a check that succeeded, as text.
+fn stdout(out: std::process::Output) -> String {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// A class of four, as a teacher has it in three forms: links one a line, a form's CSV export
+/// with answers over several lines, and the same export as a workbook. Each grades to the same
+/// rows, verdicts and points; the over-budget hand-in and the one with a click the exercise does
+/// not allow are marked as such.
+#[test]
+fn a_form_export_a_workbook_and_a_list_of_links_grade_the_same() {
+    let mut doc = presets::scenario("amas-L").unwrap().to_value();
+    doc["exercise"] = json!({
+        "title": "Build the L",
+        "locked": {"robots": 5, "seed": 1},
+        "goal": "completed and steps <= 250",
+        "credit": [{"goal": "completed", "points": 5}, {"goal": "metrics.collisions < 20", "points": 2}],
+        "budget": {"steps": 1000}
+    });
+    let teacher = Scenario::from_value(doc).unwrap();
+    let named = |s: &Scenario, name: &str| s.with_override("name", json!(name)).unwrap();
+    let fair = named(&teacher, "Ada");
+    // Stops before the L is built: no points for completing it, two for its few collisions.
+    let slow = named(
+        &teacher.with_override("max_steps", json!(100)).unwrap(),
+        "Grace",
+    );
+    let mut clicked = teacher.to_value();
+    clicked["disturbances"] = json!([{"at": 25, "kind": "remove", "cells": [144]}]);
+    let clicked = named(&Scenario::from_value(clicked).unwrap(), "Linus");
+    let mut huge = teacher.to_value();
+    huge["max_steps"] = json!(5000);
+    huge["target"] = json!("##############\n".repeat(40));
+    let huge = named(&Scenario::from_value(huge).unwrap(), "Hopper");
+    let class = [&fair, &slow, &clicked, &huge];
+    let links: Vec<String> = class
+        .iter()
+        .map(|s| format!("https://example.org/k/#{}", link::encode(s)))
+        .collect();
+    let names = ["Ada", "Grace", "Linus", "Hopper"];
+    let answers = [
+        "Fewer robots,\nfewer collisions.",
+        "I tried \"blackboard\"",
+        "One click\r\nhelped.",
+        "",
+    ];
+
+    let dir = std::env::temp_dir().join(format!("kumiki-forms-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let list = dir.join("links.txt");
+    std::fs::write(&list, links.join("\n")).unwrap();
+    let form = dir.join("form.csv");
+    let quoted = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
+    let mut csv = String::from("\u{feff}Timestamp,Name,Hand-in link,Why?\r\n");
+    for i in 0..4 {
+        csv.push_str(&format!(
+            "2026/11/28 10:1{i}:00,{},{},{}\r\n",
+            names[i],
+            links[i],
+            quoted(answers[i])
+        ));
+    }
+    std::fs::write(&form, csv).unwrap();
+    let book = dir.join("form.xlsx");
+    let mut rows = vec![vec![
+        xlsx::Cell::Text("Timestamp"),
+        xlsx::Cell::Text("Name"),
+        xlsx::Cell::Text("Hand-in link"),
+        xlsx::Cell::Text("Why?"),
+    ]];
+    for i in 0..4 {
+        rows.push(vec![
+            xlsx::Cell::Number(46_354.4 + i as f64 / 100.0),
+            xlsx::Cell::Text(names[i]),
+            xlsx::Cell::Text(&links[i]),
+            xlsx::Cell::Text(answers[i]),
+        ]);
+    }
+    std::fs::write(&book, xlsx::xlsx(&rows)).unwrap();
+
+    let original = format!("#{}", link::encode(&teacher));
+    let graded = |file: &std::path::Path| {
+        let out = kumiki(&[
+            "check",
+            "--file",
+            file.to_str().unwrap(),
+            "--exercise",
+            &original,
+            "--format",
+            "csv",
+        ]);
+        stdout(out)
+    };
+    let from_list = graded(&list);
+    let from_form = graded(&form);
+    let from_book = graded(&book);
+    assert_eq!(from_form, from_book, "the CSV export and the workbook");
+    // The list has no names column: the student column is empty, the rest the same.
+    let without_student = |text: &str| -> Vec<String> {
+        let mut reader = csv_cells(text);
+        for row in &mut reader {
+            row.remove(1);
+        }
+        reader.into_iter().map(|r| r.join("|")).collect()
+    };
+    assert_eq!(without_student(&from_list), without_student(&from_form));
+    let table = csv_cells(&from_form);
+    let head = &table[0];
+    let col = |name: &str| head.iter().position(|h| h == name).unwrap();
+    assert_eq!(table.len(), 5, "four hand-ins, one row each: {from_form}");
+    let column = |name: &str| {
+        table[1..]
+            .iter()
+            .map(|r| r[col(name)].as_str())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(column("student"), names);
+    assert_eq!(column("met"), ["true", "false", "false", "false"]);
+    assert_eq!(column("over_budget"), ["false", "false", "false", "true"]);
+    assert_eq!(column("points"), ["7", "2", "0", "0"]);
+    assert_eq!(column("max_points"), ["7", "7", "7", "7"]);
+    assert_eq!(
+        column("disturbances")[2],
+        "'remove' added at step 25 (the exercise allows none)"
+    );
+    assert!(column("because")[3].starts_with(
+        "over budget: the exercise replays a hand-in within its step budget of 1000 steps"
+    ));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Without the teacher's exercise, the class's is the one most hand-ins carry: a student who
+/// re-made the exercise (unlocked the seed, changed it) fails, and the check says which exercise
+/// it graded by.
+#[test]
+fn without_the_teachers_exercise_the_class_exercise_is_the_one_most_carry() {
+    let teacher = exercise();
+    let mut doc = teacher.to_value();
+    doc["exercise"]["locked"] = json!({"robots": 5, "seed": 1});
+    let teacher = Scenario::from_value(doc).unwrap();
+    let fair = teacher.with_override("collision", json!("relay")).unwrap();
+    let mut doc = teacher.to_value();
+    doc["exercise"]["locked"]
+        .as_object_mut()
+        .unwrap()
+        .remove("seed");
+    doc["seed"] = json!(3);
+    let remade = Scenario::from_value(doc).unwrap();
+    let links = [&fair, &remade, &teacher].map(|s| format!("#{}", link::encode(s)));
+    let out = kumiki(&["check", &links[0], &links[1], &links[2]]);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(
+        err.contains("graded by “Build the L”, which 2 of the 3 hand-ins with an exercise carry"),
+        "{err}"
+    );
+    let rows = json_rows(out);
+    assert_eq!(rows[0]["met"], true);
+    assert_eq!(rows[1]["met"], false);
+    assert_eq!(rows[1]["exercise_edited"], true);
+    assert!(rows[1]["because"]
+        .as_str()
+        .unwrap()
+        .starts_with("not replayed: its exercise is not the class's (locked.seed differs)"));
+}
+
+/// A file of another kind is refused with one message.
+#[test]
+fn a_file_that_is_no_export_is_refused_with_one_message() {
+    let dir = std::env::temp_dir().join(format!("kumiki-binary-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("photo.png");
+    std::fs::write(
+        &file,
+        [0x89, b'P', b'N', b'G', 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13],
+    )
+    .unwrap();
+    let out = kumiki(&["check", "--file", file.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains(kumiki_core::handins::NOT_HANDINS), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A CSV's records and cells (RFC 4180), for reading the check's own CSV back.
+fn csv_cells(text: &str) -> Vec<Vec<String>> {
+    let mut out = vec![Vec::new()];
+    let mut cell = String::new();
+    let mut quoted = false;
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (quoted, c) {
+            (true, '"') if chars.peek() == Some(&'"') => {
+                cell.push('"');
+                chars.next();
+            }
+            (true, '"') => quoted = false,
+            (true, c) => cell.push(c),
+            (false, '"') => quoted = true,
+            (false, ',') => out.last_mut().unwrap().push(std::mem::take(&mut cell)),
+            (false, '\n') => {
+                out.last_mut().unwrap().push(std::mem::take(&mut cell));
+                out.push(Vec::new());
+            }
+            (false, c) => cell.push(c),
+        }
+    }
+    out.pop();
+    out
 }

@@ -135,6 +135,38 @@ impl Draft {
         Ok(link::pack(doc))
     }
 
+    /// The hand-in link of the scenario in view: named `name`, with the hand-in's record
+    /// (`record`: when, how many checks and hints, the answer to the exercise's question), checked
+    /// as the scenario's `handin` section. The page gives the time: the core has no clock.
+    pub fn handin(&self, name: &str, record: Value) -> Result<String> {
+        let mut doc = self.document()?;
+        if doc.get("exercise").is_none() {
+            return Err(Error::field(
+                "exercise",
+                "the scenario in view is no exercise: there is nothing to hand in",
+            ));
+        }
+        crate::handin::Handin::from_value(record.clone()).map_err(|e| e.within("handin"))?;
+        set_path(&mut doc, "name", name.into())?;
+        set_path(&mut doc, "handin", record)?;
+        match self.checked() {
+            Some(_) => Ok(link::encode(&Scenario::from_value(doc)?)),
+            None => Ok(link::pack(doc)),
+        }
+    }
+
+    /// Why a click of the tool `label`, whose action is of `kind`, may not be made on the
+    /// scenario in view (its exercise allows no more of that kind), in words the page shows
+    /// where the click is made; `None` when it may (or when no exercise is in view). The
+    /// simulation worker refuses such a click anyway (`Playback::apply`); this lets the page show
+    /// the tool as locked before it is used.
+    pub fn click_problem(&self, kind: &str, label: &str) -> Option<String> {
+        let doc = self.document().ok()?;
+        let exercise: crate::exercise::Exercise =
+            serde_json::from_value(doc.get("exercise")?.clone()).ok()?;
+        exercise.click_problem(kind, label, crate::exercise::listed(&doc))
+    }
+
     /// The scenario in view's comparison. Its `compare` section was checked with the scenario, so
     /// nothing is checked again here: the second run's worker checks the second scenario as it
     /// opens it.
@@ -291,6 +323,34 @@ mod tests {
             assert_eq!(counts::builds() - builds, 1, "{name}");
             assert_eq!(run.scenario().seed, 7);
         }
+    }
+
+    /// The page asks before a click whether the exercise in view allows it, and hands in a link
+    /// that carries the hand-in's record.
+    #[test]
+    fn a_locked_click_is_known_before_it_is_made_and_a_hand_in_carries_its_record() {
+        let mut draft = opened("lesson-amas-heatmap");
+        assert_eq!(
+            draft.click_problem("dismantle", "Mark to be removed (6.2)").unwrap(),
+            "Mark to be removed (6.2) is locked by the exercise: it allows no 'dismantle' disturbance"
+        );
+        let record =
+            json!({"made": "2026-11-28T10:15:00Z", "checks": 2, "hints": 1, "answer": "A T."});
+        let link = draft.handin("Ada", record).unwrap();
+        let handin = crate::link::decode(&link).unwrap();
+        assert_eq!(handin.name, "Ada");
+        assert_eq!(handin.handin.unwrap().answer, "A T.");
+        assert!(draft
+            .handin("Ada", json!({"made": "now"}))
+            .unwrap_err()
+            .to_string()
+            .starts_with("handin.made:"));
+        draft = opened("amas-L");
+        assert_eq!(draft.click_problem("remove", "Remove module"), None);
+        assert!(
+            draft.handin("Ada", json!({})).is_err(),
+            "no exercise in view"
+        );
     }
 
     /// A refused edit says why, by field, and leaves the scenario in view as it was.

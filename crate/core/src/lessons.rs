@@ -17,6 +17,9 @@ use crate::scenario::Scenario;
 
 /// The key of a lesson file that holds its solution, beside the scenario's keys.
 const SOLUTION: &str = "solution";
+/// The keys of a lesson file beside the scenario's: its solution and the teacher's guide to it
+/// ([`crate::guide`]).
+const BESIDE: [&str; 2] = [SOLUTION, "guide"];
 
 /// Names of the built-in lessons, sorted.
 pub fn names() -> impl Iterator<Item = &'static str> {
@@ -29,14 +32,14 @@ pub fn json(name: &str) -> Result<&'static str> {
 }
 
 pub fn scenario(name: &str) -> Result<Scenario> {
-    let (doc, _) = file(name)?;
+    let doc = file(name)?;
     in_file("lesson", name, Scenario::from_value(Value::Object(doc)))
 }
 
 /// The edit lesson `name` is designed to be solved by, as dotted paths and their values (its
 /// file's `solution`): a student who makes it meets the goal.
 pub fn solution(name: &str) -> Result<Vec<(String, Value)>> {
-    match file(name)?.1 {
+    match part(name, SOLUTION)? {
         Some(Value::Object(edits)) if !edits.is_empty() => Ok(edits.into_iter().collect()),
         _ => Err(Error::field(
             SOLUTION,
@@ -47,17 +50,30 @@ pub fn solution(name: &str) -> Result<Vec<(String, Value)>> {
     }
 }
 
-/// A lesson file: the scenario's keys, and its solution apart.
-fn file(name: &str) -> Result<(Map<String, Value>, Option<Value>)> {
+/// The part `key` of lesson `name`'s file beside its scenario (its solution, its guide).
+pub fn part(name: &str, key: &str) -> Result<Option<Value>> {
+    Ok(document(name)?.remove(key))
+}
+
+/// A lesson's scenario keys, without what its file holds beside them.
+fn file(name: &str) -> Result<Map<String, Value>> {
+    let mut doc = document(name)?;
+    for key in BESIDE {
+        doc.remove(key);
+    }
+    Ok(doc)
+}
+
+/// A lesson file, as written.
+fn document(name: &str) -> Result<Map<String, Value>> {
     let doc: Value = serde_json::from_str(json(name)?).map_err(|e| Error::json(&e))?;
-    let Value::Object(mut doc) = doc else {
+    let Value::Object(doc) = doc else {
         return Err(Error::field(
             "",
             format!("lesson '{name}' is not a JSON object"),
         ));
     };
-    let solution = doc.remove(SOLUTION);
-    Ok((doc, solution))
+    Ok(doc)
 }
 
 /// What a list of lessons shows of one.
@@ -127,7 +143,7 @@ fn section(description: &str) -> Option<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grading::grade;
+    use crate::grading::{grade, Teacher};
 
     #[test]
     fn every_lesson_is_an_exercise_named_after_its_file_and_citing_its_section() {
@@ -184,22 +200,24 @@ mod tests {
     fn every_lesson_fails_as_given_and_is_met_by_its_solution() {
         for name in names() {
             let lesson = scenario(name).unwrap();
-            let given = grade(&lesson, None).unwrap();
+            let teacher = Teacher::given(&lesson).unwrap();
+            let given = grade(lesson.clone(), &teacher, &mut || 0.0).unwrap();
             assert!(
                 !given.met,
                 "{name}: the goal is met before any edit ({})",
                 given.because
             );
             assert!(
-                given.locked_edited.is_empty(),
-                "{name}: the unedited lesson breaks its own locks: {:?}",
-                given.locked_edited
+                given.locked_edited.is_empty() && given.disturbances.is_empty(),
+                "{name}: the unedited lesson breaks its own rules: {:?} {:?}",
+                given.locked_edited,
+                given.disturbances
             );
             let edits = solution(name).unwrap_or_else(|e| {
                 panic!("{e}: add the edit that solves it to the lesson's file")
             });
             let solved = lesson.with_overrides(&edits).unwrap();
-            let graded = grade(&solved, Some(&lesson)).unwrap();
+            let graded = grade(solved, &teacher, &mut || 0.0).unwrap();
             assert!(
                 graded.met,
                 "{name}: the intended solution does not meet the goal: {}",

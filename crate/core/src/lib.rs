@@ -30,6 +30,10 @@ pub mod exercise;
 pub mod experiment;
 pub mod export;
 pub mod grading;
+pub mod guide;
+pub mod handin;
+#[cfg(feature = "sheets")]
+pub mod handins;
 pub mod json;
 pub mod lessons;
 #[cfg(test)]

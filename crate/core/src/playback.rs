@@ -182,8 +182,12 @@ impl Playback {
     /// forks the run: what was clicked later is discarded, the scenario's own disturbances stay,
     /// and the timeline and the series end at the click. Tried on a copy, so a refused click
     /// changes nothing.
+    ///
+    /// In an exercise, a click the exercise does not allow (its kind not allowed, or all of its
+    /// kind used) is refused before anything happens, with the reason.
     pub fn apply(&mut self, action: Action) -> Result<()> {
         let now = self.run().steps();
+        self.allowed(&action, now)?;
         if now >= self.furthest {
             self.run_mut().apply_now(action)?;
         } else {
@@ -201,6 +205,37 @@ impl Playback {
         self.series.truncate(now);
         self.furthest = now;
         Ok(())
+    }
+}
+
+impl Playback {
+    /// Whether the exercise in view lets a student add `action` at step `now`: the disturbances
+    /// it would be added to are those before `now` and the scenario's own (a click in the past
+    /// drops the later ones).
+    fn allowed(&self, action: &Action, now: u64) -> Result<()> {
+        let scenario = self.run().scenario();
+        let Some(exercise) = &scenario.exercise else {
+            return Ok(());
+        };
+        let kind = action
+            .get("kind")
+            .and_then(serde_json::Value::as_str)
+            .unwrap_or_default();
+        let list: Vec<serde_json::Value> = scenario
+            .disturbances
+            .iter()
+            .filter(|d| d.at <= now || self.authored.contains(d))
+            .map(crate::scenario::Disturbance::to_value)
+            .collect();
+        let tools = self.run().model().layout().tools;
+        let label = tools
+            .iter()
+            .find(|t| t.action.get("kind").and_then(serde_json::Value::as_str) == Some(kind))
+            .map_or(kind, |t| t.label.as_str());
+        match exercise.click_problem(kind, label, &list) {
+            Some(why) => Err(crate::error::Error::field("", why)),
+            None => Ok(()),
+        }
     }
 }
 

@@ -188,14 +188,21 @@ mod tests {
 
     /// What the scenario reader takes as the envelope is the contract's list, which a model
     /// crate leaves out when it reads one of its own preset files: over the built-in scenarios
-    /// (one with disturbances, exercises, a comparison), the keys written beside the model's own
+    /// (one with disturbances, exercises, a comparison, and a hand-in), the keys written beside the model's own
     /// are exactly [`models::ENVELOPE`].
     #[test]
     fn the_envelope_is_the_contracts_list() {
         let mut beside = std::collections::BTreeSet::new();
+        // A hand-in of a lesson carries its record too.
+        let handin = crate::lessons::scenario("lesson-amas-robots").and_then(|s| {
+            let mut doc = s.to_value();
+            doc["handin"] = serde_json::json!({"checks": 1});
+            crate::Scenario::from_value(doc)
+        });
         for s in names()
             .map(scenario)
             .chain(crate::lessons::names().map(crate::lessons::scenario))
+            .chain([handin])
         {
             let s = s.unwrap();
             let Value::Object(doc) = s.to_value() else {

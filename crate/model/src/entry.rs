@@ -61,7 +61,8 @@ pub enum Role {
     Text,
     /// A setting of the run: a second run may vary it.
     Setting,
-    /// A section of its own: the scheduled disturbances, an exercise, a comparison.
+    /// A section of its own: the scheduled disturbances, an exercise, a comparison, a hand-in's
+    /// record.
     Section,
 }
 
@@ -88,6 +89,7 @@ pub const ENVELOPE: &[EnvelopeKey] = &[
     EnvelopeKey::new("disturbances", Role::Section),
     EnvelopeKey::new("exercise", Role::Section),
     EnvelopeKey::new("compare", Role::Section),
+    EnvelopeKey::new("handin", Role::Section),
 ];
 
 impl EnvelopeKey {

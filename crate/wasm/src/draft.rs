@@ -58,6 +58,20 @@ impl Draft {
         self.draft.link(name.as_deref()).map_err(js_err)
     }
 
+    /// The hand-in link of the scenario in view, named `name`, with its record (`record_json`:
+    /// `{"made": "2026-11-28T10:15:00Z", "checks": 3, "hints": 1, "answer": "…"}`, the page's
+    /// clock giving the time).
+    pub fn handin(&self, name: &str, record_json: &str) -> Result<String, JsError> {
+        let record = json::parse(record_json).map_err(js_err)?;
+        self.draft.handin(name, record).map_err(js_err)
+    }
+
+    /// Why a click of the tool `label` (its action's `kind`) may not be made on the scenario in
+    /// view, as the exercise says; undefined when it may.
+    pub fn click_problem(&self, kind: &str, label: &str) -> Option<String> {
+        self.draft.click_problem(kind, label)
+    }
+
     /// The scenario in view's `Comparison`.
     pub fn comparison(&self) -> Result<JsValue, JsError> {
         to_js(&self.draft.comparison().map_err(js_err)?)

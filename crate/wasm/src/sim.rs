@@ -225,22 +225,14 @@ impl Sim {
         self.run().scenario().to_json_pretty()
     }
 
-    /// The exercise's goal judged on the run as it stands: `{met, because}`, or undefined when
-    /// the scenario is no exercise.
+    /// The exercise's verdict on the run as it stands: `{met, because}` with its points (a
+    /// `Verdict`), or undefined when the scenario is no exercise. A scenario that broke a rule of
+    /// its exercise (a locked field, a disturbance it does not allow) is never "Goal met".
     pub fn check_goal(&self) -> Result<JsValue, JsError> {
-        let Some(exercise) = &self.run().scenario().exercise else {
-            return Ok(JsValue::UNDEFINED);
-        };
-        let outcome = self.run().outcome();
-        let doc = self.run().scenario().to_value();
-        let check = exercise.goal().check(&kumiki_core::exercise::Outcome {
-            completed: outcome.completed,
-            steps: outcome.steps,
-            metrics: &outcome.metrics,
-            scenario: &doc,
-        });
-        // A locked field away from the teacher's value is never "Goal met".
-        to_js(&grading::with_locks(check, exercise, &doc))
+        match grading::verdict(self.run()) {
+            Some(verdict) => to_js(&verdict),
+            None => Ok(JsValue::UNDEFINED),
+        }
     }
 }
 

@@ -1,9 +1,15 @@
 //! Classroom exercises: a scenario's `exercise` section (what a teacher asks, the fields students
-//! may not change, the goal a run must meet). The goal language is in [`goal`]; the grading of a
-//! hand-in against an exercise is in [`crate::grading`].
+//! may not change, the disturbances they may add, the goal a run must meet, the points its parts
+//! give, a question to answer in words and the budget a hand-in is replayed within). The goal
+//! language is in [`goal`], the disturbances' rule in [`allow`], the points in [`credit`]; the
+//! grading of a hand-in against an exercise is in [`crate::grading`].
 
+mod allow;
+mod credit;
 mod goal;
 
+pub use allow::{listed, Allowance, MAX_ALLOWED};
+pub use credit::{Credit, Part, Verdict, MAX_PARTS, MAX_POINTS};
 pub use goal::{Check, Goal, Outcome, MAX_GOAL_CHARS};
 
 use std::collections::BTreeMap;
@@ -18,6 +24,11 @@ pub const MAX_TITLE_CHARS: usize = 100;
 pub const MAX_INSTRUCTIONS_CHARS: usize = 10_000;
 pub const MAX_HINTS: usize = 10;
 pub const MAX_HINT_CHARS: usize = 1000;
+pub const MAX_QUESTION_CHARS: usize = 1000;
+
+/// The path of the scenario's disturbances. Locked, it keeps the teacher's disturbances (each one
+/// as it is); what students may add beside them is the exercise's `disturbances`.
+pub const DISTURBANCES: &str = "disturbances";
 
 /// A scenario's `exercise` section: what a teacher asks, which fields students may not change,
 /// and the goal a run must meet.
@@ -26,13 +37,20 @@ pub const MAX_HINT_CHARS: usize = 1000;
 /// "exercise": {
 ///   "title": "Fewer collisions",
 ///   "instructions": "Change the collision rule so that the L is built with *fewer* collisions.",
-///   "locked": { "robots": 10, "target": "..." },
+///   "locked": { "robots": 10, "target": "...", "disturbances": [] },
+///   "disturbances": { "remove": 3 },
 ///   "goal": "completed and metrics.collisions < 20",
+///   "credit": [{ "goal": "completed", "points": 5 }, { "goal": "metrics.collisions < 40", "points": 2 }],
+///   "question": "Why does the relay help?",
+///   "budget": { "steps": 100000 },
 ///   "hints": ["Section 4.2 compares three rules."]
 /// }
 /// ```
 /// `locked` maps dotted scenario paths to the teacher's values: the page shows those fields
-/// read-only, and `kumiki check` reports a hand-in whose values differ.
+/// read-only, and `kumiki check` reports a hand-in whose values differ. Every change a student
+/// can make is a field or a disturbance: a disturbance (a click of the page's tools, or one
+/// written into the scenario) beyond the teacher's is allowed only as `disturbances` says, by
+/// kind and count; none when it says nothing.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Exercise {
@@ -53,12 +71,72 @@ pub struct Exercise {
     #[serde(default)]
     #[schemars(length(max = MAX_HINTS), inner(length(max = MAX_HINT_CHARS)))]
     pub hints: Vec<String>,
+    /// The disturbances students may add beside the teacher's, by the model's action kind
+    /// (`remove`, `extend`, `fault`, ...), with how many of each: `{"remove": 3}` allows at most
+    /// three "Remove module" clicks and nothing else. Left out or empty, none may be added.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    #[schemars(extend("additionalProperties" = {"type": "integer", "minimum": 0, "maximum": MAX_ALLOWED}))]
+    pub disturbances: Allowance,
+    /// Points for parts of the outcome, each a goal of its own: a hand-in earns the points of
+    /// every part it meets, whether or not it meets the whole goal.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[schemars(length(max = MAX_PARTS))]
+    pub credit: Vec<Part>,
+    /// A question the student answers in words, handed in with the link and shown to the
+    /// teacher; it is not graded.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    #[schemars(length(max = MAX_QUESTION_CHARS))]
+    pub question: String,
+    /// How long a hand-in may take to replay: a run not ended within it is stopped and marked
+    /// "over budget" (`kumiki check` and the page's grading alike).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub budget: Option<Budget>,
 }
+
+/// The most a hand-in's replay may take: steps (the same on every machine) or seconds of the
+/// grading machine's time, or both (whichever comes first).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Budget {
+    /// Steps: a run that has not ended after this many is stopped.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(range(min = 1, max = crate::scenario::MAX_STEPS))]
+    pub steps: Option<u64>,
+    /// Seconds of replay on the machine that grades (building the run included).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schemars(range(min = 0.001, max = MAX_BUDGET_SECONDS))]
+    pub seconds: Option<f64>,
+}
+
+/// The longest time budget, in seconds: an hour.
+pub const MAX_BUDGET_SECONDS: f64 = 3600.0;
 
 impl Exercise {
     /// Reads and checks an exercise section; `doc` is the whole scenario, in which every locked
     /// path must name a field.
     pub fn from_value(value: Value, doc: &Value) -> Result<Exercise> {
+        let mut exercise = Exercise::checked(value)?;
+        // The teacher's disturbances are always kept: an exercise that does not lock them keeps
+        // those of the scenario it is read with (an exercise made before disturbances could be
+        // locked, or one written by hand), and writes them back locked.
+        exercise
+            .locked
+            .entry(DISTURBANCES.to_string())
+            .or_insert_with(|| Value::Array(allow::listed(doc).to_vec()));
+        for path in exercise.locked.keys() {
+            if path != DISTURBANCES && lookup_path(doc, path).is_none() {
+                return Err(Error::field(
+                    format!("locked.{path}"),
+                    "no such field in this scenario",
+                ));
+            }
+        }
+        Ok(exercise)
+    }
+
+    /// Reads and checks an exercise section on its own: its texts, goal, credit, budget and what
+    /// it allows and locks, but not whether its locked paths name fields of a scenario.
+    pub fn checked(value: Value) -> Result<Exercise> {
         let exercise: Exercise = crate::error::from_value(value)?;
         let long = |path: &str, text: &str, max: usize| {
             let n = text.chars().count();
@@ -88,18 +166,28 @@ impl Exercise {
         for (i, hint) in exercise.hints.iter().enumerate() {
             long(&format!("hints[{i}]"), hint, MAX_HINT_CHARS)?;
         }
+        long("question", &exercise.question, MAX_QUESTION_CHARS)?;
         Goal::parse(&exercise.goal).map_err(|e| e.within("goal"))?;
+        allow::check(&exercise.disturbances)?;
+        credit::check(&exercise.credit)?;
+        if let Some(budget) = &exercise.budget {
+            check_budget(budget).map_err(|e| e.within("budget"))?;
+        }
+        if exercise
+            .locked
+            .get(DISTURBANCES)
+            .is_some_and(|v| !v.is_array())
+        {
+            return Err(Error::field(
+                format!("locked.{DISTURBANCES}"),
+                "the teacher's disturbances are a list, as the scenario's `disturbances`",
+            ));
+        }
         for path in exercise.locked.keys() {
             if path == "exercise" || path.starts_with("exercise.") {
                 return Err(Error::field(
                     format!("locked.{path}"),
                     "the exercise itself cannot be locked; it is never editable by students",
-                ));
-            }
-            if lookup_path(doc, path).is_none() {
-                return Err(Error::field(
-                    format!("locked.{path}"),
-                    "no such field in this scenario",
                 ));
             }
         }
@@ -112,14 +200,42 @@ impl Exercise {
     }
 
     /// The locked fields whose value in `doc` is not the teacher's: (path, teacher's, found).
+    /// The locked disturbances are not among them: they are kept by [`Exercise::disturbance_problems`],
+    /// with what students may add beside them.
     pub fn locked_changes(&self, doc: &Value) -> Vec<(String, Value, Value)> {
         self.locked
             .iter()
+            .filter(|(path, _)| path.as_str() != DISTURBANCES)
             .filter_map(|(path, want)| {
                 let got = lookup_path(doc, path).cloned().unwrap_or(Value::Null);
                 (!same(&got, want)).then(|| (path.clone(), want.clone(), got))
             })
             .collect()
+    }
+}
+
+/// A budget with at least one bound, each within its range.
+fn check_budget(budget: &Budget) -> Result<()> {
+    match (budget.steps, budget.seconds) {
+        (None, None) => Err(Error::field(
+            "",
+            "give 'steps', 'seconds' or both: the most a hand-in's replay may take",
+        )),
+        (Some(0), _) => Err(Error::field("steps", "must be at least 1")),
+        (Some(n), _) if n > crate::scenario::MAX_STEPS => Err(Error::field(
+            "steps",
+            format!(
+                "{n} is larger than the limit {}",
+                crate::scenario::MAX_STEPS
+            ),
+        )),
+        (_, Some(s)) if !(s.is_finite() && (0.001..=MAX_BUDGET_SECONDS).contains(&s)) => {
+            Err(Error::field(
+                "seconds",
+                format!("must be a number of seconds from 0.001 to {MAX_BUDGET_SECONDS}"),
+            ))
+        }
+        _ => Ok(()),
     }
 }
 

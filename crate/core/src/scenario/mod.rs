@@ -25,6 +25,7 @@ use serde_json::{Map, Value};
 use crate::compare::Compare;
 use crate::error::{Error, Result};
 use crate::exercise::Exercise;
+use crate::handin::Handin;
 use crate::limits::Limits;
 use crate::models::{self, Action, Model, ModelSpec};
 pub use kumiki_model::entry::{envelope_role, EnvelopeKey, Role, ENVELOPE};
@@ -49,6 +50,15 @@ pub struct Disturbance {
     pub action: Action,
 }
 
+impl Disturbance {
+    /// The disturbance as the scenario writes it: its action with its step `at`.
+    pub fn to_value(&self) -> Value {
+        let mut m = self.action.clone();
+        m.insert("at".into(), self.at.into());
+        Value::Object(m)
+    }
+}
+
 /// A read and validated scenario: the envelope and the model's typed description.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scenario {
@@ -61,6 +71,9 @@ pub struct Scenario {
     pub exercise: Option<Exercise>,
     /// A second run to show beside this one, differing in one setting (see [`crate::compare`]).
     pub compare: Option<Compare>,
+    /// A hand-in's record of itself: when, how many checks and hints, an answer (see
+    /// [`crate::handin`]).
+    pub handin: Option<Handin>,
     /// The model's own keys, read into its typed description.
     pub spec: ModelSpec,
     /// The size limits it was read under; its overrides and its run are held to them too.
@@ -107,6 +120,10 @@ impl Scenario {
         let disturbances = take_disturbances(&mut map)?;
         let exercise = map.remove("exercise");
         let compare = map.remove("compare");
+        let handin = map
+            .remove("handin")
+            .map(|v| Handin::from_value(v).map_err(|e| e.within("handin")))
+            .transpose()?;
         if max_steps == 0 {
             return Err(Error::field("max_steps", "must be at least 1"));
         }
@@ -119,6 +136,7 @@ impl Scenario {
             disturbances,
             exercise: None,
             compare: None,
+            handin,
             spec,
             limits,
         };
@@ -176,11 +194,7 @@ impl Scenario {
             let list = self
                 .disturbances
                 .iter()
-                .map(|d| {
-                    let mut m = d.action.clone();
-                    m.insert("at".into(), d.at.into());
-                    Value::Object(m)
-                })
+                .map(Disturbance::to_value)
                 .collect();
             map.insert("disturbances".into(), Value::Array(list));
         }
@@ -194,6 +208,12 @@ impl Scenario {
             map.insert(
                 "compare".into(),
                 serde_json::to_value(compare).expect("a comparison serialises"),
+            );
+        }
+        if let Some(handin) = &self.handin {
+            map.insert(
+                "handin".into(),
+                serde_json::to_value(handin).expect("a hand-in record serialises"),
             );
         }
         canonical(Value::Object(map))
@@ -217,7 +237,8 @@ impl Scenario {
     }
 
     /// The second run of a comparison: this scenario with the `compare` section's setting
-    /// changed, without that section and without the exercise (the exercise is the first run's).
+    /// changed, without that section, the exercise and the hand-in's record (both are the first
+    /// run's).
     /// `None` when the scenario compares nothing.
     pub fn compared(&self) -> Result<Option<Scenario>> {
         let Some(compare) = &self.compare else {
@@ -227,6 +248,7 @@ impl Scenario {
         if let Value::Object(map) = &mut doc {
             map.remove("compare");
             map.remove("exercise");
+            map.remove("handin");
         }
         set_path(&mut doc, &compare.path, compare.value.clone())?;
         Scenario::from_value_within(doc, self.limits).map(Some)

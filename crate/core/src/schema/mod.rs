@@ -34,6 +34,9 @@ pub fn scenario() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     let exercise = generator.subschema_for::<Exercise>().to_value();
     let compare = generator.subschema_for::<Compare>().to_value();
+    let handin = generator
+        .subschema_for::<crate::handin::Handin>()
+        .to_value();
     let specs: Vec<(Value, Value)> = MODELS
         .iter()
         .map(|m| {
@@ -53,8 +56,7 @@ pub fn scenario() -> Value {
             entry.name,
             entry.title,
             entry.default_max_steps,
-            &exercise,
-            &compare,
+            [&exercise, &compare, &handin],
             &disturbance,
         );
         if let Some(Value::Object(own)) = body.remove("properties") {
@@ -93,8 +95,7 @@ fn envelope(
     model: &str,
     title: &str,
     default_max_steps: u64,
-    exercise: &Value,
-    compare: &Value,
+    [exercise, compare, handin]: [&Value; 3],
     disturbance: &Value,
 ) -> Map<String, Value> {
     let properties = json!({
@@ -126,6 +127,7 @@ fn envelope(
         },
         "exercise": exercise,
         "compare": compare,
+        "handin": handin,
     });
     match properties {
         Value::Object(map) => map,
@@ -327,7 +329,12 @@ pub fn contract() -> Value {
     generator.subschema_for::<MetricInfo>();
     generator.subschema_for::<Facts>();
     generator.subschema_for::<crate::exercise::Check>();
+    generator.subschema_for::<crate::exercise::Verdict>();
     generator.subschema_for::<crate::grading::Graded>();
+    generator.subschema_for::<crate::grading::table::Row>();
+    generator.subschema_for::<crate::grading::ClassExercise>();
+    #[cfg(feature = "sheets")]
+    generator.subschema_for::<crate::handins::Handin>();
     generator.subschema_for::<crate::scenario::EnvelopeKey>();
     generator.subschema_for::<crate::draft::Proposal>();
     generator.subschema_for::<crate::draft::Comparison>();
@@ -370,6 +377,7 @@ pub fn spliced() -> crate::error::Result<Vec<(&'static str, &'static str, String
         ),
         ("README.md", "models", pages::models_markdown()?),
         ("docs/teaching.md", "lessons", crate::lessons::markdown()?),
+        ("docs/teaching.md", "guide", crate::guide::markdown()?),
     ])
 }
 
@@ -484,8 +492,8 @@ mod tests {
     /// The envelope's table names exactly the keys the envelope's schema has.
     #[test]
     fn the_envelope_table_is_the_envelopes_keys() {
-        let (exercise, compare, disturbance) = (json!({}), json!({}), json!({}));
-        let schema = envelope("amas", "", 1, &exercise, &compare, &disturbance);
+        let (exercise, compare, handin, disturbance) = (json!({}), json!({}), json!({}), json!({}));
+        let schema = envelope("amas", "", 1, [&exercise, &compare, &handin], &disturbance);
         let mut keys: Vec<&str> = schema.keys().map(String::as_str).collect();
         let mut table: Vec<&str> = crate::scenario::ENVELOPE.iter().map(|k| k.key).collect();
         keys.sort_unstable();
