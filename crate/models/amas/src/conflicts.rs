@@ -1,6 +1,8 @@
 //! Step phase 2, conflicts (4.6): which moves go ahead, module relay (4.6.1), and the
 //! collision penalty of the robots that must wait.
 
+use super::collision::{self, Conflict, Outcome};
+use super::spec::GiveWay;
 use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
     VISITING,
@@ -66,8 +68,18 @@ impl Amas {
         }
     }
 
-    pub(super) fn collide(&mut self, r: usize, at: u32) {
+    /// Robot `r` pays the collision penalty for wanting cell `at`, where robot `other` stood
+    /// in its way or claimed the cell first; `give_way` it steps aside at its next plan.
+    pub(super) fn collide(&mut self, r: usize, at: u32, other: Option<usize>, give_way: bool) {
         self.collisions += 1;
+        // Appendix A.1: which kinds of robot meet, as they were when they planned (a relay
+        // this step has already swapped the other's load).
+        let loaded = self.robots[r].loaded;
+        match other.map(|o| self.robots[o].loaded ^ self.relaying[o]) {
+            Some(l) if l != loaded => self.mixed_collisions += 1,
+            _ if loaded => self.loaded_collisions += 1,
+            _ => self.unloaded_collisions += 1,
+        }
         *self.collision_cells.entry(at).or_insert(0) += 1;
         let row = at / self.w as u32;
         if row == self.corner_row || row == self.corner_row + 1 {
@@ -77,12 +89,62 @@ impl Amas {
         } else if row as usize >= self.supply_top {
             self.supply_collisions += 1;
         }
-        self.robots[r].give_way = true;
+        self.robots[r].give_way = give_way;
         self.robots[r].busy = self.p.penalty - 1;
         self.events.push(Event {
             cell: at,
             kind: EV_COLLISION,
         });
+    }
+
+    /// The robot that claimed cell `t` this step: it stands next to `t` (every plan takes a
+    /// neighbouring cell) and its plan holds the claim.
+    fn claimant(&self, t: u32, r: usize) -> Option<usize> {
+        let (nb, k) = self.neighbours(t as usize);
+        nb[..k].iter().find_map(|&j| {
+            let q = self.occupant[j] as usize;
+            let holds = q != r
+                && self.occupant[j] != NONE
+                && matches!(self.plans[q], Plan::Move(x) | Plan::Place(x) | Plan::Remove(x) if x == t);
+            holds.then_some(q)
+        })
+    }
+
+    /// The cell robot `q` wants this step, if it wants to move.
+    fn wants(&self, q: usize) -> Option<u32> {
+        match self.plans[q] {
+            Plan::Move(x) | Plan::Blocked(x) => Some(x),
+            _ => None,
+        }
+    }
+
+    /// Whether robot `r`, which wants the module robot `o` stands on, is locked with it: `o`
+    /// wants `r`'s module (head-on), or, where only locked robots give way, `o` wants a module
+    /// whose robot wants another, and so on round a ring back to `r`. A robot busy relaying
+    /// is in no lock.
+    fn locked(&self, r: usize, o: usize) -> bool {
+        let here = self.robots[r].cell;
+        if self.wants(o) == Some(here) && !self.relaying[o] {
+            return true;
+        }
+        if self.p.give_way == GiveWay::EveryLoser {
+            return false;
+        }
+        // Round a ring.
+        let mut q = o;
+        for _ in 0..self.robots.len() {
+            let Some(x) = self.wants(q).filter(|_| !self.relaying[q]) else {
+                return false;
+            };
+            if x == here {
+                return true;
+            }
+            match self.occupant[x as usize] {
+                NONE => return false,
+                next => q = next as usize,
+            }
+        }
+        false
     }
 
     /// Token and relay rules: decides which moves go ahead, then hands modules over (relay)
@@ -135,8 +197,35 @@ impl Amas {
                 }
             }
         }
-        for k in 0..n {
+        self.find_losers();
+        for k in 0..self.losers.len() {
+            let (r, t, conflict) = self.losers[k];
+            let r = r as usize;
+            let conflict = match conflict {
+                Conflict::Occupied { .. } => Conflict::Occupied {
+                    ahead_gives_way: self.queued_on_yielding(t),
+                },
+                other => other,
+            };
+            let other = match self.plans[r] {
+                Plan::Blocked(_) => self.claimant(t, r),
+                _ => Some(self.occupant[t as usize] as usize),
+            };
+            match collision::outcome(conflict, self.p.give_way) {
+                Outcome::Keeps => {}
+                Outcome::Waits => self.collide(r, t, other, false),
+                Outcome::GivesWay => self.collide(r, t, other, true),
+            }
+        }
+    }
+
+    /// The robots that could not do what they planned, in planning order, with the cell each
+    /// wanted and why it could not have it; `yielding` marks the smaller tokens of locks.
+    fn find_losers(&mut self) {
+        self.losers.clear();
+        for k in 0..self.robots.len() {
             let r = self.order[k] as usize;
+            self.yielding[r] = false;
             if self.relaying[r] {
                 continue;
             }
@@ -146,21 +235,42 @@ impl Amas {
                 _ => continue,
             };
             let o = self.occupant[t as usize];
-            if o == NONE {
-                // Lost the claim on a free module to a larger token.
-                self.collide(r, t);
-                continue;
-            }
-            let o = o as usize;
-            let here = self.robots[r].cell;
-            // Head-on: the robot ahead wants this robot's module.
-            let head_on = matches!(self.plans[o], Plan::Move(x) | Plan::Blocked(x) if x == here)
-                && !self.relaying[o];
-            if head_on && self.position[o] > self.position[r] {
-                // The larger token keeps its priority and waits for the other to step aside.
-                continue;
-            }
-            self.collide(r, t);
+            let conflict = match o {
+                // Lost the claim on a free cell to a larger token.
+                NONE => Conflict::Claimed,
+                o if self.locked(r, o as usize) => Conflict::Locked {
+                    ahead_larger: self.position[o as usize] < self.position[r],
+                },
+                _ => Conflict::Occupied {
+                    ahead_gives_way: false,
+                },
+            };
+            self.yielding[r] = conflict == Conflict::Locked { ahead_larger: true };
+            self.losers.push((r as u32, t, conflict));
         }
+    }
+
+    /// Whether the robot on cell `t` gives way as the smaller token of a lock, or waits,
+    /// directly or through others, on one that does (only where locked robots alone give way).
+    fn queued_on_yielding(&self, t: u32) -> bool {
+        if self.p.give_way == GiveWay::EveryLoser {
+            return false;
+        }
+        let mut q = self.occupant[t as usize];
+        for _ in 0..self.robots.len() {
+            if q == NONE {
+                return false;
+            }
+            let r = q as usize;
+            if self.yielding[r] {
+                return true;
+            }
+            let waits = self.status[r] != MOVES && !self.relaying[r];
+            match self.wants(r).filter(|_| waits) {
+                Some(x) => q = self.occupant[x as usize],
+                None => return false,
+            }
+        }
+        false
     }
 }

@@ -112,6 +112,8 @@ impl Amas {
             position: vec![0; robots_n],
             claimed: Vec::new(),
             chain: Vec::new(),
+            losers: Vec::new(),
+            yielding: vec![false; robots_n],
             rng: Rng::new(seed),
             disturb_rng: Rng::stream(seed, STREAM_DISTURBANCE),
             releasable: vec![0; n.div_ceil(64)],
@@ -141,6 +143,9 @@ impl Amas {
             corner_collisions: 0,
             above_corner_collisions: 0,
             supply_collisions: 0,
+            mixed_collisions: 0,
+            loaded_collisions: 0,
+            unloaded_collisions: 0,
             wandering: 0,
             events: Vec::new(),
         };

@@ -62,7 +62,10 @@ fn turns_take_time_and_radius_two_communication_builds() {
 
 #[test]
 fn loaded_robots_fill_sites_beside_broken_modules() {
-    // Every built module breaks at step 6: no module announces the growth front any more.
+    // Every built module breaks at step 6: no module announces the growth front any more. A
+    // loaded robot that plans on a broken module beside a vacant site fills it, unless a larger
+    // token claimed the site first.
+    let mut filled = 0;
     for seed in 1..6 {
         let mut m = model(json!({"robots": 3, "seed": seed, "field": "discrete"}));
         for _ in 0..6 {
@@ -70,9 +73,37 @@ fn loaded_robots_fill_sites_beside_broken_modules() {
         }
         m.apply(&action(json!({"kind": "break", "count": 1000})))
             .unwrap();
-        run_to_end(&mut m, 200000);
-        assert!(m.completed(), "seed {seed}: {:?}", m.metrics());
+        while !m.completed() && m.steps < 5000 {
+            let beside: Vec<usize> = (0..m.robots.len())
+                .filter(|&r| {
+                    let rb = m.robots[r];
+                    let (nb, k) = m.neighbours(rb.cell as usize);
+                    rb.loaded
+                        && rb.busy == 0
+                        && !rb.give_way
+                        && m.state[rb.cell as usize] & state::BROKEN != 0
+                        && nb[..k].iter().any(|&j| m.state[j] & VACANT != 0)
+                })
+                .collect();
+            m.step();
+            for r in beside {
+                match m.plans[r] {
+                    Plan::Place(_) => {
+                        assert!(
+                            !m.robots[r].loaded,
+                            "seed {seed}: robot {r} kept its module"
+                        );
+                        filled += 1;
+                    }
+                    plan => assert!(matches!(plan, Plan::Blocked(_)), "seed {seed}: {plan:?}"),
+                }
+            }
+        }
     }
+    assert!(
+        filled > 0,
+        "no loaded robot stood on a broken module beside a site"
+    );
 }
 
 #[test]
@@ -86,4 +117,35 @@ fn same_seed_same_run_other_seed_other_run() {
     };
     assert_eq!(out(9), out(9));
     assert_ne!(out(9).hash, out(10).hash);
+}
+
+/// Links made before model version 3 pin the per-robot draw and every loser giving way
+/// (`ENTRY.pins`), so every AMAS link of the fixture replays to the state it reached when it
+/// was made.
+#[test]
+fn links_of_earlier_versions_replay_as_they_did() {
+    let text = include_str!("../../../../../tests/fixtures/links.json");
+    let links: Vec<Value> = serde_json::from_str(text).unwrap();
+    let mut checked = 0;
+    for entry in links.iter().filter(|e| e["model"] == "amas") {
+        let opened = kumiki_core::link::open(entry["link"].as_str().unwrap()).unwrap();
+        assert!(opened.made_with < 3, "{}", entry["preset"]);
+        assert_eq!(opened.scenario.body()["direction"], json!("robot"));
+        assert_eq!(opened.scenario.body()["give_way"], json!("every_loser"));
+        let mut run = Run::new(opened.scenario).unwrap();
+        run.advance(entry["steps"].as_u64().unwrap());
+        assert_eq!(
+            kumiki_core::hash::hex(run.state_hash()),
+            entry["hash"].as_str().unwrap(),
+            "{}",
+            entry["preset"]
+        );
+        checked += 1;
+    }
+    assert!(checked >= 12, "{checked} AMAS links");
+    // A link made now opens with this version's readings.
+    let now = kumiki_core::link::encode(&kumiki_core::presets::scenario("amas-L").unwrap());
+    let opened = kumiki_core::link::open(&now).unwrap();
+    assert_eq!(opened.scenario.body()["direction"], json!("module"));
+    assert_eq!(opened.scenario.body()["give_way"], json!("locked"));
 }
