@@ -90,6 +90,7 @@ impl Amas {
             self.supply_collisions += 1;
         }
         self.robots[r].give_way = give_way;
+        self.robots[r].waiting_for = at;
         self.robots[r].busy = self.p.penalty - 1;
         self.events.push(Event {
             cell: at,
@@ -110,10 +111,14 @@ impl Amas {
         })
     }
 
-    /// The cell robot `q` wants this step, if it wants to move.
+    /// The cell robot `q` wants this step, if it wants to move; where locked robots alone give
+    /// way, a robot paying a collision penalty still wants the cell it collided over.
     fn wants(&self, q: usize) -> Option<u32> {
         match self.plans[q] {
             Plan::Move(x) | Plan::Blocked(x) => Some(x),
+            Plan::Busy if self.p.give_way == GiveWay::Locked => {
+                Some(self.robots[q].waiting_for).filter(|&x| x != NONE)
+            }
             _ => None,
         }
     }
@@ -207,6 +212,7 @@ impl Amas {
                 },
                 other => other,
             };
+            self.losers[k].2 = conflict;
             let other = match self.plans[r] {
                 Plan::Blocked(_) => self.claimant(t, r),
                 _ => Some(self.occupant[t as usize] as usize),
@@ -220,12 +226,13 @@ impl Amas {
     }
 
     /// The robots that could not do what they planned, in planning order, with the cell each
-    /// wanted and why it could not have it; `yielding` marks the smaller tokens of locks.
+    /// wanted and why it could not have it; `yielding` marks the robots that give way: the
+    /// smaller tokens of locks, and those still paying the penalty before they do.
     fn find_losers(&mut self) {
         self.losers.clear();
         for k in 0..self.robots.len() {
             let r = self.order[k] as usize;
-            self.yielding[r] = false;
+            self.yielding[r] = self.plans[r] == Plan::Busy && self.robots[r].give_way;
             if self.relaying[r] {
                 continue;
             }

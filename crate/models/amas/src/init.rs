@@ -82,6 +82,7 @@ impl Amas {
                     loaded: false,
                     busy: 0,
                     give_way: false,
+                    waiting_for: NONE,
                     lost: false,
                     top: (cell / w) as u32,
                     placed_past_corner: false,

@@ -84,6 +84,9 @@ struct Robot {
     busy: u32,
     /// Gives way: avoids occupied modules at its next plan (4.6; see [`collision`]).
     give_way: bool,
+    /// The cell it wanted when it last collided, while it pays the penalty ([`NONE`] once it
+    /// plans again): a lock holds a robot waiting out a longer penalty too.
+    waiting_for: u32,
     /// Moved at random at its last plan: no effective gradient (footnote 3).
     lost: bool,
     /// The highest row (smallest y) it has stood on.
@@ -316,6 +319,10 @@ impl Model for Amas {
             h.bool(r.loaded);
             h.u32(r.busy);
             h.bool(r.give_way);
+            // Only locks read it, and only where locked robots alone give way.
+            if self.p.give_way == GiveWay::Locked {
+                h.u32(r.waiting_for);
+            }
             // The heading only matters, and only enters the hash, when turns take time.
             if self.p.turn_d > 0 {
                 h.u8(r.heading);

@@ -160,6 +160,7 @@ impl Amas {
         let s = self.state[i];
         let board = self.p.collision == Collision::Blackboard;
         self.robots[r].lost = false;
+        self.robots[r].waiting_for = NONE;
         if rb.give_way {
             self.robots[r].give_way = false;
             if let Some(c) = self.give_way(i, rb.loaded) {

@@ -149,3 +149,73 @@ fn links_of_earlier_versions_replay_as_they_did() {
     assert_eq!(opened.scenario.body()["direction"], json!("module"));
     assert_eq!(opened.scenario.body()["give_way"], json!("locked"));
 }
+
+/// The L of figure 23 standing on its stem.
+const STEM: &str = "######\n######\n##....\n##....\n##....\n";
+
+/// Footnote 3: where the field shows a gradient, the module's display decides the way, not the
+/// robot's random stream; with the per-robot draw the stream decides among equal neighbours.
+#[test]
+fn the_module_shows_every_robot_the_same_way() {
+    let mut differs = 0;
+    for direction in ["module", "robot"] {
+        let mut m = model(json!({"target": STEM, "robots": 4, "field": "discrete",
+            "direction": direction}));
+        for step in 0..60 {
+            m.step();
+            for r in 0..m.robots.len() {
+                let i = m.robots[r].cell as usize;
+                if m.state[i] & state::ACTIVE_MASK != MODULE {
+                    continue;
+                }
+                let loaded = m.robots[r].loaded;
+                let mut other = m.clone();
+                other.rng = kumiki_model::rng::Rng::new(1000 + step);
+                let (a, b) = (
+                    m.follow(r, i, loaded, false),
+                    other.follow(r, i, loaded, false),
+                );
+                let wandered = m.robots[r].lost;
+                match direction {
+                    "module" if !wandered => assert_eq!(a, b, "step {step}, robot {r}"),
+                    _ => differs += usize::from(a != b),
+                }
+            }
+        }
+    }
+    assert!(differs > 0, "the per-robot draw never chose otherwise");
+}
+
+/// Only the robots a lock holds give way: figure 23's L on its stem, with the discrete field and
+/// the token rule, finishes although its robots meet head-on at the corner, and with a penalty
+/// of several steps too.
+#[test]
+fn locks_are_resolved_and_other_losers_wait() {
+    let mut waited = 0;
+    for (seed, penalty) in [(1, 1), (2, 1), (3, 3)] {
+        let mut m = model(
+            json!({"target": STEM, "robots": 6, "seed": seed, "field": "discrete",
+            "collision": "token", "collision_penalty": penalty}),
+        );
+        while !m.completed() && m.steps < 20000 {
+            m.step();
+            for &(r, _, conflict) in &m.losers {
+                let r = r as usize;
+                match collision::outcome(conflict, m.p.give_way) {
+                    collision::Outcome::Waits => {
+                        assert!(!m.robots[r].give_way);
+                        waited += 1;
+                    }
+                    collision::Outcome::GivesWay => assert!(m.robots[r].give_way),
+                    collision::Outcome::Keeps => assert_eq!(m.robots[r].busy, 0),
+                }
+            }
+        }
+        assert!(
+            m.completed(),
+            "seed {seed}, penalty {penalty}: {:?}",
+            m.metrics()
+        );
+    }
+    assert!(waited > 0, "no loser waited");
+}
