@@ -125,8 +125,8 @@ impl Amas {
 
     /// Whether robot `r`, which wants the module robot `o` stands on, is locked with it: `o`
     /// wants `r`'s module (head-on), or, where only locked robots give way, `o` wants a module
-    /// whose robot wants another, and so on round a ring back to `r`. A robot busy relaying
-    /// is in no lock.
+    /// whose robot wants another, and so on round a ring back to `r`. A robot that moves this
+    /// step, or is busy relaying, is in no ring.
     fn locked(&self, r: usize, o: usize) -> bool {
         let here = self.robots[r].cell;
         if self.wants(o) == Some(here) && !self.relaying[o] {
@@ -135,10 +135,11 @@ impl Amas {
         if self.p.give_way == GiveWay::EveryLoser {
             return false;
         }
-        // Round a ring.
+        // Round a ring of robots that all wait.
         let mut q = o;
         for _ in 0..self.robots.len() {
-            let Some(x) = self.wants(q).filter(|_| !self.relaying[q]) else {
+            let waits = self.status[q] != MOVES && !self.relaying[q];
+            let Some(x) = self.wants(q).filter(|_| waits) else {
                 return false;
             };
             if x == here {
