@@ -7,6 +7,16 @@ use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
     VISITING,
 };
+
+/// Bits of a robot's `lock` byte within a step's conflicts: on the path being followed, seen,
+/// on a ring ([`Amas::mark_rings`]); on the queue being followed, its queue's answer known, and
+/// that answer: it waits on a robot that gives way ([`Amas::queued_on_yielding`]).
+const ON_PATH: u8 = 1;
+const SEEN: u8 = 2;
+const RING: u8 = 4;
+const ON_QUEUE: u8 = 8;
+const QUEUED: u8 = 16;
+const BEHIND: u8 = 32;
 use kumiki_model::model::Event;
 
 impl Amas {
@@ -124,33 +134,48 @@ impl Amas {
     }
 
     /// Whether robot `r`, which wants the module robot `o` stands on, is locked with it: `o`
-    /// wants `r`'s module (head-on), or, where only locked robots give way, `o` wants a module
-    /// whose robot wants another, and so on round a ring back to `r`. A robot that moves this
-    /// step, or is busy relaying, is in no ring.
+    /// wants `r`'s module (head-on), or, where only locked robots give way, `r` lies on a ring of
+    /// waiting robots each wanting the next one's module ([`Amas::mark_rings`]). A robot busy
+    /// relaying is in no lock.
     fn locked(&self, r: usize, o: usize) -> bool {
         let here = self.robots[r].cell;
         if self.wants(o) == Some(here) && !self.relaying[o] {
             return true;
         }
-        if self.p.give_way == GiveWay::EveryLoser {
-            return false;
-        }
-        // Round a ring of robots that all wait.
-        let mut q = o;
-        for _ in 0..self.robots.len() {
+        self.p.give_way == GiveWay::Locked && self.lock[r] & RING != 0
+    }
+
+    /// The robot each robot waits on this step (`ahead`: the one on the module it wants, where
+    /// it does not move and is not relaying), and which robots lie on a ring of them: every
+    /// robot follows its one successor until it meets a robot already seen, once for all.
+    fn mark_rings(&mut self) {
+        let n = self.robots.len();
+        for q in 0..n {
             let waits = self.status[q] != MOVES && !self.relaying[q];
-            let Some(x) = self.wants(q).filter(|_| waits) else {
-                return false;
+            self.ahead[q] = match self.wants(q).filter(|_| waits) {
+                Some(x) => self.occupant[x as usize],
+                None => NONE,
             };
-            if x == here {
-                return true;
+            self.lock[q] = 0;
+        }
+        for s in 0..n {
+            self.chain.clear();
+            let mut q = s as u32;
+            while q != NONE && self.lock[q as usize] == 0 {
+                self.lock[q as usize] = ON_PATH;
+                self.chain.push(q);
+                q = self.ahead[q as usize];
             }
-            match self.occupant[x as usize] {
-                NONE => return false,
-                next => q = next as usize,
+            if q != NONE && self.lock[q as usize] == ON_PATH {
+                let from = self.chain.iter().position(|&p| p == q).unwrap_or(0);
+                for &p in &self.chain[from..] {
+                    self.lock[p as usize] |= RING;
+                }
+            }
+            for &p in &self.chain {
+                self.lock[p as usize] = (self.lock[p as usize] & RING) | SEEN;
             }
         }
-        false
     }
 
     /// Token and relay rules: decides which moves go ahead, then hands modules over (relay)
@@ -202,6 +227,9 @@ impl Amas {
                     });
                 }
             }
+        }
+        if self.p.give_way == GiveWay::Locked {
+            self.mark_rings();
         }
         self.find_losers();
         for k in 0..self.losers.len() {
@@ -260,25 +288,34 @@ impl Amas {
 
     /// Whether the robot on cell `t` gives way as the smaller token of a lock, or waits,
     /// directly or through others, on one that does (only where locked robots alone give way).
-    fn queued_on_yielding(&self, t: u32) -> bool {
+    /// Each robot's answer is kept for the step, so every queue is walked once.
+    fn queued_on_yielding(&mut self, t: u32) -> bool {
         if self.p.give_way == GiveWay::EveryLoser {
             return false;
         }
+        self.chain.clear();
         let mut q = self.occupant[t as usize];
-        for _ in 0..self.robots.len() {
+        let answer = loop {
             if q == NONE {
-                return false;
+                break false;
             }
             let r = q as usize;
             if self.yielding[r] {
-                return true;
+                break true;
             }
-            let waits = self.status[r] != MOVES && !self.relaying[r];
-            match self.wants(r).filter(|_| waits) {
-                Some(x) => q = self.occupant[x as usize],
-                None => return false,
+            match self.lock[r] & (QUEUED | BEHIND | ON_QUEUE) {
+                0 => {}
+                ON_QUEUE => break false,
+                known => break known & BEHIND != 0,
             }
+            self.lock[r] |= ON_QUEUE;
+            self.chain.push(q);
+            q = self.ahead[r];
+        };
+        for &p in &self.chain {
+            let l = &mut self.lock[p as usize];
+            *l = (*l & !ON_QUEUE) | QUEUED | if answer { BEHIND } else { 0 };
         }
-        false
+        answer
     }
 }

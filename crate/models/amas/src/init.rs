@@ -115,6 +115,8 @@ impl Amas {
             chain: Vec::new(),
             losers: Vec::new(),
             yielding: vec![false; robots_n],
+            ahead: vec![NONE; robots_n],
+            lock: vec![0; robots_n],
             rng: Rng::new(seed),
             disturb_rng: Rng::stream(seed, STREAM_DISTURBANCE),
             releasable: vec![0; n.div_ceil(64)],

@@ -150,6 +150,9 @@ pub struct Amas {
     /// wanted and why, and which of them give way as the smaller token of a lock.
     losers: Vec<(u32, u32, collision::Conflict)>,
     yielding: Vec<bool>,
+    /// Scratch: the robot each robot waits on this step, and its lock bits (`conflicts.rs`).
+    ahead: Vec<u32>,
+    lock: Vec<u8>,
     rng: Rng,
     disturb_rng: Rng,
     /// Modules to be removed that the connection rule lets go now (a bit set over all cells):
