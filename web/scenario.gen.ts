@@ -39,6 +39,11 @@ export interface AmasScenario {
   description: string;
   /** D of equation 1; above 0.25 the update is unstable. */
   diffusion: number;
+  /**
+   * Footnote 3: the module displays one direction, or each robot draws among equally good
+   * neighbours.
+   */
+  direction: Direction;
   /** Actions applied during the run (recorded clicks included): `at` is the step after which it applies; the other keys are the model's action, given in its documentation. */
   disturbances?: AmasDisturbance[];
   exercise?: Exercise;
@@ -46,6 +51,8 @@ export interface AmasScenario {
   field: FieldKind;
   /** Field updates (sweeps) per step, U. */
   field_updates_per_step: number;
+  /** Which robots that lost a collision step aside at their next plan (4.6). */
+  give_way: GiveWay;
   /** Footnote 3: below this spread of the neighbours' values there is no effective gradient. */
   gradient_threshold?: number | null;
   handin?: Handin;
@@ -287,6 +294,9 @@ export interface Cubes3dScenario {
   w: number;
 }
 
+/** Footnote 3: who chooses among neighbouring modules that are equally good for the robot. */
+export type Direction = "module" | "robot";
+
 /**
  * A scenario's `exercise` section: what a teacher asks, which fields students may not change,
  * and the goal a run must meet.
@@ -410,6 +420,9 @@ export interface FractaScenario {
   /** The scenario format version; older versions are migrated when read. */
   version: number;
 }
+
+/** Sections 4.6 and 5.1: which robots that lost a collision step aside at their next plan. */
+export type GiveWay = "locked" | "every_loser";
 
 export type Ground = "none" | "floor" | "fixed" | "anchor";
 

@@ -1,10 +1,22 @@
 //! Step phase 2, conflicts (4.6): which moves go ahead, module relay (4.6.1), and the
 //! collision penalty of the robots that must wait.
 
+use super::collision::{self, Conflict, Outcome};
+use super::spec::GiveWay;
 use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
     VISITING,
 };
+
+/// Bits of a robot's `lock` byte within a step's conflicts: on the path being followed, seen,
+/// on a ring ([`Amas::mark_rings`]); on the queue being followed, its queue's answer known, and
+/// that answer: it waits on a robot that gives way ([`Amas::queued_on_yielding`]).
+const ON_PATH: u8 = 1;
+const SEEN: u8 = 2;
+const RING: u8 = 4;
+const ON_QUEUE: u8 = 8;
+const QUEUED: u8 = 16;
+const BEHIND: u8 = 32;
 use kumiki_model::model::Event;
 
 impl Amas {
@@ -66,8 +78,18 @@ impl Amas {
         }
     }
 
-    pub(super) fn collide(&mut self, r: usize, at: u32) {
+    /// Robot `r` pays the collision penalty for wanting cell `at`, where robot `other` stood
+    /// in its way or claimed the cell first; `give_way` it steps aside at its next plan.
+    pub(super) fn collide(&mut self, r: usize, at: u32, other: Option<usize>, give_way: bool) {
         self.collisions += 1;
+        // Appendix A.1: which kinds of robot meet, as they were when they planned (a relay
+        // this step has already swapped the other's load).
+        let loaded = self.robots[r].loaded;
+        match other.map(|o| self.robots[o].loaded ^ self.relaying[o]) {
+            Some(l) if l != loaded => self.mixed_collisions += 1,
+            _ if loaded => self.loaded_collisions += 1,
+            _ => self.unloaded_collisions += 1,
+        }
         *self.collision_cells.entry(at).or_insert(0) += 1;
         let row = at / self.w as u32;
         if row == self.corner_row || row == self.corner_row + 1 {
@@ -77,12 +99,83 @@ impl Amas {
         } else if row as usize >= self.supply_top {
             self.supply_collisions += 1;
         }
-        self.robots[r].give_way = true;
+        self.robots[r].give_way = give_way;
+        self.robots[r].waiting_for = at;
         self.robots[r].busy = self.p.penalty - 1;
         self.events.push(Event {
             cell: at,
             kind: EV_COLLISION,
         });
+    }
+
+    /// The robot that claimed cell `t` this step: it stands next to `t` (every plan takes a
+    /// neighbouring cell) and its plan holds the claim.
+    fn claimant(&self, t: u32, r: usize) -> Option<usize> {
+        let (nb, k) = self.neighbours(t as usize);
+        nb[..k].iter().find_map(|&j| {
+            let q = self.occupant[j] as usize;
+            let holds = q != r
+                && self.occupant[j] != NONE
+                && matches!(self.plans[q], Plan::Move(x) | Plan::Place(x) | Plan::Remove(x) if x == t);
+            holds.then_some(q)
+        })
+    }
+
+    /// The cell robot `q` wants this step, if it wants to move; where locked robots alone give
+    /// way, a robot paying a collision penalty still wants the cell it collided over.
+    fn wants(&self, q: usize) -> Option<u32> {
+        match self.plans[q] {
+            Plan::Move(x) | Plan::Blocked(x) => Some(x),
+            Plan::Busy if self.p.give_way == GiveWay::Locked => {
+                Some(self.robots[q].waiting_for).filter(|&x| x != NONE)
+            }
+            _ => None,
+        }
+    }
+
+    /// Whether robot `r`, which wants the module robot `o` stands on, is locked with it: `o`
+    /// wants `r`'s module (head-on), or, where only locked robots give way, `r` lies on a ring of
+    /// waiting robots each wanting the next one's module ([`Amas::mark_rings`]). A robot busy
+    /// relaying is in no lock.
+    fn locked(&self, r: usize, o: usize) -> bool {
+        let here = self.robots[r].cell;
+        if self.wants(o) == Some(here) && !self.relaying[o] {
+            return true;
+        }
+        self.p.give_way == GiveWay::Locked && self.lock[r] & RING != 0
+    }
+
+    /// The robot each robot waits on this step (`ahead`: the one on the module it wants, where
+    /// it does not move and is not relaying), and which robots lie on a ring of them: every
+    /// robot follows its one successor until it meets a robot already seen, once for all.
+    fn mark_rings(&mut self) {
+        let n = self.robots.len();
+        for q in 0..n {
+            let waits = self.status[q] != MOVES && !self.relaying[q];
+            self.ahead[q] = match self.wants(q).filter(|_| waits) {
+                Some(x) => self.occupant[x as usize],
+                None => NONE,
+            };
+            self.lock[q] = 0;
+        }
+        for s in 0..n {
+            self.chain.clear();
+            let mut q = s as u32;
+            while q != NONE && self.lock[q as usize] == 0 {
+                self.lock[q as usize] = ON_PATH;
+                self.chain.push(q);
+                q = self.ahead[q as usize];
+            }
+            if q != NONE && self.lock[q as usize] == ON_PATH {
+                let from = self.chain.iter().position(|&p| p == q).unwrap_or(0);
+                for &p in &self.chain[from..] {
+                    self.lock[p as usize] |= RING;
+                }
+            }
+            for &p in &self.chain {
+                self.lock[p as usize] = (self.lock[p as usize] & RING) | SEEN;
+            }
+        }
     }
 
     /// Token and relay rules: decides which moves go ahead, then hands modules over (relay)
@@ -135,8 +228,40 @@ impl Amas {
                 }
             }
         }
-        for k in 0..n {
+        if self.p.give_way == GiveWay::Locked {
+            self.mark_rings();
+        }
+        self.find_losers();
+        for k in 0..self.losers.len() {
+            let (r, t, conflict) = self.losers[k];
+            let r = r as usize;
+            let conflict = match conflict {
+                Conflict::Occupied { .. } => Conflict::Occupied {
+                    ahead_gives_way: self.queued_on_yielding(t),
+                },
+                other => other,
+            };
+            self.losers[k].2 = conflict;
+            let other = match self.plans[r] {
+                Plan::Blocked(_) => self.claimant(t, r),
+                _ => Some(self.occupant[t as usize] as usize),
+            };
+            match collision::outcome(conflict, self.p.give_way) {
+                Outcome::Keeps => {}
+                Outcome::Waits => self.collide(r, t, other, false),
+                Outcome::GivesWay => self.collide(r, t, other, true),
+            }
+        }
+    }
+
+    /// The robots that could not do what they planned, in planning order, with the cell each
+    /// wanted and why it could not have it; `yielding` marks the robots that give way: the
+    /// smaller tokens of locks, and those still paying the penalty before they do.
+    fn find_losers(&mut self) {
+        self.losers.clear();
+        for k in 0..self.robots.len() {
             let r = self.order[k] as usize;
+            self.yielding[r] = self.plans[r] == Plan::Busy && self.robots[r].give_way;
             if self.relaying[r] {
                 continue;
             }
@@ -146,21 +271,51 @@ impl Amas {
                 _ => continue,
             };
             let o = self.occupant[t as usize];
-            if o == NONE {
-                // Lost the claim on a free module to a larger token.
-                self.collide(r, t);
-                continue;
-            }
-            let o = o as usize;
-            let here = self.robots[r].cell;
-            // Head-on: the robot ahead wants this robot's module.
-            let head_on = matches!(self.plans[o], Plan::Move(x) | Plan::Blocked(x) if x == here)
-                && !self.relaying[o];
-            if head_on && self.position[o] > self.position[r] {
-                // The larger token keeps its priority and waits for the other to step aside.
-                continue;
-            }
-            self.collide(r, t);
+            let conflict = match o {
+                // Lost the claim on a free cell to a larger token.
+                NONE => Conflict::Claimed,
+                o if self.locked(r, o as usize) => Conflict::Locked {
+                    ahead_larger: self.position[o as usize] < self.position[r],
+                },
+                _ => Conflict::Occupied {
+                    ahead_gives_way: false,
+                },
+            };
+            self.yielding[r] = conflict == Conflict::Locked { ahead_larger: true };
+            self.losers.push((r as u32, t, conflict));
         }
+    }
+
+    /// Whether the robot on cell `t` gives way as the smaller token of a lock, or waits,
+    /// directly or through others, on one that does (only where locked robots alone give way).
+    /// Each robot's answer is kept for the step, so every queue is walked once.
+    fn queued_on_yielding(&mut self, t: u32) -> bool {
+        if self.p.give_way == GiveWay::EveryLoser {
+            return false;
+        }
+        self.chain.clear();
+        let mut q = self.occupant[t as usize];
+        let answer = loop {
+            if q == NONE {
+                break false;
+            }
+            let r = q as usize;
+            if self.yielding[r] {
+                break true;
+            }
+            match self.lock[r] & (QUEUED | BEHIND | ON_QUEUE) {
+                0 => {}
+                ON_QUEUE => break false,
+                known => break known & BEHIND != 0,
+            }
+            self.lock[r] |= ON_QUEUE;
+            self.chain.push(q);
+            q = self.ahead[r];
+        };
+        for &p in &self.chain {
+            let l = &mut self.lock[p as usize];
+            *l = (*l & !ON_QUEUE) | QUEUED | if answer { BEHIND } else { 0 };
+        }
+        answer
     }
 }

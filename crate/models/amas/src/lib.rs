@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use serde_json::{Map, Value};
 
-use kumiki_model::entry::{self, ModelEntry};
+use kumiki_model::entry::{self, ModelEntry, Pin};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model};
@@ -15,7 +15,9 @@ use kumiki_model::rng::Rng;
 
 mod act;
 mod actions;
+mod collision;
 mod conflicts;
+mod direction;
 mod field;
 mod init;
 pub mod limits;
@@ -27,7 +29,7 @@ mod spec;
 mod state;
 mod view;
 
-pub use spec::{Collision, Communication, FieldKind, Spec};
+pub use spec::{Collision, Communication, Direction, FieldKind, GiveWay, Spec};
 
 use field::Field;
 use spec::Params;
@@ -36,13 +38,27 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
-    model_version: 2,
+    // 3: the module displays one direction (footnote 3) and only a locked loser gives way (4.6).
+    model_version: 3,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
     queries: &[],
+    // Links made before version 3 replay with the readings they were made with.
+    pins: &[
+        Pin {
+            before: 3,
+            key: "direction",
+            value: "\"robot\"",
+        },
+        Pin {
+            before: 3,
+            key: "give_way",
+            value: "\"every_loser\"",
+        },
+    ],
 };
 
 const NONE: u32 = u32::MAX;
@@ -66,8 +82,11 @@ struct Robot {
     loaded: bool,
     /// Further steps the current action (or collision penalty) still takes.
     busy: u32,
-    /// Lost a collision: avoids occupied modules at its next plan.
+    /// Gives way: avoids occupied modules at its next plan (4.6; see [`collision`]).
     give_way: bool,
+    /// The cell it wanted when it last collided, while it pays the penalty ([`NONE`] once it
+    /// plans again): a lock holds a robot waiting out a longer penalty too.
+    waiting_for: u32,
     /// Moved at random at its last plan: no effective gradient (footnote 3).
     lost: bool,
     /// The highest row (smallest y) it has stood on.
@@ -127,6 +146,13 @@ pub struct Amas {
     claimed: Vec<u32>,
     /// Scratch list of robots along a chain of moves.
     chain: Vec<u32>,
+    /// Scratch: the robots that could not do what they planned this step, with the cell each
+    /// wanted and why, and which of them give way as the smaller token of a lock.
+    losers: Vec<(u32, u32, collision::Conflict)>,
+    yielding: Vec<bool>,
+    /// Scratch: the robot each robot waits on this step, and its lock bits (`conflicts.rs`).
+    ahead: Vec<u32>,
+    lock: Vec<u8>,
     rng: Rng,
     disturb_rng: Rng,
     /// Modules to be removed that the connection rule lets go now (a bit set over all cells):
@@ -170,6 +196,11 @@ pub struct Amas {
     corner_collisions: u64,
     above_corner_collisions: u64,
     supply_collisions: u64,
+    /// Collisions between a loaded and an unloaded robot, between two loaded robots and between
+    /// two unloaded ones (appendix A.1), by their loads when they planned.
+    mixed_collisions: u64,
+    loaded_collisions: u64,
+    unloaded_collisions: u64,
     /// Plans made with no effective gradient (footnote 3) or on a broken module: the robot
     /// picked its way at random.
     wandering: u64,
@@ -240,6 +271,12 @@ impl Model for Amas {
             Metric::Count(self.above_corner_collisions),
         );
         f("supply_collisions", Metric::Count(self.supply_collisions));
+        f("mixed_collisions", Metric::Count(self.mixed_collisions));
+        f("loaded_collisions", Metric::Count(self.loaded_collisions));
+        f(
+            "unloaded_collisions",
+            Metric::Count(self.unloaded_collisions),
+        );
         f("wandering", Metric::Count(self.wandering));
         f("lower_bound", Metric::Count(self.lower_bound));
         f("path_bound", Metric::Count(self.path_bound));
@@ -285,6 +322,10 @@ impl Model for Amas {
             h.bool(r.loaded);
             h.u32(r.busy);
             h.bool(r.give_way);
+            // Only locks read it, and only where locked robots alone give way.
+            if self.p.give_way == GiveWay::Locked {
+                h.u32(r.waiting_for);
+            }
             // The heading only matters, and only enters the hash, when turns take time.
             if self.p.turn_d > 0 {
                 h.u8(r.heading);

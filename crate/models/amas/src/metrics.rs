@@ -34,6 +34,21 @@ pub const METRICS: &[MetricInfo] = &[
         "Collisions on the supply rows, where robots pick up their modules.",
     ),
     MetricInfo::new(
+        "mixed_collisions",
+        "count",
+        "Collisions between a loaded and an unloaded robot, the kind appendix A.1 finds most common and module relay solves.",
+    ),
+    MetricInfo::new(
+        "loaded_collisions",
+        "count",
+        "Collisions between two robots carrying modules.",
+    ),
+    MetricInfo::new(
+        "unloaded_collisions",
+        "count",
+        "Collisions between two robots carrying nothing.",
+    ),
+    MetricInfo::new(
         "wandering",
         "robot steps",
         "Times a robot found no effective gradient (or stood on a broken module) and chose its way at random (sections 5.4, 5.5).",

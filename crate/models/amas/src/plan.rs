@@ -1,9 +1,13 @@
 //! Step phase 1, planning (5.1): robots plan one after another in a fresh random order; each
 //! reads the field on the module under it (footnote 3) and claims the cell it wants.
 
+use super::direction::{self, Reading, Shown, LISTED};
 use super::field::Field;
 use super::state::{ACTIVE_MASK, CLAIMED, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
 use super::{Amas, Collision, Plan, NONE, UNKNOWN};
+
+/// No cell: a neighbour off the lattice.
+const OFF: usize = usize::MAX;
 
 impl Amas {
     /// How far module `j` is from where a robot wants to go: lower is better.
@@ -49,78 +53,89 @@ impl Amas {
         }
     }
 
-    /// The module of lowest cost among `options`, ties broken at random.
-    pub(super) fn pick_lowest(&mut self, options: &[(u32, f32)]) -> Option<u32> {
-        let best = options
-            .iter()
-            .map(|&(_, c)| c)
-            .fold(f32::INFINITY, f32::min);
-        let mut pick = [0u32; 4];
-        let mut m = 0;
-        for &(j, c) in options {
-            if c == best {
-                pick[m] = j;
-                m += 1;
-            }
+    /// The four neighbouring cells by slot (N, S, E, W, see [`direction`]), [`OFF`] off the
+    /// lattice.
+    #[inline]
+    fn compass(&self, i: usize) -> [usize; 4] {
+        let (w, x, y) = (self.w, i % self.w, i / self.w);
+        let mut out = [OFF; 4];
+        if y > 0 {
+            out[direction::N] = i - w;
         }
-        self.pick_random(&pick[..m])
+        if y + 1 < self.h {
+            out[direction::S] = i + w;
+        }
+        if x + 1 < w {
+            out[direction::E] = i + 1;
+        }
+        if x > 0 {
+            out[direction::W] = i - 1;
+        }
+        out
     }
 
-    /// The move the module under the robot shows it (footnote 3): towards the best neighbour,
-    /// or, with no effective gradient, a random neighbouring module. On a blackboard the robot
-    /// avoids engaged modules and takes the best free one.
-    pub(super) fn follow(&mut self, r: usize, i: usize, loaded: bool, board: bool) -> Plan {
-        let (nb, k) = self.neighbours(i);
-        let mut walk = [0u32; 4];
-        let mut nw = 0;
-        let mut valued = [(0u32, 0f32); 4];
-        let mut nv = 0;
-        for &j in &nb[..k] {
-            let s = self.state[j];
-            if s & MODULE == 0 || (board && self.engaged(j, i)) {
-                continue;
-            }
-            walk[nw] = j as u32;
-            nw += 1;
-            if s & MODULE != 0 {
-                valued[nv] = (j as u32, self.cost(j, loaded));
-                nv += 1;
+    /// What the module at `i` holds about its neighbours for a robot that is `loaded`; `open`
+    /// says which neighbouring modules the robot may step onto.
+    #[inline]
+    fn reading(&self, around: &[usize; 4], loaded: bool, open: impl Fn(usize) -> bool) -> Reading {
+        let mut r = Reading {
+            cost: [None; 4],
+            open: [false; 4],
+        };
+        for (slot, &j) in around.iter().enumerate() {
+            if j != OFF && self.state[j] & MODULE != 0 {
+                r.cost[slot] = Some(self.cost(j, loaded));
+                r.open[slot] = open(j);
             }
         }
-        // The gradient is judged on every neighbouring module's value, engaged or not; the
-        // module under the robot holds the last value each neighbour sent, broken or not.
-        let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
-        for &j in &nb[..k] {
-            if self.state[j] & MODULE != 0 {
-                let c = self.cost(j, loaded);
-                lo = lo.min(c);
-                hi = hi.max(c);
-            }
-        }
-        if hi - lo >= self.p.threshold && hi >= lo {
-            return self
-                .pick_lowest(&valued[..nv])
-                .map_or(Plan::Wait, Plan::Move);
-        }
-        self.robots[r].lost = true;
-        self.wandering += 1;
-        self.pick_random(&walk[..nw]).map_or(Plan::Wait, Plan::Move)
+        r
     }
 
-    /// A robot that lost a collision steps, at its next plan, to the best module for itself
-    /// that no robot stands on: it moves on if the way has cleared, or aside if it has not.
-    pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Option<u32> {
-        let (nb, k) = self.neighbours(i);
-        let mut opts = [(0u32, 0f32); 4];
+    /// A random cell among the slots in `set` (bit `1 << slot`), drawn in the order Kumiki
+    /// listed neighbours before model version 3.
+    fn draw(&mut self, set: u8, around: &[usize; 4]) -> Option<u32> {
+        let mut options = [0u32; 4];
         let mut n = 0;
-        for &j in &nb[..k] {
-            if self.state[j] & MODULE != 0 && self.occupant[j] == NONE {
-                let c = self.cost(j, loaded);
-                opts[n] = (j as u32, c);
+        for slot in LISTED {
+            if set >> slot & 1 == 1 {
+                options[n] = around[slot] as u32;
                 n += 1;
             }
         }
-        self.pick_lowest(&opts[..n])
+        self.pick_random(&options[..n])
+    }
+
+    /// The move the module under the robot shows it (footnote 3, [`direction::shown`]): towards
+    /// the best neighbour, or, with no effective gradient, a random neighbouring module. On a
+    /// blackboard the robot avoids engaged modules and takes the best free one.
+    pub(super) fn follow(&mut self, r: usize, i: usize, loaded: bool, board: bool) -> Plan {
+        let around = self.compass(i);
+        let reading = self.reading(&around, loaded, |j| !(board && self.engaged(j, i)));
+        match direction::shown(&reading, self.p.threshold, self.p.direction) {
+            Shown::Toward(slot) => Plan::Move(around[slot] as u32),
+            Shown::Among(set) => self.draw(set, &around).map_or(Plan::Wait, Plan::Move),
+            Shown::Nowhere => Plan::Wait,
+            Shown::NoGradient => {
+                self.robots[r].lost = true;
+                self.wandering += 1;
+                let open = (0..4)
+                    .filter(|&slot| reading.open[slot])
+                    .fold(0u8, |set, slot| set | 1 << slot);
+                self.draw(open, &around).map_or(Plan::Wait, Plan::Move)
+            }
+        }
+    }
+
+    /// A robot that gives way (4.6) steps, at its next plan, to the best module for itself that
+    /// no robot stands on: it moves on if the way has cleared, or aside if it has not.
+    pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Option<u32> {
+        let around = self.compass(i);
+        let reading = self.reading(&around, loaded, |j| self.occupant[j] == NONE);
+        match direction::shown(&reading, f32::NEG_INFINITY, self.p.direction) {
+            Shown::Toward(slot) => Some(around[slot] as u32),
+            Shown::Among(set) => self.draw(set, &around),
+            Shown::Nowhere | Shown::NoGradient => None,
+        }
     }
 
     /// A vacant target site among `nb`, chosen at random; on a blackboard, not one another
@@ -145,6 +160,7 @@ impl Amas {
         let s = self.state[i];
         let board = self.p.collision == Collision::Blackboard;
         self.robots[r].lost = false;
+        self.robots[r].waiting_for = NONE;
         if rb.give_way {
             self.robots[r].give_way = false;
             if let Some(c) = self.give_way(i, rb.loaded) {

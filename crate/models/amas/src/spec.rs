@@ -52,6 +52,35 @@ pub enum Communication {
     Radius2,
 }
 
+/// Footnote 3: who chooses among neighbouring modules that are equally good for the robot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Direction {
+    /// The module under the robot displays one direction, the best neighbour, the first in
+    /// footnote 3's order N, S, E, W among equally good ones; every robot reading it gets that
+    /// one. A robot chooses at random only where its module shows "no effective gradient".
+    #[default]
+    Module,
+    /// Each robot draws at random among equally good neighbours at every plan (Kumiki's reading
+    /// before model version 3).
+    Robot,
+}
+
+/// Sections 4.6 and 5.1: which robots that lost a collision step aside at their next plan.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum GiveWay {
+    /// Only the robots a lock holds: of robots meeting head-on (or round a ring, each wanting
+    /// the next one's module) those with the smaller token, and the robots queued behind one of
+    /// them, which must make room for it. Every other loser waits out the penalty and plans
+    /// again.
+    #[default]
+    Locked,
+    /// Every robot that paid a penalty steps to the best free module at its next plan
+    /// (Kumiki's reading before model version 3).
+    EveryLoser,
+}
+
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "AmasSpec", transform = bounds::in_schema::<Spec>)]
@@ -106,6 +135,13 @@ pub struct Spec {
     /// How far robots hear each other when they settle moves (appendix A.1).
     #[serde(default)]
     pub communication: Communication,
+    /// Footnote 3: the module displays one direction, or each robot draws among equally good
+    /// neighbours.
+    #[serde(default)]
+    pub direction: Direction,
+    /// Which robots that lost a collision step aside at their next plan (4.6).
+    #[serde(default)]
+    pub give_way: GiveWay,
 }
 
 impl Bounded for Spec {
@@ -205,6 +241,8 @@ pub struct Params {
     pub penalty: u32,
     pub turn_d: u32,
     pub communication: Communication,
+    pub direction: Direction,
+    pub give_way: GiveWay,
 }
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
@@ -451,6 +489,8 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         penalty: spec.collision_penalty,
         turn_d: spec.turn_duration,
         communication: spec.communication,
+        direction: spec.direction,
+        give_way: spec.give_way,
     };
     Ok(Plan {
         w,

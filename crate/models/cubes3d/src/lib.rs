@@ -71,6 +71,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
+    pins: &[],
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.

@@ -78,6 +78,11 @@ fn check_invariants(m: &Amas, initial: u64) {
     assert!(m.state.iter().all(|&s| s & CLAIMED == 0));
     let vacant = m.state.iter().filter(|&&s| s & VACANT != 0).count() as u64;
     assert_eq!(vacant, m.vacant);
+    assert_eq!(
+        m.mixed_collisions + m.loaded_collisions + m.unloaded_collisions,
+        m.collisions,
+        "every collision has one kind"
+    );
 }
 
 /// Every module is joined to the supply through modules.

@@ -62,7 +62,10 @@ fn turns_take_time_and_radius_two_communication_builds() {
 
 #[test]
 fn loaded_robots_fill_sites_beside_broken_modules() {
-    // Every built module breaks at step 6: no module announces the growth front any more.
+    // Every built module breaks at step 6: no module announces the growth front any more. A
+    // loaded robot that plans on a broken module beside a vacant site fills it, unless a larger
+    // token claimed the site first.
+    let mut filled = 0;
     for seed in 1..6 {
         let mut m = model(json!({"robots": 3, "seed": seed, "field": "discrete"}));
         for _ in 0..6 {
@@ -70,9 +73,37 @@ fn loaded_robots_fill_sites_beside_broken_modules() {
         }
         m.apply(&action(json!({"kind": "break", "count": 1000})))
             .unwrap();
-        run_to_end(&mut m, 200000);
-        assert!(m.completed(), "seed {seed}: {:?}", m.metrics());
+        while !m.completed() && m.steps < 5000 {
+            let beside: Vec<usize> = (0..m.robots.len())
+                .filter(|&r| {
+                    let rb = m.robots[r];
+                    let (nb, k) = m.neighbours(rb.cell as usize);
+                    rb.loaded
+                        && rb.busy == 0
+                        && !rb.give_way
+                        && m.state[rb.cell as usize] & state::BROKEN != 0
+                        && nb[..k].iter().any(|&j| m.state[j] & VACANT != 0)
+                })
+                .collect();
+            m.step();
+            for r in beside {
+                match m.plans[r] {
+                    Plan::Place(_) => {
+                        assert!(
+                            !m.robots[r].loaded,
+                            "seed {seed}: robot {r} kept its module"
+                        );
+                        filled += 1;
+                    }
+                    plan => assert!(matches!(plan, Plan::Blocked(_)), "seed {seed}: {plan:?}"),
+                }
+            }
+        }
     }
+    assert!(
+        filled > 0,
+        "no loaded robot stood on a broken module beside a site"
+    );
 }
 
 #[test]
@@ -86,4 +117,106 @@ fn same_seed_same_run_other_seed_other_run() {
     };
     assert_eq!(out(9), out(9));
     assert_ne!(out(9).hash, out(10).hash);
+}
+
+/// Links made before model version 3 pin the per-robot draw and every loser giving way
+/// (`ENTRY.pins`), so every AMAS link of the fixture replays to the state it reached when it
+/// was made.
+#[test]
+fn links_of_earlier_versions_replay_as_they_did() {
+    let text = include_str!("../../../../../tests/fixtures/links.json");
+    let links: Vec<Value> = serde_json::from_str(text).unwrap();
+    let mut checked = 0;
+    let older = |e: &&Value| e["model"] == "amas" && e["model_version"].as_u64() < Some(3);
+    for entry in links.iter().filter(older) {
+        let opened = kumiki_core::link::open(entry["link"].as_str().unwrap()).unwrap();
+        assert!(opened.made_with < 3, "{}", entry["preset"]);
+        assert_eq!(opened.scenario.body()["direction"], json!("robot"));
+        assert_eq!(opened.scenario.body()["give_way"], json!("every_loser"));
+        let mut run = Run::new(opened.scenario).unwrap();
+        run.advance(entry["steps"].as_u64().unwrap());
+        assert_eq!(
+            kumiki_core::hash::hex(run.state_hash()),
+            entry["hash"].as_str().unwrap(),
+            "{}",
+            entry["preset"]
+        );
+        checked += 1;
+    }
+    assert!(checked >= 12, "{checked} AMAS links");
+    // A link made now opens with this version's readings.
+    let now = kumiki_core::link::encode(&kumiki_core::presets::scenario("amas-L").unwrap());
+    let opened = kumiki_core::link::open(&now).unwrap();
+    assert_eq!(opened.scenario.body()["direction"], json!("module"));
+    assert_eq!(opened.scenario.body()["give_way"], json!("locked"));
+}
+
+/// The L of figure 23 standing on its stem.
+const STEM: &str = "######\n######\n##....\n##....\n##....\n";
+
+/// Footnote 3: where the field shows a gradient, the module's display decides the way, not the
+/// robot's random stream; with the per-robot draw the stream decides among equal neighbours.
+#[test]
+fn the_module_shows_every_robot_the_same_way() {
+    let mut differs = 0;
+    for direction in ["module", "robot"] {
+        let mut m = model(json!({"target": STEM, "robots": 4, "field": "discrete",
+            "direction": direction}));
+        for step in 0..60 {
+            m.step();
+            for r in 0..m.robots.len() {
+                let i = m.robots[r].cell as usize;
+                if m.state[i] & state::ACTIVE_MASK != MODULE {
+                    continue;
+                }
+                let loaded = m.robots[r].loaded;
+                let mut other = m.clone();
+                other.rng = kumiki_model::rng::Rng::new(1000 + step);
+                let (a, b) = (
+                    m.follow(r, i, loaded, false),
+                    other.follow(r, i, loaded, false),
+                );
+                let wandered = m.robots[r].lost;
+                match direction {
+                    "module" if !wandered => assert_eq!(a, b, "step {step}, robot {r}"),
+                    _ => differs += usize::from(a != b),
+                }
+            }
+        }
+    }
+    assert!(differs > 0, "the per-robot draw never chose otherwise");
+}
+
+/// Only the robots a lock holds give way: figure 23's L on its stem, with the discrete field and
+/// the token rule, finishes although its robots meet head-on at the corner, and with a penalty
+/// of several steps too.
+#[test]
+fn locks_are_resolved_and_other_losers_wait() {
+    let mut waited = 0;
+    for (seed, penalty) in [(1, 1), (2, 1), (3, 3)] {
+        let mut m = model(
+            json!({"target": STEM, "robots": 6, "seed": seed, "field": "discrete",
+            "collision": "token", "collision_penalty": penalty}),
+        );
+        while !m.completed() && m.steps < 20000 {
+            m.step();
+            for &(r, _, conflict) in &m.losers {
+                let r = r as usize;
+                match collision::outcome(conflict, m.p.give_way) {
+                    collision::Outcome::Waits => {
+                        assert!(!m.robots[r].give_way);
+                        waited += 1;
+                    }
+                    collision::Outcome::GivesWay => assert!(m.robots[r].give_way),
+                    collision::Outcome::Keeps => assert_eq!(m.robots[r].busy, 0),
+                }
+            }
+        }
+        assert!(
+            m.completed(),
+            "seed {seed}, penalty {penalty}: {:?}",
+            m.metrics()
+        );
+    }
+    assert!(waited > 0, "no loser waited");
 }

@@ -1,0 +1,87 @@
+//! Sections 4.6 and 5.1: what a robot that could not do what it planned does next. "The robot
+//! that has the largest token wins the priority to move. Other robots cannot move until the
+//! collision is resolved", and "the penalty for collision" takes one time step (5.1, by default).
+//! One pure function of typed inputs ([`outcome`]); the step's conflict phase (`conflicts.rs`)
+//! finds the [`Conflict`] and applies the [`Outcome`]. Module relay (4.6.1) is settled before it:
+//! a loaded and an unloaded robot that meet swap loads instead of colliding.
+
+use super::spec::GiveWay;
+
+/// Why a robot could not do what it planned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Conflict {
+    /// A robot with a larger token claimed the same cell (a module, a vacant site, a module to
+    /// remove) first.
+    Claimed,
+    /// The robot on the module it wants stays there. `ahead_gives_way`: that robot gives way,
+    /// or waits, directly or through others, on a robot that does: the queue must make room
+    /// for it to step aside.
+    Occupied { ahead_gives_way: bool },
+    /// Locked: the robot on the module it wants wants this robot's module, directly (head-on)
+    /// or round a ring of robots each wanting the next one's module. Waiting alone would hold
+    /// both for good. `ahead_larger`: that robot holds the larger token.
+    Locked { ahead_larger: bool },
+}
+
+/// What the robot does about it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// Keeps its course and waits, without penalty: the larger token of a lock, which the other
+    /// resolves by stepping aside.
+    Keeps,
+    /// Pays the penalty, then plans again.
+    Waits,
+    /// Pays the penalty, then steps to the best module no robot stands on at its next plan.
+    GivesWay,
+}
+
+/// The outcome of `conflict` under the rule of who gives way: the robots a lock holds (the
+/// smaller tokens of the ring, and the robots queued behind one of them), or every loser.
+pub fn outcome(conflict: Conflict, rule: GiveWay) -> Outcome {
+    match (conflict, rule) {
+        (
+            Conflict::Locked {
+                ahead_larger: false,
+            },
+            _,
+        ) => Outcome::Keeps,
+        (Conflict::Locked { ahead_larger: true }, _) => Outcome::GivesWay,
+        (_, GiveWay::EveryLoser) => Outcome::GivesWay,
+        (
+            Conflict::Occupied {
+                ahead_gives_way: true,
+            },
+            GiveWay::Locked,
+        ) => Outcome::GivesWay,
+        (_, GiveWay::Locked) => Outcome::Waits,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_the_robots_a_lock_holds_give_way() {
+        use Conflict::*;
+        use Outcome::*;
+        let occupied = |ahead_gives_way| Occupied { ahead_gives_way };
+        for rule in [GiveWay::Locked, GiveWay::EveryLoser] {
+            assert_eq!(
+                outcome(
+                    Locked {
+                        ahead_larger: false
+                    },
+                    rule
+                ),
+                Keeps
+            );
+            assert_eq!(outcome(Locked { ahead_larger: true }, rule), GivesWay);
+            assert_eq!(outcome(occupied(true), rule), GivesWay);
+        }
+        assert_eq!(outcome(Claimed, GiveWay::Locked), Waits);
+        assert_eq!(outcome(occupied(false), GiveWay::Locked), Waits);
+        assert_eq!(outcome(Claimed, GiveWay::EveryLoser), GivesWay);
+        assert_eq!(outcome(occupied(false), GiveWay::EveryLoser), GivesWay);
+    }
+}
