@@ -303,8 +303,8 @@ fn a_form_export_a_workbook_and_a_list_of_links_grade_the_same() {
     doc["exercise"] = json!({
         "title": "Build the L",
         "locked": {"robots": 5, "seed": 1},
-        "goal": "completed and steps <= 250",
-        "credit": [{"goal": "completed", "points": 5}, {"goal": "metrics.collisions < 20", "points": 2}],
+        "goal": "completed and steps <= 600",
+        "credit": [{"goal": "completed", "points": 5}, {"goal": "metrics.collisions < 150", "points": 2}],
         "budget": {"steps": 1000}
     });
     let teacher = Scenario::from_value(doc).unwrap();
