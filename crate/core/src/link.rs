@@ -130,7 +130,8 @@ pub fn open_within(link: &str, limits: &'static Limits) -> Result<Opened> {
 }
 
 /// The scenario document inside a link, not yet validated, and the behaviour version of its
-/// model that made it. Nothing is built: the page reads a large scenario's size this way and
+/// model that made it, with the settings that version pins (`ModelEntry::pins`) where the link
+/// does not set them. Nothing is built: the page reads a large scenario's size this way and
 /// leaves its validation to the simulation worker, which opens it with [`Scenario::from_value`].
 pub fn unpack(link: &str) -> Result<(Value, u32)> {
     #[cfg(test)]
@@ -152,6 +153,14 @@ pub fn unpack(link: &str) -> Result<(Value, u32)> {
                 )
             })?,
     };
+    // The settings its model's earlier behaviour pins, so it replays as it did.
+    let entry = doc
+        .get("model")
+        .and_then(Value::as_str)
+        .and_then(|model| models::entry(model).ok());
+    if let (Some(entry), Value::Object(map)) = (entry, &mut doc) {
+        entry.pin(made_with, map);
+    }
     Ok((doc, made_with))
 }
 

@@ -41,6 +41,32 @@ pub struct ModelEntry {
     pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
+    /// The settings a link made with an earlier behaviour version pins, so that it replays as
+    /// it did where a change of behaviour came behind a new setting (none for most models).
+    pub pins: &'static [Pin],
+}
+
+/// A setting that links made with an earlier behaviour version of the model pin: a link made
+/// with a version below `before` that does not set `key` opens with `key` set to `value`, the
+/// behaviour it was made with, instead of the setting's default.
+pub struct Pin {
+    pub before: u32,
+    pub key: &'static str,
+    /// The setting's value as JSON text.
+    pub value: &'static str,
+}
+
+impl ModelEntry {
+    /// Sets in the scenario document `doc` of a link made with behaviour version `made_with`
+    /// the settings that version pins and the link does not set.
+    pub fn pin(&self, made_with: u32, doc: &mut Map<String, Value>) {
+        for pin in self.pins.iter().filter(|p| made_with < p.before) {
+            if !doc.contains_key(pin.key) {
+                let value = serde_json::from_str(pin.value).expect("a pin's value is JSON");
+                doc.insert(pin.key.into(), value);
+            }
+        }
+    }
 }
 
 /// A JSON Schema as a [`ModelEntry`] names it: [`schema_of`] a type. A function of the schema

@@ -43,6 +43,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
     queries: &[],
+    pins: &[],
 };
 
 const NONE: u32 = u32::MAX;

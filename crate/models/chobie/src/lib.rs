@@ -63,6 +63,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: queries::merge,
         },
     ],
+    pins: &[],
 };
 
 /// The checked parameters a run uses.

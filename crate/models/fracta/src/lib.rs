@@ -86,6 +86,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: queries::types,
         },
     ],
+    pins: &[],
 };
 
 /// Cell codes beyond the connection types (codes 1 to 12 are the type classes, see
