@@ -24,8 +24,8 @@ pub struct UnitState {
     pub difference: f64,
     /// The target it works toward, counting from 0.
     pub target: u8,
-    /// Control steps since it took up that target (from the start of the run when it never
-    /// switched).
+    /// Control steps before this one on its clock of equation 8: since it took up that target
+    /// (since the start when it never switched), or since the start with `clock` `run`.
     pub steps_on_target: u64,
 }
 
