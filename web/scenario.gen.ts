@@ -184,6 +184,9 @@ export interface ChobieScenario {
   youngs_modulus: number;
 }
 
+/** Which steps t of equation 8 counts. */
+export type Clock = "target" | "run";
+
 export type Collision = "token" | "relay" | "blackboard";
 
 export type Communication = "chain" | "radius2";
@@ -238,6 +241,11 @@ export interface Cubes3dScenario {
   a: number;
   /** C of equation 8, above 0. */
   c: number;
+  /**
+   * What t of equation 8 counts: the steps since the unit took up its current target, or the
+   * steps of the run (model version 4 and before).
+   */
+  clock?: Clock;
   compare?: Compare;
   /** What the scenario shows. */
   description: string;
@@ -255,6 +263,8 @@ export interface Cubes3dScenario {
    * read, and ignored: such a link opens with the notice that results may differ.
    */
   light_priority?: number | null;
+  /** The logarithm of equation 8, natural or base 10. */
+  log?: Log;
   /** Free cells around the shapes. */
   margin: number;
   /** The run stops after this many steps if its goal is not reached first. */
@@ -269,6 +279,17 @@ export interface Cubes3dScenario {
   movers: number;
   /** The scenario's name, shown as its title. */
   name: string;
+  /**
+   * Where the light's priority applies: on each unit's reachable positions (section 6), on
+   * which unit's chosen move goes first (model version 4 and before), or nowhere.
+   */
+  priority?: Priority;
+  /**
+   * Whether random selection counts "no motion" (i = 0) among its options, as the MRF and
+   * steepest descent do; false: it always takes a reachable position (model version 4 and
+   * before).
+   */
+  random_stays?: boolean;
   /** The seed of every random choice of the run. */
   seed: number;
   /** The choice rule of step 4. */
@@ -444,6 +465,9 @@ export interface Handin {
 /** Who decides which line drives. */
 export type Leader = "temporary" | "permanent";
 
+/** The logarithm of equation 8. */
+export type Log = "natural" | "ten";
+
 /** How the crawl copes with initial forms the first algorithm cannot handle (section IV). */
 export type Method = "first" | "trial_and_error" | "cautious";
 
@@ -460,6 +484,12 @@ export interface Part {
  * [`Goal::difference`].
  */
 export type Priorities = "pooled" | "guided" | "penalty";
+
+/**
+ * Where the light's priority applies (section 6: "the units assign a higher moving priority to
+ * reachable positions approaching the light source").
+ */
+export type Priority = "positions" | "units" | "none";
 
 export type Selection = "mrf" | "random" | "steepest";
 

@@ -169,6 +169,7 @@ impl Cubes {
         self.units.push(i as u32);
         self.diff.push(f64::NAN);
         self.stable.push(0);
+        self.took.push(self.steps);
         self.st.add(i);
         self.after_change(&[i]);
         Ok(())

@@ -1,8 +1,10 @@
-//! The first phase of a step (sections 4 and 5): the units choose among their reachable
-//! positions by the MRF rule or a baseline, and one (or a few, far apart) move.
+//! The first phase of a step (sections 4 to 6): each unit's options (its reachable positions,
+//! with the light's priority) and temperature, its choice by the selection rule, and the one
+//! (or few, far apart) that move.
 
 use super::connect::Scratch;
-use super::spec::Selection;
+use super::select::{select, Choice, Position, UnitState};
+use super::spec::{Clock, Log, Priority, Selection};
 use super::Cubes;
 use kumiki_model::math;
 
@@ -21,15 +23,16 @@ impl Cubes {
     /// choose to move, one moves (up to `movers` with footnote 2, each at least
     /// `mover_distance` from the others). Asking the units in a random order and letting the
     /// first that chooses to move go gives each of them the same chance as drawing among all
-    /// that chose to move, and asks only as many as needed. With a light, a unit whose choice
-    /// approaches the source goes before one whose choice does not (section 6: "a higher moving
-    /// priority to reachable positions approaching the light source").
-    pub(super) fn move_units(&mut self, temp: f64, s: &mut Scratch) {
+    /// that chose to move, and asks only as many as needed. With a light and the priority on
+    /// units (model version 4 and before), a unit whose choice approaches the source goes
+    /// before one whose choice does not.
+    pub(super) fn move_units(&mut self, s: &mut Scratch) {
         let mut order = std::mem::take(&mut self.order);
         order.clear();
         order.extend_from_slice(&self.movable);
         self.arrived.clear();
         self.deferred.clear();
+        let on_units = self.light.is_some() && self.priority == Priority::Units;
         let want = self.movers as usize;
         let n = order.len();
         for k in 0..n {
@@ -42,16 +45,26 @@ impl Cubes {
             if !self.eligible(p) || !self.far_from_movers(p) {
                 continue;
             }
-            let Some(dest) = self.decide(p, temp, s) else {
+            let Some(dest) = self.decide(p, s) else {
                 continue;
             };
-            if self.light.is_some() && self.along_light(dest) <= self.along_light(p) {
+            if on_units && self.along_light(dest) <= self.along_light(p) {
                 self.deferred.push((p as u32, dest as u32));
                 continue;
             }
             self.do_move(p, dest);
             self.arrived.push(dest as u32);
         }
+        if on_units {
+            self.move_deferred(s);
+        }
+        self.order = order;
+    }
+
+    /// The priority on units (model version 4 and before): the moves chosen this step that do
+    /// not approach the light, while movers are still wanted.
+    fn move_deferred(&mut self, s: &mut Scratch) {
+        let want = self.movers as usize;
         let mut deferred = std::mem::take(&mut self.deferred);
         for &(p, dest) in &deferred {
             if self.arrived.len() == want {
@@ -70,52 +83,89 @@ impl Cubes {
         }
         deferred.clear();
         self.deferred = deferred;
-        self.order = order;
+    }
+
+    /// The temperature T of equation 8 for the unit at `p`: C / log(1 + t), t the control step
+    /// being taken counted on the run's clock or from the unit's last switch of target.
+    pub(super) fn temperature(&self, p: usize) -> f64 {
+        match self.steps_on_target(p) {
+            t if t == self.steps => self.run_temperature,
+            t => self.temperature_at(t + 1),
+        }
+    }
+
+    /// C / log(1 + t) with the scenario's logarithm.
+    pub(super) fn temperature_at(&self, t: u64) -> f64 {
+        let c = match self.log {
+            Log::Natural => self.c,
+            Log::Ten => self.c * std::f64::consts::LN_10,
+        };
+        c / math::ln_1p(t as f64)
+    }
+
+    /// Control steps the unit at `p` has worked toward its target before this one, on the clock
+    /// the scenario chose.
+    fn steps_on_target(&self, p: usize) -> u64 {
+        match self.clock {
+            Clock::Run => self.steps,
+            Clock::Target => self.steps - self.took[self.upos[p] as usize],
+        }
     }
 
     /// Steps (i) to (iii) of section 4 for the unit at `p`: its reachable positions, their
-    /// differences, and its choice, `None` for staying where it is. The MRF weighs "no motion"
-    /// (i = 0, D_0) and each reachable position by exp(-D_i / T) (section 4.2); steepest
-    /// descent takes the option of least difference among the same ("always selected"), ties
-    /// broken at random; random selection takes one of the reachable positions, each alike, so
-    /// a unit that can move does.
-    pub(super) fn decide(&mut self, p: usize, temp: f64, s: &mut Scratch) -> Option<usize> {
+    /// differences, and its choice by the selection rule (`select.rs`), `None` for staying
+    /// where it is. Its options are "no motion" (i = 0, D_0) and its reachable positions; with
+    /// a light and the priority on positions, only the reachable positions that approach the
+    /// light when it has any (section 6). Random selection leaves "no motion" out when
+    /// `random_stays` is false (model version 4 and before).
+    pub(super) fn decide(&mut self, p: usize, s: &mut Scratch) -> Option<usize> {
         self.st.reachable(p, s);
         if s.moves.is_empty() {
             return None;
         }
-        let target = self.target[p];
-        self.options.clear();
-        if self.selection != Selection::Random {
-            self.options.push((p as u32, self.d0(p)));
-        }
-        for m in &s.moves {
-            let d = self.difference(target, &self.st.profile_after(p, m.dest as usize));
-            self.options.push((m.dest, d));
-        }
-        let n = self.options.len();
-        let least = self
-            .options
-            .iter()
-            .map(|o| o.1)
-            .fold(f64::INFINITY, f64::min);
-        self.weights.clear();
-        let pick = match self.selection {
-            Selection::Mrf => {
-                for o in &self.options {
-                    self.weights.push(math::exp(-(o.1 - least) / temp));
-                }
-                self.rng.weighted(&self.weights).unwrap_or(0)
-            }
-            Selection::Random => self.rng.index(n),
-            Selection::Steepest => {
-                for o in &self.options {
-                    self.weights.push(if o.1 == least { 1.0 } else { 0.0 });
-                }
-                self.rng.weighted(&self.weights).unwrap_or(0)
-            }
+        let unit = UnitState {
+            cell: p as u32,
+            difference: self.d0(p),
+            target: self.target[p],
+            steps_on_target: self.steps_on_target(p),
         };
-        let dest = self.options[pick].0 as usize;
-        (dest != p).then_some(dest)
+        let mut options = std::mem::take(&mut self.options);
+        options.clear();
+        if self.selection != Selection::Random || self.random_stays {
+            options.push(Position {
+                cell: p as u32,
+                difference: unit.difference,
+            });
+        }
+        let here = self.along_light(p);
+        let ahead = self.light.is_some()
+            && self.priority == Priority::Positions
+            && s.moves
+                .iter()
+                .any(|m| self.along_light(m.dest as usize) > here);
+        for m in &s.moves {
+            if ahead && self.along_light(m.dest as usize) <= here {
+                continue;
+            }
+            let profile = self.st.profile_after(p, m.dest as usize);
+            options.push(Position {
+                cell: m.dest,
+                difference: self.difference(unit.target, &profile),
+            });
+        }
+        let temperature = self.temperature(p);
+        let choice = select(
+            self.selection,
+            &options,
+            temperature,
+            &unit,
+            &mut self.rng,
+            &mut self.weights,
+        );
+        self.options = options;
+        match choice {
+            Choice::Stay => None,
+            Choice::Move(c) => Some(c as usize),
+        }
     }
 }

@@ -104,6 +104,8 @@ impl Structure {
             if !self.occupied(q) {
                 continue;
             }
+            // The cells around this carrier, read once for its axes.
+            let mut around = None;
             let bond_axis = k / 2;
             for a in 0..3 {
                 if a == bond_axis {
@@ -122,7 +124,7 @@ impl Structure {
                     pending[n] = dest as u32;
                     n += 1;
                 }
-                if n > 0 && self.stays_connected(p, Some((q, a)), s) {
+                if n > 0 && self.stays_connected_around(p, Some((q, a)), s, &mut around) {
                     for &dest in &pending[..n] {
                         s.moves.push(Move {
                             dest,
@@ -168,6 +170,18 @@ impl Structure {
         carrier: Option<(usize, usize)>,
         s: &mut Scratch,
     ) -> bool {
+        self.stays_connected_around(p, carrier, s, &mut None)
+    }
+
+    /// [`Structure::stays_connected`] with the occupied cells of the box around the carrier (or
+    /// p) in `around` once read, for the next check around the same centre.
+    fn stays_connected_around(
+        &self,
+        p: usize,
+        carrier: Option<(usize, usize)>,
+        s: &mut Scratch,
+        around: &mut Option<u128>,
+    ) -> bool {
         s.checks += 1;
         s.terminals.clear();
         for d in 0..6 {
@@ -187,37 +201,19 @@ impl Structure {
         if s.terminals.len() <= 1 {
             return true;
         }
-        if self.local_join(p, carrier) {
+        let centre = carrier.map_or(p, |(q, _)| q);
+        let occupied = *around.get_or_insert_with(|| self.box_around(centre));
+        if self.local_join(p, carrier, occupied) {
             return true;
         }
         s.searches += 1;
         self.global_join(p, carrier, s)
     }
 
-    /// Tries to join the terminals without leaving the 5×5×5 cells around the carrier (around
-    /// p when there is none). Success proves the answer is yes.
-    ///
-    /// The box fits in the 125 low bits of a `u128`, one bit per cell (x fastest), so the search
-    /// is a flood fill by whole-box shifts: a handful of word operations per layer of the search
-    /// instead of a stack and a visited mark per cell. That is the same search as walking cell by
-    /// cell, and much faster, in wasm especially (its engines keep no Vec pointers in registers
-    /// across a loop of pushes and loads, so the walk cost about twice what it costs natively).
-    fn local_join(&self, p: usize, carrier: Option<(usize, usize)>) -> bool {
-        let centre = match carrier {
-            Some((q, _)) => q,
-            None => p,
-        };
-        // Bits are found from the centre (bit 62) by steps along the directions, with no
-        // division: p is the centre or next to it, every terminal next to p or the carrier.
-        let p_bit = match carrier {
-            Some((q, _)) => match (0..6).find(|&d| self.nb(q, d) == p) {
-                Some(d) => (62 + BOX_STEP[d]) as u32,
-                None => return false,
-            },
-            None => 62,
-        };
-        // The occupied cells of the box, p lifted out. Built in two 64-bit halves: wasm has no
-        // 128-bit shift by a variable amount and calls a helper for each.
+    /// The occupied cells of the 5×5×5 box around `centre` (bit x + 5y + 25z from its corner).
+    /// Built in two 64-bit halves: wasm has no 128-bit shift by a variable amount and calls a
+    /// helper for each.
+    fn box_around(&self, centre: usize) -> u128 {
         let (mut lo, mut hi) = (0u64, 0u64);
         let corner = centre as isize - 2 - 2 * self.stride[2] - 2 * self.stride[4];
         for z in 0..5 {
@@ -236,7 +232,28 @@ impl Structure {
                 }
             }
         }
-        let occ = (u128::from(lo) | (u128::from(hi) << 64)) & !one(p_bit);
+        u128::from(lo) | (u128::from(hi) << 64)
+    }
+
+    /// Tries to join the terminals without leaving the 5×5×5 cells around the carrier (around
+    /// p when there is none). Success proves the answer is yes.
+    ///
+    /// The box fits in the 125 low bits of a `u128`, one bit per cell (x fastest), so the search
+    /// is a flood fill by whole-box shifts: a handful of word operations per layer of the search
+    /// instead of a stack and a visited mark per cell. That is the same search as walking cell by
+    /// cell, and much faster, in wasm especially (its engines keep no Vec pointers in registers
+    /// across a loop of pushes and loads, so the walk cost about twice what it costs natively).
+    fn local_join(&self, p: usize, carrier: Option<(usize, usize)>, occupied: u128) -> bool {
+        // Bits are found from the centre (bit 62) by steps along the directions, with no
+        // division: p is the centre or next to it, every terminal next to p or the carrier.
+        let p_bit = match carrier {
+            Some((q, _)) => match (0..6).find(|&d| self.nb(q, d) == p) {
+                Some(d) => (62 + BOX_STEP[d]) as u32,
+                None => return false,
+            },
+            None => 62,
+        };
+        let occ = occupied & !one(p_bit);
         // The carrier holds on only along its axis: take it out of the flood and let it join
         // its two axis neighbours to each other.
         let (bridge, q_bit) = match carrier {

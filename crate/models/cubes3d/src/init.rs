@@ -86,11 +86,17 @@ impl Cubes {
             target: vec![0; len],
             diff: Vec::with_capacity(start.len()),
             stable: Vec::with_capacity(start.len()),
+            took: Vec::with_capacity(start.len()),
             whole_diffs: whole_diffs(&table, spec.w),
             table,
             w: spec.w,
             c: spec.c,
+            log: spec.log,
+            clock: spec.clock,
+            run_temperature: f64::NAN,
             selection: spec.selection,
+            random_stays: spec.random_stays,
+            priority: spec.priority,
             movers: spec.movers,
             mover_distance: spec.mover_distance,
             ground: spec.ground,
@@ -123,6 +129,7 @@ impl Cubes {
             model.units.push(c as u32);
             model.diff.push(f64::NAN);
             model.stable.push(0);
+            model.took.push(0);
         }
         model.recompute_all();
         if model.targets.len() == 1 && model.zero == model.units.len() {

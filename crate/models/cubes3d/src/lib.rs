@@ -19,10 +19,9 @@ use std::borrow::Cow;
 
 use serde_json::{Map, Value};
 
-use kumiki_model::entry::{self, ModelEntry, Query};
+use kumiki_model::entry::{self, ModelEntry, Pin, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
-use kumiki_model::math;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
 
@@ -36,6 +35,7 @@ pub mod metrics;
 pub mod motion;
 pub mod paper;
 pub mod queries;
+mod select;
 mod spec;
 mod state;
 mod switch;
@@ -46,14 +46,16 @@ mod view;
 use connect::Scratch;
 use motion::Structure;
 pub use queries::{query_check, query_derive};
-pub use spec::{Checked, Ground, Selection, Spec, TargetSpec};
+pub use spec::{Checked, Clock, Ground, Log, Priority, Selection, Spec, TargetSpec};
 use types::CODES;
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "cubes3d",
     title: "3-D units: type-list targets and stochastic relaxation",
     default_max_steps: 5000,
-    model_version: 4,
+    // 5: the light's priority on each unit's positions, each unit's clock restarting at its
+    // switch of target (section 6), and "no motion" among random selection's options.
+    model_version: 5,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
@@ -71,7 +73,24 @@ pub const ENTRY: ModelEntry = ModelEntry {
             run: query_check,
         },
     ],
-    pins: &[],
+    // Links made before version 5 replay with the readings they were made with.
+    pins: &[
+        Pin {
+            before: 5,
+            key: "priority",
+            value: "\"units\"",
+        },
+        Pin {
+            before: 5,
+            key: "clock",
+            value: "\"run\"",
+        },
+        Pin {
+            before: 5,
+            key: "random_stays",
+            value: "false",
+        },
+    ],
 };
 
 /// The most targets any limits allow: target numbers fit the per-cell byte and a counting array.
@@ -119,13 +138,22 @@ pub struct Cubes {
     /// Consecutive steps each unit's D_0 has stayed under its target's threshold, in the order
     /// of `units`.
     stable: Vec<u32>,
+    /// The step after which each unit took up its current target (0 for the start), in the
+    /// order of `units`: its clock of equation 8 with `clock` "target".
+    took: Vec<u64>,
     table: [[f64; CODES]; CODES],
     w: f64,
     /// Every D_0 is a whole number small enough that their sum is exact in any order (the
     /// default W and a are): [`Cubes::total_difference`] then adds in several lanes at once.
     whole_diffs: bool,
     c: f64,
+    log: Log,
+    clock: Clock,
+    /// T of this step on the run's clock.
+    run_temperature: f64,
     selection: Selection,
+    random_stays: bool,
+    priority: Priority,
     movers: u32,
     mover_distance: u32,
     ground: Ground,
@@ -160,7 +188,7 @@ pub struct Cubes {
     deferred: Vec<(u32, u32)>,
     /// Cells the units that moved this step arrived at.
     arrived: Vec<u32>,
-    options: Vec<(u32, f64)>,
+    options: Vec<select::Position>,
     weights: Vec<f64>,
     events: Vec<Event>,
 }
@@ -181,9 +209,9 @@ impl Model for Cubes {
 
     fn step(&mut self) {
         self.events.clear();
-        let temp = self.c / math::ln_1p((self.steps + 1) as f64);
+        self.run_temperature = self.temperature_at(self.steps + 1);
         let mut s = std::mem::take(&mut self.scratch);
-        self.move_units(temp, &mut s);
+        self.move_units(&mut s);
         self.scratch = s;
         self.steps += 1;
         if self.targets.len() > 1 {
@@ -217,6 +245,13 @@ impl Model for Cubes {
         h.bytes(&self.target);
         for &s in &self.stable {
             h.u32(s);
+        }
+        // The clocks count only with the per-target clock and two or more targets; the run's
+        // clock is the step count.
+        if self.targets.len() > 1 && self.clock == Clock::Target {
+            for &t in &self.took {
+                h.u64(t);
+            }
         }
         h.u64(self.switches);
         h.u64(self.reached.map_or(0, |s| s + 1));

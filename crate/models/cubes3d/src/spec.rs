@@ -23,6 +23,53 @@ pub enum Selection {
     Steepest,
 }
 
+/// Where the light's priority applies (section 6: "the units assign a higher moving priority to
+/// reachable positions approaching the light source").
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Priority {
+    /// On each unit's own reachable positions: a unit that can approach the light chooses among
+    /// staying and the positions that approach it; the others only when it has none.
+    #[default]
+    Positions,
+    /// On the units (model version 4 and before): each unit chooses among all its positions, and
+    /// a unit whose choice approaches the light moves before one whose choice does not.
+    Units,
+    /// None: the light only holds the units that see it when they switch to a target with
+    /// `hold_lit`.
+    None,
+}
+
+/// Which steps t of equation 8 counts.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Clock {
+    /// The steps since the unit took up its current target: with two or more targets, each
+    /// switch starts the process (i)-(iii) of section 4 anew (section 6). With one target the
+    /// same as `run`.
+    #[default]
+    Target,
+    /// The steps of the whole run (model version 4 and before): T is not reset at a switch.
+    Run,
+}
+
+/// The logarithm of equation 8.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Log {
+    /// The natural logarithm, as in Geman and Geman's schedule, which section 4.2 cites.
+    #[default]
+    Natural,
+    /// The base-10 logarithm: T is ln 10 ≈ 2.3 times higher at every step.
+    Ten,
+}
+
 #[derive(
     Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize, Serialize, schemars::JsonSchema,
 )]
@@ -85,6 +132,22 @@ pub struct Spec {
     /// t_stable of section 6: steps a unit stays under its target's threshold before it switches.
     #[serde(default = "default_stable_steps")]
     pub(super) stable_steps: u32,
+    /// Where the light's priority applies: on each unit's reachable positions (section 6), on
+    /// which unit's chosen move goes first (model version 4 and before), or nowhere.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub(super) priority: Priority,
+    /// What t of equation 8 counts: the steps since the unit took up its current target, or the
+    /// steps of the run (model version 4 and before).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub(super) clock: Clock,
+    /// The logarithm of equation 8, natural or base 10.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub(super) log: Log,
+    /// Whether random selection counts "no motion" (i = 0) among its options, as the MRF and
+    /// steepest descent do; false: it always takes a reachable position (model version 4 and
+    /// before).
+    #[serde(default = "yes", skip_serializing_if = "is_yes")]
+    pub(super) random_stays: bool,
     /// With a single target, end the run when it is complete (every unit's D_0 is 0). False
     /// lets the units go on choosing after that, as the figures' fixed-length runs of the
     /// comparison rules need.
@@ -331,6 +394,9 @@ fn yes() -> bool {
 }
 fn is_yes(b: &bool) -> bool {
     *b
+}
+fn is_default<T: Default + PartialEq>(v: &T) -> bool {
+    *v == T::default()
 }
 
 pub(super) fn light_dir(text: &str) -> Result<usize> {

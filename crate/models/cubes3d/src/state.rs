@@ -119,6 +119,7 @@ impl Cubes {
         self.units.swap_remove(k);
         self.diff.swap_remove(k);
         self.stable.swap_remove(k);
+        self.took.swap_remove(k);
         if k < self.units.len() {
             self.upos[self.units[k] as usize] = k as u32;
         }

@@ -19,6 +19,7 @@ impl Cubes {
     pub(super) fn switch_unit(&mut self, c: usize, to: usize) {
         self.target[c] = to as u8;
         self.stable[self.upos[c] as usize] = 0;
+        self.took[self.upos[c] as usize] = self.steps;
         self.switches += 1;
         self.flags[c] &= !HELD_LIT;
         if self.targets[to].hold_lit && self.lit(c) {

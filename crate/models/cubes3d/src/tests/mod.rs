@@ -97,6 +97,8 @@ fn random_units(rng: &mut Rng, n: usize, span: i32, sparse: bool) -> BTreeSet<C>
     units
 }
 
+mod light;
 mod motion;
+mod rules;
 mod runs;
 mod typelists;

@@ -4,7 +4,7 @@ use super::*;
 use kumiki_core::models;
 
 /// Everything the incremental bookkeeping maintains, recomputed from scratch.
-fn check_invariants(m: &Cubes) {
+pub(super) fn check_invariants(m: &Cubes) {
     let occupied: Vec<usize> = m.st.units();
     assert_eq!(
         occupied.len(),
@@ -19,6 +19,8 @@ fn check_invariants(m: &Cubes) {
     );
     assert_eq!(m.diff.len(), m.units.len());
     assert_eq!(m.stable.len(), m.units.len());
+    assert_eq!(m.took.len(), m.units.len());
+    assert!(m.took.iter().all(|&t| t <= m.steps));
     for (k, &u) in m.units.iter().enumerate() {
         assert_eq!(m.upos[u as usize], k as u32);
     }
