@@ -52,8 +52,24 @@ pub struct ModelEntry {
 pub struct Pin {
     pub before: u32,
     pub key: &'static str,
-    /// The setting's value as JSON text.
-    pub value: &'static str,
+    pub value: PinValue,
+}
+
+/// The value a [`Pin`] sets: a choice's name or a switch. Typed rather than JSON text, so the
+/// page's module opens a pinned link without linking a JSON text parser.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PinValue {
+    Choice(&'static str),
+    Switch(bool),
+}
+
+impl PinValue {
+    fn to_value(self) -> Value {
+        match self {
+            PinValue::Choice(name) => Value::String(name.into()),
+            PinValue::Switch(on) => Value::Bool(on),
+        }
+    }
 }
 
 impl ModelEntry {
@@ -62,8 +78,7 @@ impl ModelEntry {
     pub fn pin(&self, made_with: u32, doc: &mut Map<String, Value>) {
         for pin in self.pins.iter().filter(|p| made_with < p.before) {
             if !doc.contains_key(pin.key) {
-                let value = serde_json::from_str(pin.value).expect("a pin's value is JSON");
-                doc.insert(pin.key.into(), value);
+                doc.insert(pin.key.into(), pin.value.to_value());
             }
         }
     }

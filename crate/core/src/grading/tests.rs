@@ -3,9 +3,29 @@ use crate::playback::Playback;
 use crate::{lessons, presets, Run, Scenario};
 use serde_json::json;
 
-/// A scenario of preset `preset` with the exercise `exercise`, read as a link would be.
+/// The L as the issue's page ran it (AMAS before model version 3): standing on its foot, each
+/// robot drawing among equal neighbours and every collision loser giving way. The issue's figures
+/// ("Goal met at step 190") are of that run; the tests keep them rather than follow the model.
+fn amas_l() -> Value {
+    let mut doc = presets::scenario("amas-L").unwrap().to_value();
+    doc["target"] = json!("####..........\n".repeat(8) + &"##############\n".repeat(4));
+    as_in_the_issue(doc)
+}
+
+/// `doc` with AMAS's readings before model version 3.
+fn as_in_the_issue(mut doc: Value) -> Value {
+    doc["direction"] = json!("robot");
+    doc["give_way"] = json!("every_loser");
+    doc
+}
+
+/// A scenario of preset `preset` (the L as the issue ran it for `amas-L`) with the exercise
+/// `exercise`, read as a link would be.
 fn with_exercise(preset: &str, exercise: Value) -> Scenario {
-    let mut doc = presets::scenario(preset).unwrap().to_value();
+    let mut doc = match preset {
+        "amas-L" => amas_l(),
+        _ => presets::scenario(preset).unwrap().to_value(),
+    };
     doc["exercise"] = exercise;
     Scenario::from_value(doc).unwrap()
 }
@@ -57,7 +77,7 @@ fn a_remove_click_that_would_meet_the_goal_is_refused_and_fails_the_hand_in() {
         "amas-L",
         json!({
             "title": "Faster with fewer collisions",
-            "locked": {"target": presets::scenario("amas-L").unwrap().to_value()["target"], "seed": 1, "collision": "token"},
+            "locked": {"target": amas_l()["target"], "seed": 1, "collision": "token"},
             "goal": "completed and steps <= 200 and metrics.collisions < 20"
         }),
     );
@@ -122,7 +142,10 @@ fn an_allowed_click_is_taken_and_graded_and_one_more_is_refused() {
 /// target unchanged.
 #[test]
 fn a_mark_to_be_removed_click_no_longer_meets_the_heatmap_lesson() {
-    let lesson = lessons::scenario("lesson-amas-heatmap").unwrap();
+    let lesson = Scenario::from_value(as_in_the_issue(
+        lessons::scenario("lesson-amas-heatmap").unwrap().to_value(),
+    ))
+    .unwrap();
     let dismantle = json!({"kind": "dismantle", "cells": [115]});
     assert_eq!(
         click(&lesson, 40, dismantle.clone())
@@ -148,7 +171,7 @@ fn a_mark_to_be_removed_click_no_longer_meets_the_heatmap_lesson() {
 /// The issue's third case: "Add target cell" changed a locked target.
 #[test]
 fn an_add_target_cell_click_is_refused_where_the_target_is_locked() {
-    let target = presets::scenario("amas-L").unwrap().to_value()["target"].clone();
+    let target = amas_l()["target"].clone();
     let teacher = with_exercise(
         "amas-L",
         json!({"title": "t", "locked": {"target": target}, "goal": "completed"}),
@@ -262,7 +285,7 @@ fn the_class_exercise_is_taken_from_the_hand_ins_and_a_re_authored_one_fails() {
         "not replayed: its exercise is not the class's (locked.seed differs); it changed locked fields (seed: 1 → 7)"
     );
     assert!(grade(fair, &class, &mut no_clock).unwrap().met);
-    let none = Teacher::from_handins([presets::scenario("amas-L").unwrap().to_value()]);
+    let none = Teacher::from_handins([amas_l()]);
     assert!(none
         .unwrap_err()
         .to_string()
@@ -460,7 +483,7 @@ fn the_grade_table_is_one_csv_for_the_cli_and_the_page() {
 #[test]
 fn old_hand_ins_graded_from_their_links_take_the_teachers_disturbances_from_most_of_them() {
     let old = |disturbances: Value| {
-        let mut doc = presets::scenario("amas-L").unwrap().to_value();
+        let mut doc = amas_l();
         doc["exercise"] =
             json!({"title": "t", "locked": {"seed": 1}, "goal": "completed and steps <= 200"});
         if !disturbances.is_null() {

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use serde_json::{Map, Value};
 
-use kumiki_model::entry::{self, ModelEntry, Pin};
+use kumiki_model::entry::{self, ModelEntry, Pin, PinValue};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model};
@@ -51,12 +51,12 @@ pub const ENTRY: ModelEntry = ModelEntry {
         Pin {
             before: 3,
             key: "direction",
-            value: "\"robot\"",
+            value: PinValue::Choice("robot"),
         },
         Pin {
             before: 3,
             key: "give_way",
-            value: "\"every_loser\"",
+            value: PinValue::Choice("every_loser"),
         },
     ],
 };

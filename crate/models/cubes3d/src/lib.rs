@@ -19,7 +19,7 @@ use std::borrow::Cow;
 
 use serde_json::{Map, Value};
 
-use kumiki_model::entry::{self, ModelEntry, Pin, Query};
+use kumiki_model::entry::{self, ModelEntry, Pin, PinValue, Query};
 use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
@@ -78,17 +78,17 @@ pub const ENTRY: ModelEntry = ModelEntry {
         Pin {
             before: 5,
             key: "priority",
-            value: "\"units\"",
+            value: PinValue::Choice("units"),
         },
         Pin {
             before: 5,
             key: "clock",
-            value: "\"run\"",
+            value: PinValue::Choice("run"),
         },
         Pin {
             before: 5,
             key: "random_stays",
-            value: "false",
+            value: PinValue::Switch(false),
         },
     ],
 };
