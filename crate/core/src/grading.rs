@@ -183,6 +183,7 @@ pub fn grade(handin: &crate::Scenario, original: Option<&crate::Scenario>) -> Re
         metrics: &outcome.metrics,
         scenario: &doc,
     });
+    let check = with_stop(check, outcome.stopped.as_deref());
     let locked_edited = locked_edits(exercise, &doc);
     let (changed, exercise_edited) = match original {
         // The name is left out: Hand in writes the student's name into it.
@@ -248,6 +249,18 @@ pub fn with_locks(check: Check, exercise: &Exercise, doc: &Value) -> Check {
                 edits.join(", "),
                 check.because
             ),
+        },
+    }
+}
+
+/// A goal's verdict on a run that a rule's script stopped (it went past a cap or failed): never
+/// met, whatever the goal, and the stop is the reason.
+pub fn with_stop(check: Check, stopped: Option<&str>) -> Check {
+    match stopped {
+        None => check,
+        Some(why) => Check {
+            met: false,
+            because: format!("a rule's script stopped the run: {why}"),
         },
     }
 }

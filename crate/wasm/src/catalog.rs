@@ -50,3 +50,17 @@ pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, J
         .map(|v| v.to_string())
         .map_err(js_err)
 }
+
+/// Every model's rule slots: `[{model, slot: {name, title, about, input, output, paper, random}}]`
+/// (`kumiki_core::rules::SlotDoc`), the paper's rule as each slot's script.
+#[wasm_bindgen]
+pub fn rule_slots() -> Result<JsValue, JsError> {
+    to_js(&kumiki_core::rules::slots())
+}
+
+/// Whether this module runs rule scripts: false in the page's first-load module, true in its
+/// rules module (kumiki_wasm_rules), which the page loads for a scenario that carries `rules`.
+#[wasm_bindgen]
+pub fn rules_engine() -> bool {
+    kumiki_core::rules::ENGINE
+}

@@ -93,6 +93,11 @@ impl Sim {
         self.run().steps() as f64
     }
 
+    /// Why a rule's script stopped the run (the rule, the line and the cap), or undefined.
+    pub fn stopped(&self) -> Option<String> {
+        self.run().stopped().map(str::to_string)
+    }
+
     pub fn finished(&self) -> bool {
         self.run().finished()
     }
@@ -239,7 +244,9 @@ impl Sim {
             metrics: &outcome.metrics,
             scenario: &doc,
         });
-        // A locked field away from the teacher's value is never "Goal met".
+        // A locked field away from the teacher's value is never "Goal met", nor is a run a
+        // rule's script stopped.
+        let check = grading::with_stop(check, outcome.stopped.as_deref());
         to_js(&grading::with_locks(check, exercise, &doc))
     }
 }

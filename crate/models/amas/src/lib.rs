@@ -42,6 +42,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
+    slots: &[],
     queries: &[],
 };
 
