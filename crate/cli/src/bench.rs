@@ -112,6 +112,10 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
         .ok_or_else(|| err("name is required"))?
         .to_string();
     let experiment = v["experiment"].as_str().map(str::to_string);
+    let stops = match v["stops"].as_str() {
+        None => Vec::new(),
+        Some(file) => hostile(file).map_err(|e| err(&e))?,
+    };
     let scenario = match (&v["scenario"], &experiment) {
         (Value::String(preset), _) => presets::scenario(preset).map_err(|e| err(&e.to_string()))?,
         (obj @ Value::Object(_), _) => {
@@ -121,6 +125,7 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
             let e = Experiment::named_or_json(exp).map_err(|e| err(&e.to_string()))?;
             e.scenarios[0].clone()
         }
+        (Value::Null, None) if !stops.is_empty() => stops[0].1.clone(),
         _ => {
             return Err(err(
                 "scenario (a preset name or object) or experiment is required",
@@ -141,10 +146,6 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
             overrides.push((format!("rules.{}", slot.name), slot.paper.into()));
         }
     }
-    let stops = match v["stops"].as_str() {
-        None => Vec::new(),
-        Some(file) => hostile(file).map_err(|e| err(&e))?,
-    };
     let scenario = scenario
         .with_overrides(&overrides)
         .map_err(|e| err(&e.to_string()))?;
