@@ -32,7 +32,7 @@ export function scenarioJson(spec) {
   const set = { ...spec.set };
   if (spec.rules === 'paper') {
     const model = JSON.parse(json).model;
-    for (const { slot } of wasm.rule_slots().filter((s) => s.model === model)) set[`rules.${slot.name}`] = slot.paper;
+    for (const { slot } of wasmRules.rule_slots().filter((s) => s.model === model)) set[`rules.${slot.name}`] = slot.paper;
   }
   if (Object.keys(set).length === 0) return json;
   const draft = new wasm.Draft(Number.MAX_SAFE_INTEGER);

@@ -16,7 +16,6 @@
 //! does not run ([`ENGINE`] says which build this is). With the engine, reading a scenario also
 //! reads each script, so a syntax error is refused at its line like any other field.
 
-use std::collections::BTreeMap;
 #[cfg(feature = "rules")]
 use std::rc::Rc;
 
@@ -35,9 +34,10 @@ pub const KEY: &str = "rules";
 /// Whether this build runs scripts: false in the page's first-load module.
 pub const ENGINE: bool = cfg!(feature = "rules");
 
-/// The scripts of a scenario, by slot, in slot-name order.
+/// The scripts of a scenario, by slot, in slot-name order (a model has a few slots: a list keeps
+/// the page's first-load module free of another map's code).
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Rules(BTreeMap<String, String>);
+pub struct Rules(Vec<(String, String)>);
 
 impl Rules {
     /// Reads the `rules` section of a scenario of `entry`'s model: an object of slot names and
@@ -54,7 +54,8 @@ impl Rules {
                 ))
             }
         };
-        let mut rules = BTreeMap::new();
+        // A JSON object's keys come in order (serde_json's map is sorted).
+        let mut rules = Vec::new();
         for (slot, value) in entries {
             let path = format!("{KEY}.{slot}");
             let info = slot_info(entry, &slot).ok_or_else(|| {
@@ -91,7 +92,7 @@ impl Rules {
             kumiki_rules::check(*info, &source)?;
             #[cfg(not(feature = "rules"))]
             let _ = info;
-            rules.insert(slot, source);
+            rules.push((slot, source));
         }
         Ok(Rules(rules))
     }
@@ -107,11 +108,10 @@ impl Rules {
 
     /// The section as a scenario writes it.
     pub fn to_value(&self) -> Value {
-        let entries: Map<String, Value> = self
-            .0
-            .iter()
-            .map(|(k, v)| (k.clone(), Value::String(v.clone())))
-            .collect();
+        let mut entries = Map::new();
+        for (slot, source) in &self.0 {
+            entries.insert(slot.clone(), Value::String(source.clone()));
+        }
         Value::Object(entries)
     }
 
@@ -132,9 +132,9 @@ impl Rules {
         #[cfg(not(feature = "rules"))]
         {
             let _ = (model, entry);
-            match self.0.keys().next() {
+            match self.0.first() {
                 None => Ok(Installed),
-                Some(slot) => Err(Error::field(
+                Some((slot, _)) => Err(Error::field(
                     format!("{KEY}.{slot}"),
                     "this build has no script engine: a scenario with rules runs in the page's rules module (kumiki_wasm_rules) or with kumiki run",
                 )),

@@ -18,6 +18,8 @@ use std::rc::Rc;
 
 use schemars::JsonSchema;
 use serde::de::DeserializeOwned;
+#[cfg(feature = "scripts")]
+use serde::Deserialize;
 use serde::Serialize;
 use serde_json::Value;
 
@@ -90,8 +92,10 @@ pub trait Script {
 }
 
 /// What a model holds for one of its slots: the paper's rule, or a script in its place. A copy
-/// (a keyframe of the run) shares the script.
+/// (a keyframe of the run) shares the script. Without the `scripts` feature (the page's
+/// first-load module, which has no engine) it is always the paper's rule.
 pub struct Rule<S> {
+    #[cfg(feature = "scripts")]
     script: Option<Rc<dyn Script>>,
     slot: PhantomData<fn() -> S>,
 }
@@ -99,6 +103,7 @@ pub struct Rule<S> {
 impl<S> Clone for Rule<S> {
     fn clone(&self) -> Self {
         Rule {
+            #[cfg(feature = "scripts")]
             script: self.script.clone(),
             slot: PhantomData,
         }
@@ -108,6 +113,7 @@ impl<S> Clone for Rule<S> {
 impl<S> Default for Rule<S> {
     fn default() -> Self {
         Rule {
+            #[cfg(feature = "scripts")]
             script: None,
             slot: PhantomData,
         }
@@ -116,50 +122,75 @@ impl<S> Default for Rule<S> {
 
 impl<S> std::fmt::Debug for Rule<S> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self.script {
-            Some(_) => f.write_str("Rule(script)"),
-            None => f.write_str("Rule(paper)"),
+        match self.scripted() {
+            true => f.write_str("Rule(script)"),
+            false => f.write_str("Rule(paper)"),
         }
     }
 }
 
-impl<S: Slot> Rule<S> {
+impl<S> Rule<S> {
     /// The paper's rule.
     pub fn paper() -> Self {
         Rule::default()
     }
 
-    /// Puts `script` in place of the paper's rule.
+    /// Puts `script` in place of the paper's rule. Only a build with the engine makes scripts,
+    /// and it has the `scripts` feature (the core's `rules` feature turns both on).
     pub fn install(&mut self, script: Rc<dyn Script>) {
-        self.script = Some(script);
+        #[cfg(feature = "scripts")]
+        {
+            self.script = Some(script);
+        }
+        #[cfg(not(feature = "scripts"))]
+        {
+            let _ = script;
+            unreachable!("a script in a build without the contract's scripts feature")
+        }
     }
 
     pub fn scripted(&self) -> bool {
-        self.script.is_some()
-    }
-
-    /// The decision for `input`: the built-in's, or the script's read as the slot's output.
-    #[inline]
-    pub fn decide(&self, input: &S::Input, rng: Option<&mut Rng>) -> Result<S::Output, Stop> {
-        let Some(script) = &self.script else {
-            return Ok(S::paper(input, rng));
-        };
-        let value = serde_json::to_value(input).expect("a slot's input serialises");
-        let answer = script.call(value, rng)?;
-        let shown = answer.to_string();
-        serde_json::from_value(answer).map_err(|_| {
-            let info = S::INFO;
-            Stop(format!(
-                "rule '{}' answered {}; it must answer {}",
-                info.name,
-                cut(&shown, 80),
-                info.output
-            ))
-        })
+        #[cfg(feature = "scripts")]
+        return self.script.is_some();
+        #[cfg(not(feature = "scripts"))]
+        false
     }
 }
 
+impl<S: Slot> Rule<S> {
+    /// The decision for `input`: the built-in's, or the script's read as the slot's output.
+    #[inline]
+    pub fn decide(&self, input: &S::Input, rng: Option<&mut Rng>) -> Result<S::Output, Stop> {
+        #[cfg(feature = "scripts")]
+        if let Some(script) = &self.script {
+            return ask::<S>(script.as_ref(), input, rng);
+        }
+        Ok(S::paper(input, rng))
+    }
+}
+
+/// `script`'s decision for `input`, read as the slot's output.
+#[cfg(feature = "scripts")]
+fn ask<S: Slot>(
+    script: &dyn Script,
+    input: &S::Input,
+    rng: Option<&mut Rng>,
+) -> Result<S::Output, Stop> {
+    let value = serde_json::to_value(input).expect("a slot's input serialises");
+    let answer = script.call(value, rng)?;
+    S::Output::deserialize(&answer).map_err(|_| {
+        let info = S::INFO;
+        Stop(format!(
+            "rule '{}' answered {}; it must answer {}",
+            info.name,
+            cut(&answer.to_string(), 80),
+            info.output
+        ))
+    })
+}
+
 /// `text` cut to about `max` characters.
+#[cfg(feature = "scripts")]
 fn cut(text: &str, max: usize) -> String {
     match text.char_indices().nth(max) {
         Some((at, _)) => format!("{}…", &text[..at]),
@@ -167,10 +198,9 @@ fn cut(text: &str, max: usize) -> String {
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "scripts"))]
 mod tests {
     use super::*;
-    use serde::Deserialize;
     use std::cell::Cell;
 
     struct Double;

@@ -52,7 +52,9 @@ pub fn model_query(model: &str, name: &str, args_json: &str) -> Result<String, J
 }
 
 /// Every model's rule slots: `[{model, slot: {name, title, about, input, output, paper, random}}]`
-/// (`kumiki_core::rules::SlotDoc`), the paper's rule as each slot's script.
+/// (`kumiki_core::rules::SlotDoc`), the paper's rule as each slot's script. In the rules module
+/// only, which the page loads to edit or run rules.
+#[cfg(feature = "rules")]
 #[wasm_bindgen]
 pub fn rule_slots() -> Result<JsValue, JsError> {
     to_js(&kumiki_core::rules::slots())
