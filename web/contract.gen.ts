@@ -448,6 +448,11 @@ export interface Row2 {
   scenario_hash: string;
   seed: number;
   steps: number;
+  /**
+   * Why the run stopped before its end: a rule's script went past a cap or failed (the
+   * message names the rule, the line and the cap). Absent for a run that was not stopped.
+   */
+  stopped?: string | null;
   trace?: Trace | null;
   /** The program that ran it. */
   version: string;
@@ -482,6 +487,44 @@ export interface Series {
   /** In words: "collision: token", "adaptation: on". */
   label: string;
   points: Point[];
+}
+
+/**
+ * A rule slot as the page's editor and `kumiki rules` show it: its model and its documentation,
+ * with the paper's rule as a script.
+ */
+export interface SlotDoc {
+  model: string;
+  slot: SlotInfo;
+}
+
+/** One field of a slot's input, documented for the editor and docs/rules.md. */
+export interface SlotField {
+  about: string;
+  /** Its type in the script's words: `bool`, `int`, `float`, `string`, or a map or list of them. */
+  kind: string;
+  /** Its name in the script (`robot.first`). */
+  name: string;
+}
+
+/** What a slot is, for the reader of a scenario, the editor and docs/rules.md. */
+export interface SlotInfo {
+  /** What the decision is, where in a step it is taken, and who takes it. */
+  about: string;
+  /** The fields of the one argument the function is called with, a map. */
+  input: SlotField[];
+  /** The slot's key in a scenario's `rules`, and the name of the function its script defines. */
+  name: string;
+  /** What the function returns, in words: the values it may take. */
+  output: string;
+  /**
+   * The paper's rule written as a script: the built-in's source, and the editor's starting
+   * text. It gives the built-in's state hashes step by step (a test holds it to that).
+   */
+  paper: string;
+  /** The script may draw from the model's seeded generator (`random()`, `random_int(n)`). */
+  random: boolean;
+  title: string;
 }
 
 /** Where the class's exercise came from. */
@@ -614,4 +657,4 @@ export interface Versions {
 }
 
 /** The envelope's keys, in the order a form shows them (kumiki_model::entry::ENVELOPE). */
-export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"},{"key":"handin","role":"section"}];
+export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"rules","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"},{"key":"handin","role":"section"}];

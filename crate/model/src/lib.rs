@@ -12,6 +12,8 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //!   [`error`]: errors that name the field and the rule; [`sort`]: one stable sort for the cold
 //!   paths; [`stats`]: two conditions compared (effect sizes, the Mann-Whitney U test);
+//! - [`slot`]: the rule slots, decisions a model lets a user's script take in place of its
+//!   paper's rule;
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
@@ -28,6 +30,7 @@ pub mod report;
 pub mod rng;
 pub mod row;
 pub mod shape;
+pub mod slot;
 pub mod sort;
 pub mod stats;
 

@@ -8,6 +8,7 @@
 //! ([`Model::cells`], [`Model::field`]) plus small lists ([`Model::agents`], [`Model::events`]).
 
 use std::borrow::Cow;
+use std::rc::Rc;
 
 use schemars::JsonSchema;
 use serde::de::DeserializeOwned;
@@ -19,6 +20,7 @@ use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
 use crate::limits::Limits;
+use crate::slot::Script;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
@@ -276,6 +278,20 @@ pub trait Model: Snapshot {
     /// (the lattice's direction numbering). Empty when the model has no bonds to draw.
     fn bonds(&self) -> Cow<'_, [u8]> {
         Cow::Borrowed(&[])
+    }
+    /// Puts `script` in the rule slot named `slot` (one of its entry's
+    /// [`slots`](crate::entry::ModelEntry::slots)) in place of the paper's rule. A model without
+    /// slots keeps this default, which refuses.
+    fn install(&mut self, slot: &str, _script: Rc<dyn Script>) -> Result<()> {
+        Err(crate::Error::field(
+            format!("rules.{slot}"),
+            "this model has no rule slot of that name",
+        ))
+    }
+    /// Why the run stopped before its end (a rule's script went past a cap or failed), if it
+    /// did: a stopped model takes no more steps.
+    fn stopped(&self) -> Option<&str> {
+        None
     }
 }
 

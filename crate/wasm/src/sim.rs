@@ -93,6 +93,11 @@ impl Sim {
         self.run().steps() as f64
     }
 
+    /// Why a rule's script stopped the run (the rule, the line and the cap), or undefined.
+    pub fn stopped(&self) -> Option<String> {
+        self.run().stopped().map(str::to_string)
+    }
+
     pub fn finished(&self) -> bool {
         self.run().finished()
     }

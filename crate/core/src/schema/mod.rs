@@ -16,6 +16,7 @@ use crate::exercise::{Exercise, MAX_GOAL_CHARS};
 use crate::experiment::MAX_JOBS;
 use crate::models::MODELS;
 use crate::presets;
+use crate::rules;
 use crate::scenario::{FORMAT_VERSION, MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS, MAX_SEED, MAX_STEPS};
 
 mod pages;
@@ -59,6 +60,7 @@ pub fn scenario() -> Value {
             [&exercise, &compare, &handin],
             &disturbance,
         );
+        properties.insert(rules::KEY.into(), rules_schema(entry.slots));
         if let Some(Value::Object(own)) = body.remove("properties") {
             properties.extend(own);
         }
@@ -133,6 +135,32 @@ fn envelope(
         Value::Object(map) => map,
         _ => unreachable!(),
     }
+}
+
+/// The envelope's `rules` of a model with `slots`: a script (or null, the paper's rule) for each
+/// slot, and no other key.
+fn rules_schema(slots: &[rules::SlotInfo]) -> Value {
+    let properties: Map<String, Value> = slots
+        .iter()
+        .map(|slot| {
+            let about = format!(
+                "{}. {} The script defines fn {}(input), which answers {}. null: the paper's rule.",
+                slot.title, slot.about, slot.name, slot.output
+            );
+            let node = json!({
+                "description": about,
+                "type": ["string", "null"],
+                "maxLength": rules::MAX_SOURCE_BYTES,
+            });
+            (slot.name.to_string(), node)
+        })
+        .collect();
+    json!({
+        "description": "Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule.",
+        "type": "object",
+        "properties": properties,
+        "additionalProperties": false,
+    })
 }
 
 /// The schema of an experiment file (docs/experiments.md).
@@ -348,6 +376,7 @@ pub fn contract() -> Value {
     generator.subschema_for::<crate::plot::figure::Figure>();
     generator.subschema_for::<crate::reproduce::Section>();
     generator.subschema_for::<crate::reproduce::Finding>();
+    generator.subschema_for::<crate::rules::SlotDoc>();
     let defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
     json!({ "$defs": defs })
 }
@@ -493,7 +522,8 @@ mod tests {
     #[test]
     fn the_envelope_table_is_the_envelopes_keys() {
         let (exercise, compare, handin, disturbance) = (json!({}), json!({}), json!({}), json!({}));
-        let schema = envelope("amas", "", 1, [&exercise, &compare, &handin], &disturbance);
+        let mut schema = envelope("amas", "", 1, [&exercise, &compare, &handin], &disturbance);
+        schema.insert(rules::KEY.into(), rules_schema(&[]));
         let mut keys: Vec<&str> = schema.keys().map(String::as_str).collect();
         let mut table: Vec<&str> = crate::scenario::ENVELOPE.iter().map(|k| k.key).collect();
         keys.sort_unstable();

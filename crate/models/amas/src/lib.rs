@@ -45,6 +45,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
+    slots: &[],
     queries: &[],
     // Links made before version 3 replay with the readings they were made with.
     pins: &[

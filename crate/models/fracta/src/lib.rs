@@ -69,6 +69,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::FaultAction>(),
+    slots: &[],
     queries: &[
         entry::Query {
             name: "derive",

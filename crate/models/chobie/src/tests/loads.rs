@@ -276,9 +276,9 @@ fn bridge_world(reserves: usize, depth: usize) -> String {
         r.push('\n');
         r
     };
-    let mut w = row(0, '#') + &row(reserves, '#') + &row(20, '#');
+    let mut w = row(0, '#') + row(reserves, '#').as_str() + row(20, '#').as_str();
     for _ in 0..depth {
-        w += &row(20, '=');
+        w += row(20, '=').as_str();
     }
     w
 }
