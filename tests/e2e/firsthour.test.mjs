@@ -24,7 +24,7 @@ describe('the first screen', () => {
     await page.waitForSelector('#welcome[open]');
     assert.match(await page.textContent('#welcome-what'), /^Kumiki is a playground/);
     assert.deepEqual(await page.$$eval('#welcome .way strong', (ws) => ws.map((w) => w.textContent)), [
-      "Watch a paper's experiment",
+      "Watch a paper's scenarios",
       'Take a lesson',
       'Build your own',
       'Compare two runs',
