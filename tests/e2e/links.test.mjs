@@ -25,9 +25,12 @@ test('a fixture link opens without a notice and runs to the hash it gave when it
   });
   assert.ok(entry, 'the fixture holds a link of an unchanged model');
   const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${entry.link}`);
-  // The header names the scenario, or an exercise by its title.
+  // The header names the scenario (a preset by its title in words, its code name beside it), or
+  // an exercise by its title.
   const doc = JSON.parse(wasm.decode_link(entry.link));
-  assert.equal(await page.textContent('#scenario-name'), doc.exercise?.title ?? entry.preset);
+  if (doc.exercise) assert.equal(await page.textContent('#scenario-name'), doc.exercise.title);
+  else assert.equal(await page.textContent('#scenario-code'), entry.preset);
+  assert.match(await page.textContent('#scenario-name'), /\S/);
   assert.ok(await page.isHidden('#link-notice'));
   await page.locator('#view').focus();
   for (let i = 0; i < entry.steps; i++) await page.keyboard.press('ArrowRight');
@@ -40,7 +43,7 @@ test('a fixture link opens without a notice and runs to the hash it gave when it
 test('a link made with another model version opens, with the notice; loading another scenario clears it', async () => {
   const current = wasm.link_model_versions(wasm.encode_link(wasm.preset_json('amas-L'))).current;
   const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${linkWithVersion('amas-L', current + 1)}`);
-  assert.equal(await page.textContent('#scenario-name'), 'amas-L');
+  assert.deepEqual([await page.textContent('#scenario-name'), await page.textContent('#scenario-code')], ['The L-shaped benchmark', 'amas-L']);
   await page.waitForSelector('#link-notice:not([hidden])');
   assert.equal(await page.textContent('#link-notice'), 'This link was made with a newer Kumiki; results may differ.');
   assert.equal(await page.getAttribute('#link-notice', 'role'), 'status');

@@ -18,7 +18,7 @@ export class Pictures {
       if (!entry.isIntersecting) continue;
       this.seen.unobserve(entry.target);
       const canvas = entry.target as HTMLCanvasElement;
-      this.ask(canvas.dataset.picture ?? '', canvas.dataset.lesson === 'true');
+      this.ask(canvas.dataset.picture ?? '', canvas.dataset.of === 'lesson');
     }
   });
 
@@ -30,7 +30,7 @@ export class Pictures {
     canvas.height = PICTURE.height * 2;
     canvas.setAttribute('aria-hidden', 'true');
     canvas.dataset.picture = name;
-    canvas.dataset.lesson = String(lesson);
+    canvas.dataset.of = lesson ? 'lesson' : 'preset';
     const picture = this.drawn.get(name);
     if (picture) paint(canvas, picture);
     else {
