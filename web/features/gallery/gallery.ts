@@ -18,8 +18,8 @@ const TITLES: Record<GalleryPart, string> = { lessons: 'Lessons', scenarios: "Th
 export function setupGallery(page: PageContext) {
   const { session, events } = page;
   document.body.append(markup(dialogHtml));
-  const presets: PresetInfo[] = core.presets();
-  const lessons: LessonInfo[] = core.lessons();
+  // Listing them reads and checks every built-in scenario: done when the gallery first opens.
+  let lists: { presets: PresetInfo[]; lessons: LessonInfo[] } | null = null;
   const choose = (name: string) => void session.open(core.presetJson(name), { opens: true });
   // A lesson opens on the run tab, where its exercise panel is.
   const chooseLesson = (name: string) =>
@@ -42,6 +42,8 @@ export function setupGallery(page: PageContext) {
   };
 
   const render = () => {
+    lists ??= { presets: core.presets(), lessons: core.lessons() };
+    const { presets, lessons } = lists;
     clear(list);
     const q = filter.value.trim().toLowerCase();
     const matches = (text: string) => !q || text.toLowerCase().includes(q);
