@@ -3,7 +3,7 @@
 // the metric tooltips go, and how the tabs gather the features' sections.
 import { describe, expect, it } from 'vitest';
 import type { MetricInfo } from '../../web/contract.gen';
-import { arrangeMetrics, metricCard } from '../../web/features/run/cards';
+import { arrangeMetrics, metricCard, metricText } from '../../web/features/run/cards';
 import { MIN_WIDTH, placeBeside, type Rect } from '../../web/features/welcome/place';
 import { Events } from '../../web/page/events';
 import type { PageEvents } from '../../web/page/context';
@@ -21,6 +21,16 @@ describe('the metrics of the first screen', () => {
     const { key, more } = arrangeMetrics(['placed', 'collisions', 'steps', 'built', 'checks', 'unknown'], table, false);
     expect(key.map((m) => m.name)).toEqual(['built', 'collisions']);
     expect(more.map((m) => m.name)).toEqual(['steps', 'placed', 'unknown']);
+  });
+
+  it('shows a fraction as a percentage, anything else as a number', () => {
+    const fraction = { ...info('built', 'key'), unit: 'fraction' };
+    expect([metricText(0.48864, fraction), metricText(1, fraction), metricText(12345, info('steps', 'more')), metricText(null, fraction)]).toEqual([
+      '48.9 %',
+      '100 %',
+      '12,345',
+      '–',
+    ]);
   });
 
   it('keeps the internal counters for the debug view', () => {

@@ -1,5 +1,6 @@
 // A small typed event bus: the session's events and the page's (web/page/context.ts) are two of
-// them. Listeners run in the order they were added, at once.
+// them. Listeners run in the order they were added, at once; one that throws does not stop the
+// others (its error is thrown again after them, where the browser reports it).
 
 type Listener<T> = (value: T) => void;
 
@@ -13,6 +14,14 @@ export class Events<E> {
   }
 
   emit<K extends keyof E>(event: K, value: E[K]) {
-    for (const listener of this.listeners.get(event) ?? []) (listener as Listener<E[K]>)(value);
+    for (const listener of this.listeners.get(event) ?? []) {
+      try {
+        (listener as Listener<E[K]>)(value);
+      } catch (e) {
+        setTimeout(() => {
+          throw e;
+        });
+      }
+    }
   }
 }

@@ -4,8 +4,6 @@
 // only when their shape is exactly right; anything else is ignored. Nothing in a message is ever
 // run as code or written into the page as HTML. docs/embed.md documents the API.
 import type { Frame } from '../../contract.gen';
-import type { PageContext } from '../../page/context';
-import * as core from '../../wasm';
 
 export type EmbedCommand =
   | { type: 'load'; link: string }
@@ -171,31 +169,4 @@ export class Embed {
   handin(link: string, name: string) {
     this.post({ type: 'handin', link, name });
   }
-}
-
-/** Takes the host's commands in a course page's frame (`?embed`), and tells it what happens. */
-export function setupEmbed(page: PageContext) {
-  const { session, sim, events } = page;
-  const embed = new Embed(
-    {
-      async load(payload) {
-        try {
-          let problem: string | null = null;
-          await session.open(core.unpackLink(payload).scenario, { opens: true, onProblem: (brief) => (problem = brief) });
-          return problem;
-        } catch (e) {
-          return core.message(e);
-        }
-      },
-      play: () => sim.play(),
-      pause: () => sim.pause(),
-      step: (count) => sim.step(count),
-      reset: () => session.reset(),
-      check: () => sim.check(),
-    },
-    core.version(),
-  );
-  session.on('frame', (frame) => embed.frame(frame));
-  events.on('goal', ({ met, because, steps }) => embed.goal(met, because, steps));
-  events.on('handin', ({ link, name }) => embed.handin(link, name));
 }

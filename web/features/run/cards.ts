@@ -4,7 +4,7 @@
 // table on hover and focus, and its value (both runs' while comparing).
 import type { MetricInfo } from '../../contract.gen';
 import type { RunLabels } from '../../widgets/chart';
-import { el } from '../../widgets/dom';
+import { el, formatNumber } from '../../widgets/dom';
 
 export interface ShownMetric {
   name: string;
@@ -54,4 +54,10 @@ export function metricCard(name: string, info: MetricInfo | undefined, runs: Run
     ...pair,
   );
   return { node, value, second };
+}
+
+/** A metric's value as its card shows it: a fraction as a percentage, anything else as a number. */
+export function metricText(value: unknown, info: MetricInfo | undefined): string {
+  if (info?.unit === 'fraction' && typeof value === 'number' && Number.isFinite(value)) return `${Number((value * 100).toFixed(1))} %`;
+  return formatNumber(value);
 }

@@ -9,7 +9,7 @@ import { byId, clear, el, formatNumber } from '../../widgets/dom';
 import { keepTipsInside } from '../../widgets/tooltip';
 import * as core from '../../wasm';
 import legendHtml from './legend.html?raw';
-import { arrangeMetrics, metricCard } from './cards';
+import { arrangeMetrics, metricCard, metricText } from './cards';
 import metricsHtml from './metrics.html?raw';
 import overlayHtml from './overlay.html?raw';
 
@@ -65,6 +65,8 @@ export function setupRunPanel(page: PageContext) {
   const metricNodes = new Map<string, HTMLElement>();
   /** While comparing, each card's second value: the second run's. */
   const secondNodes = new Map<string, HTMLElement>();
+  /** What the model's table says of each metric shown. */
+  const infos = new Map<string, MetricInfo | undefined>();
   /** The metrics shown and where: the model's key ones first, the rest a click away, its internal counters only with `?debug`. */
   function renderMetrics(metrics: Metrics) {
     const names = Object.keys(metrics);
@@ -74,6 +76,7 @@ export function setupRunPanel(page: PageContext) {
       clear(moreBox);
       metricNodes.clear();
       secondNodes.clear();
+      infos.clear();
       const { key, more } = arrangeMetrics(names, explanations(), debug);
       for (const [box, list] of [
         [keyBox, key],
@@ -83,6 +86,7 @@ export function setupRunPanel(page: PageContext) {
           const card = metricCard(name, info, runs);
           box.append(card.node);
           metricNodes.set(name, card.value);
+          infos.set(name, info);
           if (card.second) secondNodes.set(name, card.second);
         }
       }
@@ -100,7 +104,7 @@ export function setupRunPanel(page: PageContext) {
         chartMetric(want);
       }
     }
-    for (const [name, node] of metricNodes) node.textContent = formatNumber(metrics[name]);
+    for (const [name, node] of metricNodes) node.textContent = metricText(metrics[name], infos.get(name));
   }
   /** The metrics the cards show, in order: built again when they change. */
   let shownNames: string[] = [];
@@ -189,7 +193,7 @@ export function setupRunPanel(page: PageContext) {
     if (session.frame) renderMetrics(session.frame.metrics);
   });
   events.on('second-frame', (frame) => {
-    for (const [name, node] of secondNodes) node.textContent = formatNumber(frame.metrics[name]);
+    for (const [name, node] of secondNodes) node.textContent = metricText(frame.metrics[name], infos.get(name));
     if (frame.chart) chart.setSecond(frame.chart);
     chart.render();
   });
