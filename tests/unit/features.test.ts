@@ -125,6 +125,26 @@ function linkWithVersion(doc: Record<string, unknown>, version: number): string 
   return `k1.${deflateRawSync(Buffer.from(JSON.stringify({ ...doc, model_version: version }))).toString('base64url')}`;
 }
 
+describe('error messages (moved from the browser tests)', () => {
+  it('a link with a long problem says it briefly, and all of it on request', async () => {
+    // A misspelt field: the whole message lists every field AMAS allows (over 200 characters).
+    const bad = { ...JSON.parse(preset('amas-L')), robtos: 5 };
+    history.replaceState(null, '', `#k1.${deflateRawSync(Buffer.from(JSON.stringify(bad))).toString('base64url')}`);
+    await new Promise((r) => setTimeout(r, 0));
+    const { page } = testPage([...FEATURES]);
+    const claim: { opened: Promise<boolean> | null } = { opened: null };
+    page.events.emit('open-address', claim);
+    expect(await claim.opened).toBe(false);
+    expect($('#banner').hidden).toBe(false);
+    expect(text('#banner-text').split('\n')[1]).toBe("robtos: unknown field 'robtos'; did you mean 'robots'?");
+    expect(text('#banner-action')).toBe('Show all of it');
+    $('#banner-action').click();
+    const full = text('#banner-text').split('\n')[1];
+    expect(full.length).toBeGreaterThanOrEqual(200);
+    expect(full.startsWith("robtos: unknown field 'robtos'; expected one of") && full.includes("'supply_rows'"), full).toBe(true);
+  });
+});
+
 describe('the exercise (moved from the browser tests)', () => {
   it("the teacher's goal is checked against the model's names as it is typed", async () => {
     const { until } = await opened();

@@ -1,0 +1,137 @@
+// @vitest-environment happy-dom
+// The page's rooms one by one, without a browser (tests/unit/page.ts): the gallery's cards, the
+// click tools and their note, the comparison's choices, the exercise's hints and locks, the About
+// tab's debug control, and the first screen's metrics from the model's table.
+import { describe, expect, it } from 'vitest';
+import { FEATURES } from '../../web/features/index';
+import * as wasm from '../../web/pkg/kumiki_wasm.js';
+import { preset, startCore, testPage } from './page';
+
+const $ = <T extends HTMLElement = HTMLElement>(selector: string) => {
+  const e = document.querySelector<T>(selector);
+  if (!e) throw new Error(`no ${selector}`);
+  return e;
+};
+const all = (selector: string) => [...document.querySelectorAll<HTMLElement>(selector)];
+
+/** Every feature mounted, the scenario `text` opened, its first frame shown. */
+async function page(text = preset('amas-L')) {
+  history.replaceState(null, '', window.location.pathname);
+  await new Promise((r) => setTimeout(r, 0));
+  const t = testPage([...FEATURES]);
+  expect(await t.page.session.open(text, { record: false, opens: true })).toBe(true);
+  await t.until(() => t.page.session.frame !== null, 'the first frame');
+  return t;
+}
+
+describe('the gallery', () => {
+  it('lists every lesson and built-in scenario, each titled in words with its code name beside it, and filters them', async () => {
+    await page();
+    $('#open-scenarios').click();
+    expect($<HTMLDialogElement>('#gallery').open).toBe(true);
+    startCore();
+    expect(all('#gallery-list [data-preset]').length).toBe(wasm.presets().length);
+    expect(all('#gallery-list [data-lesson]').length).toBe(wasm.lessons().length);
+    const card = $('#gallery-list [data-preset="fracta-repair"]');
+    expect([card.querySelector('strong')?.textContent, card.querySelector('.card-code')?.textContent]).toEqual(['A triangle repairs itself', 'fracta-repair']);
+    // Each card has a place for its picture, for the picture worker to fill as it comes into view.
+    expect(card.querySelector('canvas.card-picture')?.getAttribute('aria-hidden')).toBe('true');
+    const filter = $<HTMLInputElement>('#gallery-filter');
+    filter.value = 'repairs itself';
+    filter.dispatchEvent(new Event('input'));
+    expect(all('#gallery-list [data-preset]').map((c) => c.dataset.preset)).toEqual(['fracta-repair']);
+  });
+
+  it('opens a chosen scenario, and its name in words heads the page', async () => {
+    const { until } = await page();
+    $('#open-scenarios').click();
+    $('#gallery-list [data-preset="cubes-light"]').click();
+    await until(() => $('#scenario-code').textContent === 'cubes-light', 'the scenario');
+    expect([$('#scenario-name').textContent, $('#scenario-model').textContent, document.title]).toEqual([
+      'A cube walks toward a light',
+      'cubes3d',
+      'A cube walks toward a light · Kumiki',
+    ]);
+  });
+});
+
+describe('the first screen', () => {
+  it("shows the model's key metrics first and its internal counters only in the debug view", async () => {
+    await page(preset('cubes-light'));
+    startCore();
+    const table = wasm.metric_table('cubes3d') as { name: string; shown: string }[];
+    const names = (selector: string) => all(`${selector} .metric > span:first-child`).map((s) => s.textContent);
+    expect(names('#metrics-key')).toEqual(table.filter((m) => m.shown === 'key').map((m) => m.name.replace(/_/g, ' ')));
+    expect(names('#metrics-more')).not.toContain('connectivity checks');
+    expect(table.some((m) => m.name === 'connectivity_checks' && m.shown === 'debug')).toBe(true);
+    // The chart offers what is shown, and charts the model's own choice first.
+    expect([...$<HTMLSelectElement>('#chart-metric').options].map((o) => o.value)).not.toContain('connectivity_checks');
+  });
+});
+
+describe('the click tools', () => {
+  it("offer the model's disturbances, and note those the scenario carries with a way to clear them", async () => {
+    const doc = { ...JSON.parse(preset('amas-L')), disturbances: [{ at: 5, kind: 'remove', count: 2 }] };
+    const { page: p, until } = await page(JSON.stringify(doc));
+    expect(all('#tools button').map((b) => b.dataset.tool)).toEqual(['inspect', ...(p.session.layout?.tools.map((t) => t.name) ?? [])]);
+    expect($('#tools').getAttribute('role')).toBe('radiogroup');
+    const note = $('.recorded');
+    expect(note.textContent).toMatch(/^1 scheduled or recorded disturbance\. /);
+    note.querySelector('button')?.click();
+    await until(() => document.querySelector('.recorded') === null, 'the note to go');
+    expect(p.session.doc().disturbances ?? []).toEqual([]);
+  });
+
+  it('are not offered when the exercise locks the disturbances', async () => {
+    const doc = { ...JSON.parse(preset('amas-L')), disturbances: [{ at: 5, kind: 'remove', count: 2 }] };
+    doc.exercise = { title: 'Locked', instructions: 'Watch.', locked: { disturbances: doc.disturbances }, goal: 'completed', hints: [] };
+    await page(JSON.stringify(doc));
+    expect(all('#tools button').map((b) => b.dataset.tool)).toEqual(['inspect']);
+    // Nor is a way to clear those it carries.
+    expect(document.querySelector('.recorded')).toBeNull();
+  });
+});
+
+describe('two runs compared', () => {
+  it("offer every choice and switch of the model's settings with its other values, and numbers within their bounds", async () => {
+    await page();
+    const settings = [...$<HTMLSelectElement>('#compare-setting').options].map((o) => o.value);
+    expect(settings).toContain('collision');
+    expect(settings).not.toContain('name');
+    expect(settings).not.toContain('max_steps');
+    const setting = $<HTMLSelectElement>('#compare-setting');
+    setting.value = 'collision';
+    setting.dispatchEvent(new Event('change'));
+    // The scenario's own value is not among the second run's.
+    expect([...$<HTMLSelectElement>('#compare-value').options].map((o) => o.textContent)).toEqual(['relay', 'blackboard']);
+    setting.value = 'supply_rows';
+    setting.dispatchEvent(new Event('change'));
+    const number = $<HTMLInputElement>('#compare-number');
+    expect([number.hidden, number.max, number.step]).toEqual([false, '64', '1']);
+  });
+});
+
+describe('an exercise', () => {
+  it('reveals its hints one at a time, and its locked seed cannot be changed', async () => {
+    const doc = JSON.parse(preset('amas-L'));
+    doc.exercise = { title: 'Hints', instructions: 'Try.', locked: { seed: 1 }, goal: 'completed', hints: ['First.', 'Second.'] };
+    await page(JSON.stringify(doc));
+    expect($('#exercise').hidden).toBe(false);
+    expect($('#exercise-hint').textContent).toBe('Show a hint (2 left)');
+    $('#exercise-hint').click();
+    $('#exercise-hint').click();
+    expect(all('#exercise-hints li').map((l) => l.textContent)).toEqual(['First.', 'Second.']);
+    expect([$('#exercise-hint').textContent, $<HTMLButtonElement>('#exercise-hint').disabled]).toEqual(['No more hints', true]);
+    expect([$<HTMLInputElement>('#seed').readOnly, $<HTMLButtonElement>('#new-seed').disabled]).toEqual([true, true]);
+    expect($('#seed').getAttribute('aria-label')).toBe('Random seed, locked by the exercise');
+  });
+});
+
+describe('the About tab', () => {
+  it('shows the version, and the crash button only in the debug view', async () => {
+    await page();
+    startCore();
+    expect($('#diag-version').textContent).toBe(wasm.version());
+    expect($('#simulate-crash').hidden).toBe(true);
+  });
+});
