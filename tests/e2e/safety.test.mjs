@@ -168,6 +168,8 @@ describe('the About tab', () => {
     const findings = report.models[model]?.findings ?? [];
     assert.ok(findings.length > 0, `the report has findings for ${model}`);
     await page.click('#tab-about');
+    // The rows come with the lab module, loaded when the tab is first shown.
+    await page.waitForSelector('#paper-report table.findings');
     const rows = page.locator('#paper-report table.findings tbody tr');
     assert.equal(await rows.count(), findings.length);
     const first = rows.first().locator('td');

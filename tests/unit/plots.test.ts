@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-// The name lives beside `download` (web/ui/dom.ts), which needs no wasm: unit tests run before the
-// wasm is built.
+// The name lives beside `download` (web/widgets/dom.ts), which needs no wasm.
 import { figureFileName } from '../../web/widgets/dom';
 
 describe('figure files', () => {

@@ -135,3 +135,38 @@ describe('the About tab', () => {
     expect($('#simulate-crash').hidden).toBe(true);
   });
 });
+
+describe('every built-in scenario', () => {
+  it('every chobie preset opens with its robots, terrain and no error', async () => {
+    startCore();
+    const chobie = (wasm.presets() as { name: string; model: string }[]).filter((p) => p.model === 'chobie').map((p) => p.name);
+    expect(chobie.length).toBeGreaterThanOrEqual(11);
+    const { page: p, until } = await page();
+    for (const name of chobie) {
+      expect(await p.session.open(preset(name), { opens: true }), name).toBe(true);
+      await until(() => $('#scenario-code').textContent === name && p.session.frame?.metrics.robots !== undefined, name);
+      expect($('#scenario-model').textContent).toBe('chobie');
+      const legend = all('#legend span').map((x) => x.textContent);
+      for (const entry of ['terrain', 'R: resting robot', 'D: driving robot']) expect(legend, `${name}: ${legend.join(', ')}`).toContain(entry);
+      const robots = all('#metrics .metric')
+        .find((m) => m.firstChild?.textContent === 'robots')
+        ?.querySelector('strong')?.textContent;
+      expect(Number(robots), name).toBeGreaterThanOrEqual(3);
+      expect($('#banner').hidden, name).toBe(true);
+    }
+  });
+
+  it('each opens in the page with its legend, its key metrics and its chart, and no message', async () => {
+    startCore();
+    const { page: p, until } = await page();
+    for (const { name, model } of wasm.presets() as { name: string; model: string }[]) {
+      expect(await p.session.open(preset(name), { opens: true }), name).toBe(true);
+      await until(() => $('#scenario-code').textContent === name, name);
+      expect($('#scenario-model').textContent, name).toBe(model);
+      expect(all('#legend span').length, name).toBeGreaterThan(0);
+      expect(all('#metrics-key .metric').length, name).toBeGreaterThan(0);
+      expect($<HTMLSelectElement>('#chart-metric').value, name).not.toBe('');
+      expect($('#banner').hidden, name).toBe(true);
+    }
+  });
+});
