@@ -170,3 +170,29 @@ describe('every built-in scenario', () => {
     }
   });
 });
+
+describe('the type-list editor (moved from the browser tests)', () => {
+  it('a malformed type-list shows an error naming the line, and keeps the text', async () => {
+    const { page: p, until } = await page(preset('cubes-cube8-zigzag'));
+    const before = (p.session.doc().targets as unknown[]).map((t) => JSON.stringify(t));
+    const area = $<HTMLTextAreaElement>('#cubes-target-0-lists');
+    const type = (text: string) => {
+      area.value = text;
+      area.dispatchEvent(new Event('input', { bubbles: true }));
+    };
+    const typed = 'C31[C31, C31, C31]\nC99[C1]';
+    type(typed);
+    await until(() => /line 2/.test($('#cubes-target-0-error').textContent ?? ''), 'the error');
+    expect($('#cubes-target-0-error').textContent).toMatch(/line 2, column 1: unknown connection type 'C99'/);
+    $('button[aria-label="Apply the type-lists of target 1"]').click();
+    await new Promise((r) => setTimeout(r, 10));
+    expect([area.value, area.getAttribute('aria-invalid')]).toEqual([typed, 'true']);
+    expect(
+      (p.session.doc().targets as unknown[]).map((t) => JSON.stringify(t)),
+      'the scenario keeps its valid targets',
+    ).toEqual(before);
+    type('C31[C31, C31]');
+    await until(() => /valence 3/.test($('#cubes-target-0-error').textContent ?? ''), 'the valence');
+    expect($('#cubes-target-0-error').textContent).toMatch(/line 1/);
+  });
+});
