@@ -243,6 +243,15 @@ describe('metric explanations', () => {
     assert.equal(await first.locator('.metric-about').isVisible(), true);
     await page.mouse.move(0, 0);
     assert.equal(await first.locator('.metric-about').isVisible(), false);
+    // Every card's explanation opens inside the window, those at its right edge included.
+    const { width, height } = page.viewportSize();
+    for (const card of await page.locator('#metrics-key .metric').all()) {
+      await card.hover();
+      await page.waitForFunction(() => document.querySelector('.metric:hover .metric-about')?.style.top !== '');
+      const tip = await card.locator('.metric-about').boundingBox();
+      assert.ok(tip.x >= 0 && tip.y >= 0 && tip.x + tip.width <= width && tip.y + tip.height <= height, `the tip is on the screen: ${JSON.stringify(tip)}`);
+    }
+    await page.mouse.move(0, 0);
     // From the keyboard: the cards are in the Tab order and show their explanation when focused.
     await page.locator('#play').focus();
     let reached = false;
