@@ -1,4 +1,6 @@
 // The page in headless Chromium: loading, running, keyboard, links, errors, recovery, persistence.
+// What the features compute and show without a flow through the browser (the form from the schema,
+// a refused parameter, text from a link shown as text) is tests/unit/features.test.ts's.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { animationFrames, kumiki, loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
