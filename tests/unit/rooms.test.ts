@@ -196,3 +196,35 @@ describe('the type-list editor (moved from the browser tests)', () => {
     expect($('#cubes-target-0-error').textContent).toMatch(/line 1/);
   });
 });
+
+describe('the reproduction report', () => {
+  it("shows the model in view's claims beside Kumiki's figures, from the lab module, each opening its experiment", async () => {
+    const { readFileSync } = await import('node:fs');
+    const { resolve } = await import('node:path');
+    const bytes = readFileSync(resolve(__dirname, '../../web/pkg/kumiki_lab_bg.wasm'));
+    // The lab module is fetched as the page fetches it.
+    const fetched: string[] = [];
+    const realFetch = globalThis.fetch;
+    globalThis.fetch = (async (url: string) => {
+      fetched.push(String(url));
+      return new Response(bytes, { headers: { 'content-type': 'application/wasm' } });
+    }) as typeof fetch;
+    try {
+      const { page: p, until } = await page();
+      const opened: string[] = [];
+      p.events.on('open-experiment', (name) => opened.push(name));
+      $('#tab-about').click();
+      await until(() => document.querySelector('#paper-report table.findings') !== null, 'the report');
+      const report = JSON.parse(readFileSync(resolve(__dirname, '../../docs/reproduction.json'), 'utf8')).models.amas;
+      expect(all('#paper-report table.findings tbody tr').length).toBe(report.findings.length);
+      expect(all('#paper-report .claim-text')[0].textContent).toBe(report.findings[0].claim);
+      expect($('#paper-report .citation').textContent).toBe(report.citation);
+      expect(fetched.some((u) => u.includes('kumiki_lab_bg'))).toBe(true);
+      // Each experiment behind the figures opens in the Experiments tab (through the page's events).
+      all('#paper-report p.row-buttons button')[0].click();
+      expect(opened).toEqual([report.experiments[0]]);
+    } finally {
+      globalThis.fetch = realFetch;
+    }
+  });
+});
