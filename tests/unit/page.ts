@@ -210,7 +210,8 @@ export function testPage(features: Feature[]): TestPage {
   for (const f of features) if (f.tab) page.tabs.add(f.name, f.tab);
   for (const f of features) f.mount(page);
   const until = async (ready: () => boolean, what = 'the page') => {
-    for (let i = 0; i < 200; i++) {
+    const start = Date.now();
+    while (Date.now() - start < 30_000) {
       if (ready()) return;
       await later();
     }
