@@ -125,7 +125,8 @@ export class Session {
 
   /**
    * Opens a scenario text: checked first, so a bad one never replaces a good run. Resolves to
-   * whether it will run (a large one once it is agreed to).
+   * whether it was accepted (a large one runs once the page has agreed to it; its run's 'loaded'
+   * tells when).
    */
   async open(text: string, options: OpenOptions = {}): Promise<boolean> {
     return this.proceed(await this.need().open(text, !options.opens, true), options, text);
