@@ -8,15 +8,7 @@ import { byId } from '../../widgets/dom';
 import * as core from '../../wasm';
 import { SPEED_MAX, speedText, stepsPerSecond } from './speed';
 
-export interface Transport {
-  togglePlay(): void;
-  stepOnce(): void;
-  /** Goes `count` steps back (1 unless given) from where the last back press led. */
-  stepBack(count?: number): void;
-  reset(): void;
-}
-
-export function setupTransport(page: PageContext): Transport {
+export function setupTransport(page: PageContext) {
   const { session, sim, view, prefs } = page;
 
   const speed = byId<HTMLInputElement>('speed');
@@ -191,6 +183,4 @@ export function setupTransport(page: PageContext): Transport {
   byId('zoom-in').addEventListener('click', () => view.zoom(1.25));
   byId('zoom-out').addEventListener('click', () => view.zoom(0.8));
   byId('zoom-fit').addEventListener('click', () => view.fit());
-
-  return { togglePlay, stepOnce, stepBack, reset };
 }
