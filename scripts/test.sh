@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # npm test: the gates (formatting, lints), native tests, the wasm suites in headless Node, the type
 # check, the TypeScript unit tests (the features without a browser, on the page's wasm module), then
-# the browser end-to-end tests in headless Chromium against a fresh build. The gates come first, the quickest first: they fail on what a review would. On two
-# cores the rest overlaps: the page builds while the lints and native tests run, and most browser
-# files run while the wasm suites and the reproduction report are checked.
+# the browser end-to-end tests in headless Chromium against a fresh build. The gates come first,
+# the quickest first: they fail on what a review would. On two cores the rest overlaps: the page
+# builds while the lints and native tests run, and most browser files run while the wasm suites and
+# the reproduction report are checked.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each step's header says how long the test has run so far and the CPU seconds its steps have
