@@ -14,6 +14,18 @@ export interface Cells {
   w: number;
 }
 
+/** A metric's every-step record, merged for drawing (a [`series::Band`] with its name and span). */
+export interface ChartBand {
+  max: number[];
+  metric: string;
+  /** The least and the greatest value over each point's steps. */
+  min: number[];
+  /** Steps per recorded bucket: 1 until the record is full, then doubling. */
+  span: number;
+  /** The first step of each point's range. */
+  steps: number[];
+}
+
 /** Whether a goal is met, and why, in words. */
 export interface Check {
   because: string;
@@ -178,6 +190,27 @@ export interface Finding {
 }
 
 /**
+ * One frame of a run, as the page's panels show it: where the run stands and its metrics, with
+ * what was asked for beside them. The lattice itself is never in it: the view reads the model's
+ * buffers in place.
+ */
+export interface Frame {
+  /** The charted metric's record, when one was asked for. */
+  chart?: ChartBand | null;
+  completed: boolean;
+  finished: boolean;
+  /** The furthest step reached since the last fork: where the timeline ends. */
+  furthest: number;
+  /** The 64-bit state hash in hex, when asked for (it costs a pass over the state). */
+  hash?: string | null;
+  max_steps: number;
+  metrics: Metrics;
+  /** The model's scene when it changed since the last frame that carried one, else null. */
+  scene?: Scene | null;
+  steps: number;
+}
+
+/**
  * A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
  * it could not be graded.
  */
@@ -339,6 +372,11 @@ export interface MetricInfo {
   /** One sentence, for a reader who has not read the paper. */
   about: string;
   name: string;
+  /**
+   * Where the page shows it: among the few that matter first, with the others, or only in its
+   * debug view.
+   */
+  shown: Shown;
   /** What one of it measures: `steps`, `count`, `fraction` (0 to 1), `flag`, `MPa`, ... */
   unit: string;
 }
@@ -488,6 +526,9 @@ export interface Series {
   label: string;
   points: Point[];
 }
+
+/** Where the page shows a metric. */
+export type Shown = "key" | "more" | "debug";
 
 /**
  * A rule slot as the page's editor and `kumiki rules` show it: its model and its documentation,

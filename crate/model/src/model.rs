@@ -94,11 +94,47 @@ pub struct MetricInfo {
     pub unit: &'static str,
     /// One sentence, for a reader who has not read the paper.
     pub about: &'static str,
+    /// Where the page shows it: among the few that matter first, with the others, or only in its
+    /// debug view.
+    pub shown: Shown,
+}
+
+/// Where the page shows a metric.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Shown {
+    /// One of the few that matter most for the model's scenarios: on the first screen.
+    Key,
+    /// With the others, a click away.
+    More,
+    /// An internal counter of the implementation (work done, not a finding): only with `?debug`.
+    Debug,
 }
 
 impl MetricInfo {
     pub const fn new(name: &'static str, unit: &'static str, about: &'static str) -> Self {
-        MetricInfo { name, unit, about }
+        MetricInfo {
+            name,
+            unit,
+            about,
+            shown: Shown::More,
+        }
+    }
+
+    /// One of the few that matter most: the page shows it first.
+    pub const fn key(self) -> Self {
+        MetricInfo {
+            shown: Shown::Key,
+            ..self
+        }
+    }
+
+    /// An internal counter: the page shows it only in its debug view.
+    pub const fn internal(self) -> Self {
+        MetricInfo {
+            shown: Shown::Debug,
+            ..self
+        }
     }
 }
 

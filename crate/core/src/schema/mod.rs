@@ -20,8 +20,7 @@ use crate::rules;
 use crate::scenario::{FORMAT_VERSION, MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS, MAX_SEED, MAX_STEPS};
 
 mod pages;
-mod typescript;
-pub use typescript::{declarations, typescript};
+pub use kumiki_model::typescript::{declarations, typescript};
 
 /// Where the published schemas live, relative to the repository root.
 pub const DIR: &str = "docs/schema";
@@ -322,6 +321,9 @@ fn capitalised(name: &str) -> String {
 pub const TYPESCRIPT_FILE: &str = "web/scenario.gen.ts";
 /// Where the TypeScript types of the records the core hands the page live (see [`contract`]).
 pub const CONTRACT_FILE: &str = "web/contract.gen.ts";
+/// The page's copy of the scenario schema, which its form reads (the page takes no runtime data
+/// from `docs/`).
+pub const PAGE_SCHEMA_FILE: &str = "web/scenario.schema.gen.json";
 
 /// Where the generated table of every model's metrics lives, from the repository root.
 pub const METRICS_FILE: &str = "docs/metrics.md";
@@ -334,6 +336,7 @@ pub fn files() -> Vec<(String, String)> {
     let scenario = scenario();
     vec![
         (format!("{DIR}/{SCENARIO_FILE}"), pretty(&scenario)),
+        (PAGE_SCHEMA_FILE.to_string(), pretty(&scenario)),
         (format!("{DIR}/{EXPERIMENT_FILE}"), pretty(&experiment())),
         (TYPESCRIPT_FILE.to_string(), typescript(&scenario)),
         (CONTRACT_FILE.to_string(), contract_typescript()),
@@ -343,8 +346,8 @@ pub fn files() -> Vec<(String, String)> {
 
 /// The schema of every record the core hands the page through the wasm glue (serde-wasm-bindgen
 /// or JSON text), so that their TypeScript types are generated from them and a change of one in
-/// Rust is a type error in the page, not a silent mismatch: a run's layout, scene, metrics and
-/// inspected facts, an exercise's check and a graded hand-in, the scenario in view's proposals and
+/// Rust is a type error in the page, not a silent mismatch: a run's layout, scene, frame,
+/// metrics and inspected facts, an exercise's check and a graded hand-in, the scenario in view's proposals and
 /// comparison, links unpacked, shapes read, the lists of presets, lessons, metrics and
 /// experiments, an experiment's rows and figures, and the reproduction report's sections and a
 /// claim recomputed.
@@ -353,6 +356,7 @@ pub fn contract() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     generator.subschema_for::<crate::models::Layout>();
     generator.subschema_for::<crate::models::Scene>();
+    generator.subschema_for::<crate::playback::Frame>();
     generator.subschema_for::<MetricValues>();
     generator.subschema_for::<MetricInfo>();
     generator.subschema_for::<Facts>();
