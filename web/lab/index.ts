@@ -51,6 +51,9 @@ export const experimentInfo = (json: string): ExperimentInfo => {
 /** Each figure of an experiment's plots from its rows (a JSON array), and its SVG. */
 export const experimentFigures = (experiment: string, rowsJson: string): { figure: Figure; svg: string }[] =>
   loaded().experiment_figures(experiment, rowsJson) as { figure: Figure; svg: string }[];
+/** Figure `index` of an experiment's plots from its rows, as a one-page PDF (the bytes `kumiki sweep --plot pdf` writes). */
+export const experimentFigurePdf = (experiment: string, rowsJson: string, index: number): Uint8Array<ArrayBuffer> =>
+  loaded().experiment_figure_pdf(experiment, rowsJson, index) as Uint8Array<ArrayBuffer>;
 /** The rows exported with their provenance, the bytes `kumiki sweep` writes (`csv`, `json` lines, `traces`). */
 export const experimentExport = (experiment: string, rowsJson: string, format: 'csv' | 'json' | 'traces', time: string): string =>
   loaded().experiment_export(experiment, rowsJson, format, time);
