@@ -81,6 +81,34 @@ pub enum GiveWay {
     EveryLoser,
 }
 
+/// Sections 4.6.1 and 5.1: which robots a loaded robot and an unloaded one may relay with when
+/// one wants the other's module.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RelayWith {
+    /// A robot that waits: one that could not move, or one still waiting out a collision
+    /// penalty, which is still in its collision until it is resolved.
+    #[default]
+    Waiting,
+    /// Only a robot that planned this step: one waiting out a penalty of several steps takes no
+    /// part (Kumiki's reading before model version 4).
+    Idle,
+}
+
+/// Section 5.5 and footnote 3: which modules hold the last value of a module whose
+/// communication broke.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum BrokenValue {
+    /// The neighbours that heard it before it broke keep its last value; a module placed beside
+    /// it later never hears it and holds no value from it.
+    #[default]
+    Heard,
+    /// Every neighbouring module reads its last value, a module placed beside it later too
+    /// (Kumiki's reading before model version 4).
+    ReadByAll,
+}
+
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "AmasSpec", transform = bounds::in_schema::<Spec>)]
@@ -142,6 +170,12 @@ pub struct Spec {
     /// Which robots that lost a collision step aside at their next plan (4.6).
     #[serde(default)]
     pub give_way: GiveWay,
+    /// Whether a robot waiting out a collision penalty may relay (4.6.1).
+    #[serde(default)]
+    pub relay_with: RelayWith,
+    /// Which modules hold the last value of a broken module (5.5, footnote 3).
+    #[serde(default)]
+    pub broken_value: BrokenValue,
 }
 
 impl Bounded for Spec {
@@ -243,6 +277,8 @@ pub struct Params {
     pub communication: Communication,
     pub direction: Direction,
     pub give_way: GiveWay,
+    pub relay_with: RelayWith,
+    pub broken_value: BrokenValue,
 }
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
@@ -491,6 +527,8 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         communication: spec.communication,
         direction: spec.direction,
         give_way: spec.give_way,
+        relay_with: spec.relay_with,
+        broken_value: spec.broken_value,
     };
     Ok(Plan {
         w,

@@ -159,3 +159,40 @@ fn removal_rule_keeps_bridging_modules() {
     assert!(!m.removable(3), "the middle of a column holds its top");
     assert!(m.removable(0), "the top of a column has one connection");
 }
+
+/// Section 5.5: broken modules "cannot exchange potential values", so a module placed beside a
+/// broken one afterwards was never sent its value and holds none from it; the neighbours that
+/// heard it keep its last value (interpretation 12). With every built module of the L broken at
+/// step 6, every run finishes with either field. Read into the modules placed later too (the
+/// reading before model version 4), the broken modules' stale growth-front values make maxima
+/// no vacant site is beside, where loaded robots stay for good.
+#[test]
+fn modules_placed_beside_broken_ones_never_hear_them() {
+    let unfinished = |field: &str, broken_value: &str| {
+        let mut n = 0;
+        for seed in 1..=30 {
+            let mut m = model(json!({"robots": 3, "seed": seed, "field": field,
+                "broken_value": broken_value}));
+            for _ in 0..6 {
+                m.step();
+            }
+            m.apply(&action(json!({"kind": "break", "count": 1000})))
+                .unwrap();
+            run_to_end(&mut m, 20000);
+            if m.completed() {
+                // Each module placed beside a broken one misses exactly its broken neighbours.
+                for (i, mask) in m.unheard.iter() {
+                    let (nb, k) = m.neighbours(i as usize);
+                    let broken = nb[..k].iter().filter(|&&j| m.state[j] & state::BROKEN != 0);
+                    assert!(mask != 0 && mask.count_ones() as usize <= broken.count());
+                }
+            }
+            n += usize::from(!m.completed());
+        }
+        n
+    };
+    for field in ["continuous", "discrete"] {
+        assert_eq!(unfinished(field, "heard"), 0, "{field}");
+        assert!(unfinished(field, "read_by_all") > 0, "{field}");
+    }
+}
