@@ -1,7 +1,6 @@
 //! Step phase 3, acting: moves, picks, removals, placements and returns take effect.
 
-use super::spec::BrokenValue;
-use super::state::{BROKEN, CLAIMED, MODULE, REMOVE, VACANT};
+use super::state::{CLAIMED, MODULE, REMOVE, VACANT};
 use super::{Amas, Plan, MOVES, NONE};
 
 impl Amas {
@@ -91,16 +90,9 @@ impl Amas {
         self.claimed.clear();
     }
 
-    /// A module is placed at vacant target cell `t`. It never heard the broken modules beside
-    /// it (section 5.5), unless every neighbour reads a broken module's last value.
+    /// A module is placed at vacant target cell `t`.
     pub(super) fn put(&mut self, t: usize) {
         self.state[t] = (self.state[t] & !VACANT) | MODULE;
-        if self.p.broken_value == BrokenValue::Heard {
-            let (nb, k) = self.neighbours(t);
-            let state = &self.state;
-            self.unheard
-                .placed(t, self.w, &nb[..k], |j| state[j] & BROKEN != 0);
-        }
         self.vacant -= 1;
         self.dirty = true;
         self.refresh_around(t);
@@ -111,7 +103,6 @@ impl Amas {
     /// The module to be removed at `t` is taken away.
     pub(super) fn take(&mut self, t: usize) {
         self.state[t] &= CLAIMED;
-        self.unheard.gone(t);
         self.to_remove -= 1;
         self.dirty = true;
         self.refresh_around(t);

@@ -127,7 +127,6 @@ impl Amas {
             let s = self.state[i];
             match a.kind {
                 Kind::Remove => {
-                    self.unheard.gone(i);
                     if s & REMOVE != 0 {
                         self.state[i] = 0;
                         self.to_remove -= 1;

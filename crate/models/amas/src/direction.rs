@@ -23,12 +23,10 @@ pub const LISTED: [usize; 4] = [E, N, W, S];
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Reading {
     /// The value each neighbouring module last sent, as a cost for this robot (lower is nearer
-    /// its destination); `None` where no module is, or where the module never heard the one
-    /// there (a broken module placed beside earlier, section 5.5).
+    /// its destination); `None` where no module is.
     pub cost: [Option<f32>; 4],
     /// Whether the robot may step onto that module (a blackboard closes the modules other
-    /// robots' plans engage; giving way closes those a robot stands on): a robot that finds no
-    /// effective gradient picks among these, valued or not.
+    /// robots' plans engage; giving way closes those a robot stands on).
     pub open: [bool; 4],
 }
 

@@ -6,7 +6,6 @@
 //! compiler vectorises them (SSE natively, SIMD128 in wasm when enabled).
 
 use super::state::{BROKEN, FRONT, MODULE, SOURCE};
-use super::unheard::{Unheard, DOWN, LEFT, RIGHT, UP};
 
 /// Distance not (yet) known, or no module here.
 pub const FAR: u16 = u16::MAX;
@@ -53,9 +52,8 @@ impl Field {
 
     /// One synchronous update of every module in rows `top..h`: each row is computed from the
     /// values its neighbours held before this update (kept in two row buffers), so the field
-    /// is updated in place. Rows above `top` hold no module and keep their "no value". A module
-    /// leaves out the broken neighbours it never heard (`unheard`).
-    pub fn update(&mut self, state: &[u8], w: usize, top: usize, unheard: &Unheard) {
+    /// is updated in place. Rows above `top` hold no module and keep their "no value".
+    pub fn update(&mut self, state: &[u8], w: usize, top: usize) {
         let h = state.len() / w;
         match self {
             Field::Discrete {
@@ -89,7 +87,6 @@ impl Field {
                         [up_f, old_f, fd],
                         out_s,
                         out_f,
-                        unheard.in_row(y, w),
                     );
                     std::mem::swap(up_s, old_s);
                     std::mem::swap(up_f, old_f);
@@ -118,13 +115,7 @@ impl Field {
                     } else {
                         (&zero[..], &none[..])
                     };
-                    continuous_row(
-                        [su, &state[r..r + w], sd],
-                        [up, old, pd],
-                        out,
-                        *d,
-                        unheard.in_row(y, w),
-                    );
+                    continuous_row([su, &state[r..r + w], sd], [up, old, pd], out, *d);
                     std::mem::swap(up, old);
                 }
             }
@@ -134,8 +125,8 @@ impl Field {
 
 /// Equation 2 for one row: a module's distance is the least of its neighbours' plus one; the
 /// destination modules hold 0; cells without a module hold FAR, which no minimum ever picks
-/// up. A module whose communication broke keeps the value it had, and the neighbours that heard
-/// it keep the value they last heard from it.
+/// up. A module whose communication broke keeps the value it had, and its neighbours keep the
+/// value they last heard from it.
 #[inline(always)]
 fn discrete_cell(s: u8, old: (u16, u16), ms: u16, mf: u16) -> (u16, u16) {
     if s & MODULE == 0 {
@@ -157,53 +148,25 @@ fn discrete_cell(s: u8, old: (u16, u16), ms: u16, mf: u16) -> (u16, u16) {
     }
 }
 
-/// The least of the values the module at column `x` reads from its neighbours (the rows above,
-/// its own and below), leaving out those it does not hear (`unheard`, a mask).
-#[inline(always)]
-fn least_around(v: [&[u16]; 3], x: usize, unheard: u8) -> u16 {
-    let [up, mid, down] = v;
-    let heard = |bit: u8, value: u16| if unheard & bit == 0 { value } else { FAR };
-    let l = if x > 0 { mid[x - 1] } else { FAR };
-    let r = if x + 1 < mid.len() { mid[x + 1] } else { FAR };
-    heard(LEFT, l)
-        .min(heard(RIGHT, r))
-        .min(heard(UP, up[x]))
-        .min(heard(DOWN, down[x]))
-}
-
-fn discrete_row(
-    st: &[u8],
-    s: [&[u16]; 3],
-    f: [&[u16]; 3],
-    os: &mut [u16],
-    of: &mut [u16],
-    unheard: impl Iterator<Item = (usize, u8)>,
-) {
+fn discrete_row(st: &[u8], s: [&[u16]; 3], f: [&[u16]; 3], os: &mut [u16], of: &mut [u16]) {
     let w = st.len();
-    let (sm, fm) = (s[1], f[1]);
-    let cell = |x: usize, mask: u8| {
-        let (ms, mf) = (least_around(s, x, mask), least_around(f, x, mask));
+    let [su, sm, sd] = s;
+    let [fu, fm, fd] = f;
+    let edge = |x: usize| {
+        let l = |v: &[u16]| if x > 0 { v[x - 1] } else { FAR };
+        let r = |v: &[u16]| if x + 1 < w { v[x + 1] } else { FAR };
+        let ms = l(sm).min(r(sm)).min(su[x]).min(sd[x]);
+        let mf = l(fm).min(r(fm)).min(fu[x]).min(fd[x]);
         discrete_cell(st[x], (sm[x], fm[x]), ms, mf)
     };
     if w <= 2 {
         for x in 0..w {
-            (os[x], of[x]) = cell(x, 0);
+            (os[x], of[x]) = edge(x);
         }
-    } else {
-        (os[0], of[0]) = cell(0, 0);
-        (os[w - 1], of[w - 1]) = cell(w - 1, 0);
-        discrete_inner(st, s, f, os, of);
+        return;
     }
-    for (x, mask) in unheard {
-        (os[x], of[x]) = cell(x, mask);
-    }
-}
-
-/// [`discrete_row`] between the row's two ends, where every module has four neighbours.
-fn discrete_inner(st: &[u8], s: [&[u16]; 3], f: [&[u16]; 3], os: &mut [u16], of: &mut [u16]) {
-    let w = st.len();
-    let [su, sm, sd] = s;
-    let [fu, fm, fd] = f;
+    (os[0], of[0]) = edge(0);
+    (os[w - 1], of[w - 1]) = edge(w - 1);
     let n = w - 2;
     // Equal-length slices, so the loop runs without bounds checks and vectorises.
     let (sl, sc, sr, su, sd) = (&sm[..n], &sm[1..=n], &sm[2..2 + n], &su[1..=n], &sd[1..=n]);
@@ -228,7 +191,7 @@ fn discrete_inner(st: &[u8], s: [&[u16]; 3], f: [&[u16]; 3], os: &mut [u16], of:
 /// only, so nothing leaks across a completed edge (a Neumann boundary). The growth front is
 /// held at 1 and the supply at 0 (the front wins where a module is both). Cells without a
 /// module hold 0, which adds nothing to the sum. A module whose communication broke keeps its
-/// value, and the neighbours that heard it keep the value they last heard from it.
+/// value, and its neighbours keep the value they last heard from it.
 #[inline(always)]
 fn continuous_value(s: u8, p: f32, sum: f32, k: f32, d: f32) -> f32 {
     let v = p + d * (sum - k * p);
@@ -254,64 +217,33 @@ fn on(s: u8) -> f32 {
     }
 }
 
-/// Equation 1 at column `x` of a row, one neighbour at a time, leaving out those the module
-/// does not hear (`unheard`, a mask): the same sum, in the same order, as the row kernel.
-#[inline(always)]
-fn continuous_at(s: [&[u8]; 3], p: [&[f32]; 3], x: usize, d: f32, unheard: u8) -> f32 {
+fn continuous_row(s: [&[u8]; 3], p: [&[f32]; 3], out: &mut [f32], d: f32) {
     let [su, sm, sd] = s;
     let [pu, pm, pd] = p;
     let w = sm.len();
-    let heard = |bit: u8, v: (f32, u8)| if unheard & bit == 0 { v } else { (0.0, 0) };
-    let (pl, sl) = heard(
-        LEFT,
-        if x > 0 {
+    let edge = |x: usize| {
+        let (pl, sl) = if x > 0 {
             (pm[x - 1], sm[x - 1])
         } else {
             (0.0, 0)
-        },
-    );
-    let (pr, sr) = heard(
-        RIGHT,
-        if x + 1 < w {
+        };
+        let (pr, sr) = if x + 1 < w {
             (pm[x + 1], sm[x + 1])
         } else {
             (0.0, 0)
-        },
-    );
-    let (pu, su) = heard(UP, (pu[x], su[x]));
-    let (pd, sd) = heard(DOWN, (pd[x], sd[x]));
-    let sum = pl + pr + pu + pd;
-    let k = on(sl) + on(sr) + on(su) + on(sd);
-    continuous_value(sm[x], pm[x], sum, k, d)
-}
-
-fn continuous_row(
-    s: [&[u8]; 3],
-    p: [&[f32]; 3],
-    out: &mut [f32],
-    d: f32,
-    unheard: impl Iterator<Item = (usize, u8)>,
-) {
-    let w = s[1].len();
+        };
+        let sum = pl + pr + pu[x] + pd[x];
+        let k = on(sl) + on(sr) + on(su[x]) + on(sd[x]);
+        continuous_value(sm[x], pm[x], sum, k, d)
+    };
     if w <= 2 {
         for (x, o) in out.iter_mut().enumerate() {
-            *o = continuous_at(s, p, x, d, 0);
+            *o = edge(x);
         }
-    } else {
-        out[0] = continuous_at(s, p, 0, d, 0);
-        out[w - 1] = continuous_at(s, p, w - 1, d, 0);
-        continuous_inner(s, p, out, d);
+        return;
     }
-    for (x, mask) in unheard {
-        out[x] = continuous_at(s, p, x, d, mask);
-    }
-}
-
-/// [`continuous_row`] between the row's two ends, where every module has four neighbours.
-fn continuous_inner(s: [&[u8]; 3], p: [&[f32]; 3], out: &mut [f32], d: f32) {
-    let [su, sm, sd] = s;
-    let [pu, pm, pd] = p;
-    let w = sm.len();
+    out[0] = edge(0);
+    out[w - 1] = edge(w - 1);
     let n = w - 2;
     let (pl, pc, pr, pu, pd) = (&pm[..n], &pm[1..=n], &pm[2..2 + n], &pu[1..=n], &pd[1..=n]);
     let (sl, sc, sr, su, sd) = (&sm[..n], &sm[1..=n], &sm[2..2 + n], &su[1..=n], &sd[1..=n]);

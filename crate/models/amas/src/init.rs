@@ -6,7 +6,6 @@ use std::collections::{BTreeMap, VecDeque};
 use super::field::{Field, FAR};
 use super::spec;
 use super::state::{ACTIVE_MASK, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
-use super::unheard::Unheard;
 use super::{
     Amas, FieldKind, Plan, Robot, NONE, STREAM_DISTURBANCE, STREAM_PLACEMENT, UNKNOWN, UP,
 };
@@ -104,7 +103,6 @@ impl Amas {
             state,
             occupant,
             field,
-            unheard: Unheard::default(),
             p: params,
             robots,
             order: (0..robots_n as u32).collect(),

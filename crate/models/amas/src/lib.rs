@@ -27,24 +27,19 @@ mod plan;
 mod settle;
 mod spec;
 mod state;
-mod unheard;
 mod view;
 
-pub use spec::{
-    BrokenValue, Collision, Communication, Direction, FieldKind, GiveWay, RelayWith, Spec,
-};
+pub use spec::{Collision, Communication, Direction, FieldKind, GiveWay, RelayWith, Spec};
 
 use field::Field;
 use spec::Params;
-use unheard::Unheard;
 
 pub const ENTRY: ModelEntry = ModelEntry {
     name: "amas",
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
     // 3: the module displays one direction (footnote 3) and only a locked loser gives way (4.6).
-    // 4: a robot waiting out a penalty may relay (4.6.1), and a broken module's last value is
-    // held only by the modules that heard it (5.5).
+    // 4: a robot waiting out a collision penalty may relay (4.6.1).
     model_version: 4,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
@@ -68,11 +63,6 @@ pub const ENTRY: ModelEntry = ModelEntry {
             before: 4,
             key: "relay_with",
             value: PinValue::Choice("idle"),
-        },
-        Pin {
-            before: 4,
-            key: "broken_value",
-            value: PinValue::Choice("read_by_all"),
         },
     ],
 };
@@ -150,9 +140,6 @@ pub struct Amas {
     /// Robot standing on each cell, or NONE.
     occupant: Vec<u32>,
     field: Field,
-    /// The broken neighbours each module never heard (section 5.5): empty unless modules broke
-    /// and, with `broken_value = heard`, one was placed beside a broken module afterwards.
-    unheard: Unheard,
     p: Params,
     robots: Vec<Robot>,
     /// Planning order of this step: earlier is a larger token.
@@ -264,8 +251,7 @@ impl Model for Amas {
         self.act_all();
         self.settle();
         for _ in 0..self.p.updates {
-            self.field
-                .update(&self.state, self.w, self.top, &self.unheard);
+            self.field.update(&self.state, self.w, self.top);
         }
         self.steps += 1;
     }
@@ -350,11 +336,6 @@ impl Model for Amas {
             if self.p.turn_d > 0 {
                 h.u8(r.heading);
             }
-        }
-        // Only modules placed beside broken ones have unheard neighbours.
-        for (i, mask) in self.unheard.iter() {
-            h.u32(i);
-            h.u8(mask);
         }
         for v in [
             self.collisions,

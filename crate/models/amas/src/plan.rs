@@ -56,7 +56,7 @@ impl Amas {
     /// The four neighbouring cells by slot (N, S, E, W, see [`direction`]), [`OFF`] off the
     /// lattice.
     #[inline]
-    pub(super) fn compass(&self, i: usize) -> [usize; 4] {
+    fn compass(&self, i: usize) -> [usize; 4] {
         let (w, x, y) = (self.w, i % self.w, i / self.w);
         let mut out = [OFF; 4];
         if y > 0 {
@@ -75,26 +75,16 @@ impl Amas {
     }
 
     /// What the module at `i` holds about its neighbours for a robot that is `loaded`; `open`
-    /// says which neighbouring modules the robot may step onto. A broken neighbour the module
-    /// never heard (section 5.5) is a module a robot may step onto, of no value.
+    /// says which neighbouring modules the robot may step onto.
     #[inline]
-    fn reading(
-        &self,
-        i: usize,
-        around: &[usize; 4],
-        loaded: bool,
-        open: impl Fn(usize) -> bool,
-    ) -> Reading {
+    fn reading(&self, around: &[usize; 4], loaded: bool, open: impl Fn(usize) -> bool) -> Reading {
         let mut r = Reading {
             cost: [None; 4],
             open: [false; 4],
         };
-        let unheard = self.unheard.mask(i);
         for (slot, &j) in around.iter().enumerate() {
             if j != OFF && self.state[j] & MODULE != 0 {
-                if unheard == 0 || self.unheard.hears(i, j, self.w) {
-                    r.cost[slot] = Some(self.cost(j, loaded));
-                }
+                r.cost[slot] = Some(self.cost(j, loaded));
                 r.open[slot] = open(j);
             }
         }
@@ -120,7 +110,7 @@ impl Amas {
     /// blackboard the robot avoids engaged modules and takes the best free one.
     pub(super) fn follow(&mut self, r: usize, i: usize, loaded: bool, board: bool) -> Plan {
         let around = self.compass(i);
-        let reading = self.reading(i, &around, loaded, |j| !(board && self.engaged(j, i)));
+        let reading = self.reading(&around, loaded, |j| !(board && self.engaged(j, i)));
         match direction::shown(&reading, self.p.threshold, self.p.direction) {
             Shown::Toward(slot) => Plan::Move(around[slot] as u32),
             Shown::Among(set) => self.draw(set, &around).map_or(Plan::Wait, Plan::Move),
@@ -140,7 +130,7 @@ impl Amas {
     /// no robot stands on: it moves on if the way has cleared, or aside if it has not.
     pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Option<u32> {
         let around = self.compass(i);
-        let reading = self.reading(i, &around, loaded, |j| self.occupant[j] == NONE);
+        let reading = self.reading(&around, loaded, |j| self.occupant[j] == NONE);
         match direction::shown(&reading, f32::NEG_INFINITY, self.p.direction) {
             Shown::Toward(slot) => Some(around[slot] as u32),
             Shown::Among(set) => self.draw(set, &around),

@@ -100,10 +100,8 @@ impl Amas {
                     to_front[i] = FAR;
                     return;
                 }
-                let heard = |&&j: &&usize| self.unheard.hears(i, j, self.w);
-                let ms = nb[..k].iter().filter(heard).map(|&j| to_supply[j]).min();
-                let mf = nb[..k].iter().filter(heard).map(|&j| to_front[j]).min();
-                let (ms, mf) = (ms.unwrap_or(FAR), mf.unwrap_or(FAR));
+                let ms = nb[..k].iter().map(|&j| to_supply[j]).min().unwrap_or(FAR);
+                let mf = nb[..k].iter().map(|&j| to_front[j]).min().unwrap_or(FAR);
                 to_supply[i] = if s & SOURCE != 0 {
                     0
                 } else {
@@ -124,7 +122,7 @@ impl Amas {
                     let mut sum = 0.0f32;
                     let mut cnt = 0.0f32;
                     for &j in &nb[..k] {
-                        if self.state[j] & MODULE != 0 && self.unheard.hears(i, j, self.w) {
+                        if self.state[j] & MODULE != 0 {
                             sum += p[j];
                             cnt += 1.0;
                         }

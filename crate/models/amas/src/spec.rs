@@ -95,20 +95,6 @@ pub enum RelayWith {
     Idle,
 }
 
-/// Section 5.5 and footnote 3: which modules hold the last value of a module whose
-/// communication broke.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum BrokenValue {
-    /// The neighbours that heard it before it broke keep its last value; a module placed beside
-    /// it later never hears it and holds no value from it.
-    #[default]
-    Heard,
-    /// Every neighbouring module reads its last value, a module placed beside it later too
-    /// (Kumiki's reading before model version 4).
-    ReadByAll,
-}
-
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "AmasSpec", transform = bounds::in_schema::<Spec>)]
@@ -173,9 +159,6 @@ pub struct Spec {
     /// Whether a robot waiting out a collision penalty may relay (4.6.1).
     #[serde(default)]
     pub relay_with: RelayWith,
-    /// Which modules hold the last value of a broken module (5.5, footnote 3).
-    #[serde(default)]
-    pub broken_value: BrokenValue,
 }
 
 impl Bounded for Spec {
@@ -278,7 +261,6 @@ pub struct Params {
     pub direction: Direction,
     pub give_way: GiveWay,
     pub relay_with: RelayWith,
-    pub broken_value: BrokenValue,
 }
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
@@ -528,7 +510,6 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         direction: spec.direction,
         give_way: spec.give_way,
         relay_with: spec.relay_with,
-        broken_value: spec.broken_value,
     };
     Ok(Plan {
         w,

@@ -84,7 +84,7 @@ fn discrete_field_converges_to_breadth_first_distance() {
             m.step();
         }
         for _ in 0..m.state.len() {
-            m.field.update(&m.state, m.w, m.top, &m.unheard);
+            m.field.update(&m.state, m.w, m.top);
         }
         let Field::Discrete {
             to_supply,
@@ -106,7 +106,7 @@ fn continuous_field_on_a_strip_converges_to_the_linear_profile() {
     let initial = "#\n".repeat(9);
     let mut m = model(json!({"target": target, "initial": initial, "robots": 1}));
     for _ in 0..5000 {
-        m.field.update(&m.state, m.w, m.top, &m.unheard);
+        m.field.update(&m.state, m.w, m.top);
     }
     let Field::Continuous { p, .. } = &m.field else {
         unreachable!()
@@ -127,7 +127,7 @@ fn continuous_field_leaks_nothing_at_completed_edges() {
     let initial = "#####\n".repeat(5);
     let mut m = model(json!({"target": target, "initial": initial, "robots": 1}));
     for _ in 0..3000 {
-        m.field.update(&m.state, m.w, m.top, &m.unheard);
+        m.field.update(&m.state, m.w, m.top);
     }
     let Field::Continuous { p, .. } = &m.field else {
         unreachable!()
