@@ -7,9 +7,13 @@ import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
 import * as lab from '../web/pkg/kumiki_lab.js';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
+import * as wasmRules from '../web/pkg/kumiki_wasm_rules.js';
 
 const root = new URL('..', import.meta.url);
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_bg.wasm', root))) });
+// The page's second simulation module, with the rule scripts' engine: the workloads with rules
+// run in it, as the page runs a scenario with rules.
+wasmRules.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_rules_bg.wasm', root))) });
 // Experiments run in the lab module, as in the page's experiment workers.
 lab.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_lab_bg.wasm', root))) });
 
@@ -25,11 +29,16 @@ const median = (xs) => {
  */
 export function scenarioJson(spec) {
   const json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
-  if (!spec.set) return json;
+  const set = { ...spec.set };
+  if (spec.rules === 'paper') {
+    const model = JSON.parse(json).model;
+    for (const { slot } of wasmRules.rule_slots().filter((s) => s.model === model)) set[`rules.${slot.name}`] = slot.paper;
+  }
+  if (Object.keys(set).length === 0) return json;
   const draft = new wasm.Draft(Number.MAX_SAFE_INTEGER);
   try {
     let proposal = draft.open(json, false);
-    if (!proposal.problem) proposal = draft.edit_all(JSON.stringify(spec.set));
+    if (!proposal.problem) proposal = draft.edit_all(JSON.stringify(set));
     if (proposal.problem) throw new Error(`${spec.name}: ${proposal.in_full ?? proposal.problem}`);
     return proposal.text;
   } finally {
@@ -40,8 +49,32 @@ export function scenarioJson(spec) {
 /** The least time a repeat of a workload is timed for, bare run and page's Sim together. */
 const REPEAT_SECONDS = 0.2;
 
+/**
+ * How long each hostile script of a rules fixture takes to be stopped in wasm (reading and
+ * building its scenario included), the median of the repeats, in seconds.
+ */
+function timeStops(spec, repeats) {
+  const fixture = JSON.parse(readFileSync(fileURLToPath(new URL(spec.stops, root)), 'utf8'));
+  const stops = fixture.stopped.map((c) => {
+    const json = scenarioJson({ scenario: c.preset, set: { [`rules.${c.slot}`]: c.source } });
+    const times = [];
+    let stopped;
+    for (let r = 0; r < repeats; r++) {
+      const t = performance.now();
+      const run = new wasmRules.Sim(json);
+      while (run.advance(1000) > 0);
+      times.push((performance.now() - t) / 1000);
+      stopped = run.stopped();
+      run.free();
+    }
+    return { name: c.name, seconds: median(times), stopped };
+  });
+  return { name: spec.name, target: 'wasm', stops };
+}
+
 export function measure(spec) {
   const repeats = Math.max(1, spec.repeats ?? 5);
+  if (spec.stops) return timeStops(spec, repeats);
   if (spec.experiment) {
     const runner = new lab.ExperimentRunner(spec.experiment);
     const times = [];
@@ -53,6 +86,7 @@ export function measure(spec) {
     return { name: spec.name, target: 'wasm', experiment: spec.experiment, runs: runner.job_count(), threads: 1, median_seconds: median(times) };
   }
   const json = scenarioJson(spec);
+  const module = spec.rules ? wasmRules : wasm;
   // The bare run (wasm.Stepper) is the work `kumiki bench` times natively; the page's Sim also
   // keeps keyframes for rewind and the metrics for the chart. The two are timed in turn, a run of
   // each, the first of the pair alternating, and a repeat takes pairs until it has timed at least
@@ -78,11 +112,11 @@ export function measure(spec) {
     };
     for (let pair = 0; pair === 0 || sum.bare.secs + sum.page.secs < REPEAT_SECONDS; pair++) {
       if (pair % 2) {
-        add(sum.page, once(wasm.Sim));
-        add(sum.bare, once(wasm.Stepper));
+        add(sum.page, once(module.Sim));
+        add(sum.bare, once(module.Stepper));
       } else {
-        add(sum.bare, once(wasm.Stepper));
-        add(sum.page, once(wasm.Sim));
+        add(sum.bare, once(module.Stepper));
+        add(sum.page, once(module.Sim));
       }
     }
     if (r > 0) {
@@ -90,7 +124,7 @@ export function measure(spec) {
       page.push(sum.page.done / Math.max(sum.page.secs, 1e-9));
     }
   }
-  const probe = new wasm.Sim(json);
+  const probe = new module.Sim(json);
   const cells = probe.cells().length;
   probe.free();
   const out = {

@@ -32,6 +32,7 @@ for (const spec of specs) {
 
 console.log('\nworkload                        native            wasm (Node)       wasm/native  bytes/cell  page Sim/bare  native Playback/bare');
 for (const { spec, native, wasm: w } of rows) {
+  if (spec.stops) continue;
   if (spec.experiment) {
     console.log(
       `${spec.name.padEnd(30)}  ${fmt(native.median_seconds)} s on ${native.threads} threads   ${fmt(w.median_seconds)} s on 1 thread   (${native.runs} runs)`,
@@ -49,6 +50,30 @@ for (const { spec, native, wasm: w } of rows) {
 const wasmBytes = readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`);
 const gzKb = gzipSync(wasmBytes, { level: 9 }).length / 1024;
 console.log(`\npage's wasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (budget ${WASM_BUDGET_KB} KB: ${budgetVerdict(gzKb)})`);
+// The rule slots: each slot's paper rule as a script against the built-in, and the bytes the rule
+// scripts' engine adds to the page's simulation module (its second build, loaded only for a
+// scenario with rules).
+const rulesBytes = readFileSync(`${root}web/pkg/kumiki_wasm_rules_bg.wasm`);
+const rulesGzKb = gzipSync(rulesBytes, { level: 9 }).length / 1024;
+console.log(
+  `rules module's wasm: ${(rulesBytes.length / 1024).toFixed(1)} KB, ${rulesGzKb.toFixed(1)} KB gzipped: the engine adds ` +
+    `${((rulesBytes.length - wasmBytes.length) / 1024).toFixed(1)} KB, ${(rulesGzKb - gzKb).toFixed(1)} KB gzipped (loaded only for a scenario with rules)`,
+);
+for (const { spec, native, wasm: w } of rows.filter((r) => r.spec.rules)) {
+  const builtin = rows.find((r) => r.spec.name === spec.against);
+  if (!builtin) continue;
+  const ratio = (a, b) => fmt(a / b, 2);
+  console.log(
+    `rule slots, ${spec.name} against ${spec.against}: scripted ${fmt(native.steps_per_second)} steps/s natively ` +
+      `(${ratio(native.steps_per_second, builtin.native.steps_per_second)} of the built-in's ${fmt(builtin.native.steps_per_second)}), ` +
+      `${fmt(w.steps_per_second)} in wasm (${ratio(w.steps_per_second, builtin.wasm.steps_per_second)} of ${fmt(builtin.wasm.steps_per_second)})`,
+  );
+}
+for (const { native, wasm: w } of rows.filter((r) => r.spec.stops)) {
+  for (const [i, s] of native.stops.entries()) {
+    console.log(`a hostile rule (${s.name}) is stopped after ${fmt(s.seconds)} s natively, ${fmt(w.stops[i].seconds)} s in wasm: ${s.stopped}`);
+  }
+}
 // The lab module is loaded only when a panel needs it (experiments, a claim's re-run, grading): no budget.
 const labBytes = readFileSync(`${root}web/pkg/kumiki_lab_bg.wasm`);
 const labGzKb = gzipSync(labBytes, { level: 9 }).length / 1024;
@@ -111,6 +136,7 @@ const out = {
   when: new Date().toISOString(),
   workloads: rows.map(({ spec, native, wasm: w }) => ({ name: spec.name, native, wasm: w })),
   wasm_gzip_kb: gzKb,
+  rules_wasm_gzip_kb: rulesGzKb,
   lab_wasm_gzip_kb: labGzKb,
   grading,
   page,

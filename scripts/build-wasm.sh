@@ -1,19 +1,28 @@
 #!/usr/bin/env bash
-# Builds the two wasm packages into web/pkg/: the page's module, kumiki_wasm{.js,_bg.wasm} (what
-# the page needs to open: runs, the view, the scenario in view, links, presets, lessons), and the
-# lab module, kumiki_lab{.js,_bg.wasm} (experiments, the report's claims, grading), which the page
-# loads only when it needs it. One cargo build, so the crates both use compile once; release
-# mode, then wasm-bindgen --target web, then wasm-opt when npm's binaryen is installed.
+# Builds the three wasm packages into web/pkg/: the page's module, kumiki_wasm{.js,_bg.wasm} (what
+# the page needs to open: runs, the view, the scenario in view, links, presets, lessons); the same
+# module with the rule scripts' engine, kumiki_wasm_rules{.js,_bg.wasm}, which the page loads only
+# for a scenario that carries rules (docs/rules.md); and the lab module, kumiki_lab{.js,_bg.wasm}
+# (experiments, the report's claims, grading, with the engine), which the page loads only when it
+# needs it. Two cargo builds: the page's module alone, without the engine, then the rules module
+# and the lab together, so the crates they both use compile once with it; release mode, then
+# wasm-bindgen --target web, then wasm-opt when npm's binaryen is installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-cargo build -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --release --quiet
-for name in kumiki_wasm kumiki_lab; do
-  wasm-bindgen --target web --out-dir web/pkg "target/wasm32-unknown-unknown/release/$name.wasm"
+# wasm-bindgen, then wasm-opt, of target/.../$1.wasm into web/pkg/$2{.js,_bg.wasm}.
+package() {
+  wasm-bindgen --target web --out-dir web/pkg --out-name "$2" "target/wasm32-unknown-unknown/release/$1.wasm"
   if [ -x node_modules/.bin/wasm-opt ]; then
     node_modules/.bin/wasm-opt -O3 --enable-bulk-memory --enable-nontrapping-float-to-int \
       --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd \
-      "web/pkg/${name}_bg.wasm" -o "web/pkg/${name}_bg.wasm"
+      "web/pkg/$2_bg.wasm" -o "web/pkg/$2_bg.wasm"
   fi
-  echo "wasm: web/pkg/${name}_bg.wasm ($(wc -c < "web/pkg/${name}_bg.wasm") bytes)"
-done
+  echo "wasm: web/pkg/$2_bg.wasm ($(wc -c < "web/pkg/$2_bg.wasm") bytes)"
+}
+
+cargo build -p kumiki-wasm --target wasm32-unknown-unknown --release --quiet
+package kumiki_wasm kumiki_wasm
+cargo build -p kumiki-wasm -p kumiki-lab --features kumiki-wasm/rules --target wasm32-unknown-unknown --release --quiet
+package kumiki_wasm kumiki_wasm_rules
+package kumiki_lab kumiki_lab

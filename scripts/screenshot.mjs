@@ -1,19 +1,22 @@
 // Regenerates the README's pictures: the page in headless Chromium, a preset or a lesson part-way
-// through. Usage: node scripts/screenshot.mjs [preset|lesson] [steps] [overlay] [file]
-// (after npm run build). The README's two pictures:
-//   node scripts/screenshot.mjs amas-L 120 potential
-//   node scripts/screenshot.mjs lesson-amas-compare 60 '' docs/compare.png
+// through, at a window size. Usage (after npm run build):
+//   node scripts/screenshot.mjs [preset|lesson] [steps] [overlay] [file] [WIDTHxHEIGHT]
+// The README's three pictures, the first screen on a laptop and on a tablet and a comparison:
+//   node scripts/screenshot.mjs amas-L 120 '' docs/screenshot.png 1366x768
+//   node scripts/screenshot.mjs amas-L 120 '' docs/screenshot-tablet.png 768x1024
+//   node scripts/screenshot.mjs lesson-amas-compare 60 '' docs/compare.png 1366x768
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 import { launch, serve } from '../tests/e2e/harness.mjs';
 
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
-const [preset = 'amas-L', steps = '120', overlay = '', file = 'docs/screenshot.png'] = process.argv.slice(2);
+const [preset = 'amas-L', steps = '120', overlay = '', file = 'docs/screenshot.png', size = '1366x768'] = process.argv.slice(2);
+const [width, height] = size.split('x').map(Number);
 const link = wasm.encode_link(preset.startsWith('lesson-') ? wasm.lesson_json(preset) : wasm.preset_json(preset));
 const server = await serve('/');
 const browser = await launch();
-const page = await (await browser.newContext({ viewport: { width: 1360, height: 820 }, deviceScaleFactor: 1 })).newPage();
+const page = await (await browser.newContext({ viewport: { width, height }, deviceScaleFactor: 1 })).newPage();
 await page.goto(`${server.url}#${link}`);
 await page.waitForSelector('body[data-ready="true"]');
 // A link opens with its introduction; the screenshot shows the page behind it.

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# npm test: the gates (formatting, lints), the TypeScript unit tests, native tests, the wasm suites
-# in headless Node, the type check, then the browser end-to-end tests in headless Chromium against
-# a fresh build. The gates come first, the quickest first: they fail on what a review would. On two
-# cores the rest overlaps: the page builds while the lints and native tests run, and most browser
-# files run while the wasm suites and the reproduction report are checked.
+# npm test: the gates (formatting, lints), native tests, the wasm suites in headless Node, the type
+# check, the TypeScript unit tests (the features without a browser, on the page's wasm module), then
+# the browser end-to-end tests in headless Chromium against a fresh build. The gates come first,
+# the quickest first: they fail on what a review would. On two cores the rest overlaps: the page
+# builds while the lints and native tests run, and most browser files run while the wasm suites and
+# the reproduction report are checked.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each step's header says how long the test has run so far and the CPU seconds its steps have
@@ -61,9 +62,6 @@ cargo clippy --workspace --all-targets --quiet -- -D warnings
 step "gate: cargo clippy -D warnings (wasm32)"
 cargo clippy -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
 
-step "TypeScript unit tests (vitest, tests/unit/)"
-npx --no-install vitest run
-
 step "native tests (cargo test)"
 cargo test --workspace --quiet
 
@@ -82,6 +80,10 @@ if ! wait "$page_build"; then
   exit 1
 fi
 cat "$page_log"
+
+# The features' unit tests run the page's wasm module (web/pkg), built with the page.
+step "TypeScript unit tests (vitest, tests/unit/)"
+npx --no-install vitest run
 
 # The browser files that measure time or the browser's memory (the main thread's stalls, the time
 # to answer a hostile link, every Chromium process's memory) run alone, at the end; the others,

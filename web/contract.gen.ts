@@ -14,6 +14,18 @@ export interface Cells {
   w: number;
 }
 
+/** A metric's every-step record, merged for drawing (a [`series::Band`] with its name and span). */
+export interface ChartBand {
+  max: number[];
+  metric: string;
+  /** The least and the greatest value over each point's steps. */
+  min: number[];
+  /** Steps per recorded bucket: 1 until the record is full, then doubling. */
+  span: number;
+  /** The first step of each point's range. */
+  steps: number[];
+}
+
 /** Whether a goal is met, and why, in words. */
 export interface Check {
   because: string;
@@ -178,6 +190,27 @@ export interface Finding {
 }
 
 /**
+ * One frame of a run, as the page's panels show it: where the run stands and its metrics, with
+ * what was asked for beside them. The lattice itself is never in it: the view reads the model's
+ * buffers in place.
+ */
+export interface Frame {
+  /** The charted metric's record, when one was asked for. */
+  chart?: ChartBand | null;
+  completed: boolean;
+  finished: boolean;
+  /** The furthest step reached since the last fork: where the timeline ends. */
+  furthest: number;
+  /** The 64-bit state hash in hex, when asked for (it costs a pass over the state). */
+  hash?: string | null;
+  max_steps: number;
+  metrics: Metrics;
+  /** The model's scene when it changed since the last frame that carried one, else null. */
+  scene?: Scene | null;
+  steps: number;
+}
+
+/**
  * A hand-in as the page's Grade view shows it: its grade with the metrics its goal reads, or why
  * it could not be graded.
  */
@@ -339,6 +372,11 @@ export interface MetricInfo {
   /** One sentence, for a reader who has not read the paper. */
   about: string;
   name: string;
+  /**
+   * Where the page shows it: among the few that matter first, with the others, or only in its
+   * debug view.
+   */
+  shown: Shown;
   /** What one of it measures: `steps`, `count`, `fraction` (0 to 1), `flag`, `MPa`, ... */
   unit: string;
 }
@@ -448,6 +486,11 @@ export interface Row2 {
   scenario_hash: string;
   seed: number;
   steps: number;
+  /**
+   * Why the run stopped before its end: a rule's script went past a cap or failed (the
+   * message names the rule, the line and the cap). Absent for a run that was not stopped.
+   */
+  stopped?: string | null;
   trace?: Trace | null;
   /** The program that ran it. */
   version: string;
@@ -482,6 +525,47 @@ export interface Series {
   /** In words: "collision: token", "adaptation: on". */
   label: string;
   points: Point[];
+}
+
+/** Where the page shows a metric. */
+export type Shown = "key" | "more" | "debug";
+
+/**
+ * A rule slot as the page's editor and `kumiki rules` show it: its model and its documentation,
+ * with the paper's rule as a script.
+ */
+export interface SlotDoc {
+  model: string;
+  slot: SlotInfo;
+}
+
+/** One field of a slot's input, documented for the editor and docs/rules.md. */
+export interface SlotField {
+  about: string;
+  /** Its type in the script's words: `bool`, `int`, `float`, `string`, or a map or list of them. */
+  kind: string;
+  /** Its name in the script (`robot.first`). */
+  name: string;
+}
+
+/** What a slot is, for the reader of a scenario, the editor and docs/rules.md. */
+export interface SlotInfo {
+  /** What the decision is, where in a step it is taken, and who takes it. */
+  about: string;
+  /** The fields of the one argument the function is called with, a map. */
+  input: SlotField[];
+  /** The slot's key in a scenario's `rules`, and the name of the function its script defines. */
+  name: string;
+  /** What the function returns, in words: the values it may take. */
+  output: string;
+  /**
+   * The paper's rule written as a script: the built-in's source, and the editor's starting
+   * text. It gives the built-in's state hashes step by step (a test holds it to that).
+   */
+  paper: string;
+  /** The script may draw from the model's seeded generator (`random()`, `random_int(n)`). */
+  random: boolean;
+  title: string;
 }
 
 /** Where the class's exercise came from. */
@@ -614,4 +698,4 @@ export interface Versions {
 }
 
 /** The envelope's keys, in the order a form shows them (kumiki_model::entry::ENVELOPE). */
-export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"},{"key":"handin","role":"section"}];
+export const ENVELOPE: EnvelopeKey[] = [{"key":"version","role":"format"},{"key":"model","role":"format"},{"key":"name","role":"text"},{"key":"description","role":"text"},{"key":"max_steps","role":"setting"},{"key":"seed","role":"setting"},{"key":"rules","role":"setting"},{"key":"disturbances","role":"section"},{"key":"exercise","role":"section"},{"key":"compare","role":"section"},{"key":"handin","role":"section"}];

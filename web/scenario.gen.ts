@@ -79,6 +79,9 @@ export interface AmasScenario {
    * module.
    */
   robots: number;
+  /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
+  rules?: {
+  };
   /** The seed of every random choice of the run. */
   seed: number;
   /** Intermediate targets built, in order, before `target` (section 6.4). */
@@ -168,6 +171,11 @@ export interface ChobieScenario {
   priority: boolean;
   /** Mass of one robot, kilograms. */
   robot_mass: number;
+  /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
+  rules?: {
+    /** CHOBIE II: who leads, and in which form (rule 3 of the election). Each robot, after the election's two slots (rule 1: every robot signals in all four directions; rule 2: a robot that heard from top or bottom stops signalling left and right), decides whether it is the temporary leader and which form it recognises. Its kind sets the line it commands (the model's README, 'Three-rule election'). Asked of every robot wherever the three rules elect: the crawl's first algorithm (with every method), the bridge's construction mode and the permanent-leader baseline. The script defines fn leader(input), which answers () (not a leader) or the form it leads: "top_right", "top_left", "bottom_left", "bottom_right", "row_end" or "corner". null: the paper's rule. */
+    leader?: string | null;
+  };
   /** The overload threshold is tensile_strength / safety_factor. */
   safety_factor: number;
   /** The seed of every random choice of the run. */
@@ -292,6 +300,9 @@ export interface Cubes3dScenario {
    * before).
    */
   random_stays?: boolean;
+  /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
+  rules?: {
+  };
   /** The seed of every random choice of the run. */
   seed: number;
   /** The choice rule of step 4. */
@@ -432,6 +443,9 @@ export interface FractaScenario {
   no_holes: boolean;
   /** How lower-priority goal statements count in the difference. */
   priorities: Priorities;
+  /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
+  rules?: {
+  };
   /** The seed of every random choice of the run. */
   seed: number;
   /** x counts as stable when |Δx| is below this (equation 4). */

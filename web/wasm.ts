@@ -1,10 +1,12 @@
-// The main thread's own wasm instance, for work on documents: presets, lessons, validation and
-// links. Runs happen in workers; experiments, the report's claims and grading are the lab
-// module's (web/lab.ts), loaded when a panel needs them.
+// The main thread's own wasm instance, for what the page asks beside the scenario in view:
+// presets, lessons, links unpacked, metric tables, the models' helper calls and the lattices'
+// geometry for the editors. The scenario in view and its runs live in the simulation worker
+// (web/sim/); experiments, the report's claims and grading are the lab module's (web/lab/),
+// loaded when a panel needs them.
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
-import scenarioSchema from '../docs/schema/scenario.schema.json';
-import type { Cells, Comparison, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Proposal, Unpacked } from './contract.gen';
+import type { Cells, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Unpacked } from './contract.gen';
+import scenarioSchema from './scenario.schema.gen.json';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
@@ -50,62 +52,6 @@ export const freshSeed = (): number => core.fresh_seed();
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
 
-/**
- * The scenario in view, held in the wasm between edits (crate/core/src/draft.rs): opening a text
- * reads and checks it once; an edit changes the scenario held and checks the result once. Either
- * answers a Proposal: the text to run, or why it was refused. A scenario whose shapes span more
- * than `checkUpToCells` is left to the worker to check, and is the one in view once it ran.
- */
-export class Draft {
-  private handle: core.Draft | null = null;
-
-  constructor(private readonly checkUpToCells: number) {}
-
-  /** Made at first use: the module is loaded by then. */
-  private get draft(): core.Draft {
-    this.handle ??= new core.Draft(this.checkUpToCells);
-    return this.handle;
-  }
-
-  /** Opens a scenario text; `keepLocks` holds it to the exercise in view (an edit of the JSON text). */
-  open(json: string, keepLocks: boolean): Proposal {
-    return this.draft.open(json, keepLocks) as Proposal;
-  }
-
-  /** Sets one dotted path to `valueJson` (JSON, or else text). */
-  edit(path: string, valueJson: string): Proposal {
-    return this.draft.edit(path, valueJson) as Proposal;
-  }
-
-  /** Sets several dotted paths at once; the result is checked once. */
-  editAll(changes: Record<string, unknown>): Proposal {
-    return this.draft.edit_all(JSON.stringify(changes)) as Proposal;
-  }
-
-  /** The worker runs `json` (it opened a large scenario, or recorded a click). */
-  ran(json: string) {
-    this.draft.ran(json);
-  }
-
-  /** The share-link payload of the scenario in view, or of it named `name` (a hand-in). */
-  link(name?: string): string {
-    return this.draft.link(name);
-  }
-
-  /** The scenario in view's comparison: none, the second run's scenario and the two names, or too large to run twice. */
-  comparison(): Comparison {
-    return this.draft.comparison() as Comparison;
-  }
-
-  /** What is wrong with a goal: its syntax, or a metric or scenario field the model does not have. */
-  goalProblem(goal: string, metrics: string[]): string | undefined {
-    return this.draft.goal_problem(goal, metrics);
-  }
-}
-
-/** A model's helper call (see `kumiki queries`): JSON arguments, a JSON answer. */
-export const query = <T = Record<string, unknown>>(model: string, name: string, args: unknown): T =>
-  JSON.parse(core.model_query(model, name, JSON.stringify(args))) as T;
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];
 export const version = (): string => core.version();

@@ -387,18 +387,23 @@ fn check(
     exercise: Option<String>,
     jobs: Option<usize>,
 ) -> PyResult<Vec<String>> {
-    let original = match exercise {
-        Some(e) => Some(open_source(&e, &Limits::PAGE).map_err(err)?.0),
-        None => None,
-    };
     let opened: Vec<Result<Scenario, String>> = handins
         .iter()
         .map(|h| open_source(h, &Limits::PAGE).map(|(s, _)| s))
         .collect();
+    let teacher = match exercise {
+        Some(e) => grading::Teacher::given(&open_source(&e, &Limits::PAGE).map_err(err)?.0),
+        None => grading::Teacher::from_handins(
+            opened.iter().filter_map(|s| s.as_ref().ok()).map(Scenario::to_value),
+        ),
+    }
+    .map_err(|e| err(format!("exercise: {e}")))?;
     let graded = py.detach(|| {
         pooled(opened.len(), threads(jobs), |i| {
+            let started = std::time::Instant::now();
+            let mut clock = || started.elapsed().as_secs_f64();
             let g = match &opened[i] {
-                Ok(s) => grading::Graded::of(grading::grade(s, original.as_ref())),
+                Ok(s) => grading::Graded::of(grading::grade(s.clone(), &teacher, &mut clock)),
                 Err(e) => grading::Graded::Failed { error: e.clone() },
             };
             serde_json::to_string(&g).unwrap_or_default()

@@ -118,15 +118,28 @@ describe('accessibility audit (axe-core)', () => {
     const models = new Map();
     for (const p of wasm.presets()) if (!models.has(p.model)) models.set(p.model, p.name);
     assert.equal(models.size, 4);
+    // One page; each model's scenario opens from a link, as a shared one would.
+    const { page, context } = await openPage(s.browser, s.server.url);
     for (const [model, preset] of models) {
-      const { page, context } = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(wasm.preset_json(preset))}`);
+      await page.click('#tab-run');
+      await page.evaluate(
+        (l) => {
+          location.hash = l;
+        },
+        wasm.encode_link(wasm.preset_json(preset)),
+      );
+      await page.waitForFunction((m) => document.querySelector('#scenario-model').textContent === m && document.body.dataset.ready === 'true', model);
+      if (await page.isVisible('#intro')) {
+        await page.click('#intro button.primary');
+        await page.waitForSelector('#intro', { state: 'hidden' });
+      }
       found.push(...(await audit(page, `${model} run tab`)));
       await page.click('#tab-scenario');
       await page.waitForSelector('#panel-scenario:not([hidden])');
       for (const summary of await page.$$('#panel-scenario details:not([open]) > summary')) await summary.click();
       found.push(...(await audit(page, `${model} scenario tab`)));
-      await context.close();
     }
+    await context.close();
     assert.deepEqual(found, []);
   });
 

@@ -1,4 +1,5 @@
-// chobie in the page: every preset opens; the crawl moves the structure; a load with a typed
+// chobie in the page (that every preset opens with its robots and terrain is
+// tests/unit/rooms.test.ts's): the crawl moves the structure; a load with a typed
 // magnitude is placed by clicking a robot, recorded for the link, and shows in the stress field
 // and the overload count; the exaggerated deflected shape; the last step's signals, slot by slot;
 // the view follows the growing bridge until the user zooms; overloaded and failed robots are
@@ -29,20 +30,6 @@ async function audit(page, where) {
   });
   return violations.map((v) => `${where}: ${v}`);
 }
-
-const PRESETS = [
-  'chobie-crawl3',
-  'chobie-crawl5',
-  'chobie-crawl7',
-  'chobie-crawl9',
-  'chobie-form-a',
-  'chobie-form-b',
-  'chobie-form-c',
-  'chobie-form-d',
-  'chobie-bridge',
-  'chobie-fig13',
-  'chobie-load5',
-];
 
 const open = (preset, change = (x) => x) =>
   openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(change(JSON.parse(wasm.preset_json(preset)))))}`);
@@ -134,18 +121,6 @@ async function findCell(page, cell) {
   }
   throw new Error(`no point of the view shows cell ${cell}`);
 }
-
-test('every chobie preset opens with its robots, terrain and no error', async () => {
-  for (const preset of PRESETS) {
-    const { page, context, problems } = await open(preset);
-    assert.equal(await page.textContent('#scenario-model'), 'chobie', preset);
-    const legend = await page.$$eval('#legend span', (spans) => spans.map((x) => x.textContent));
-    for (const name of ['terrain', 'R: resting robot', 'D: driving robot']) assert.ok(legend.includes(name), `${preset}: ${legend.join(', ')}`);
-    assert.ok((await metric(page, 'robots')) >= 3, preset);
-    assert.deepEqual(problems, [], preset);
-    await context.close();
-  }
-});
 
 test('the crawl moves the structure right, step after step', async () => {
   const { page, context, problems } = await open('chobie-crawl5');

@@ -3,7 +3,6 @@
 // reopened; an exercise's verdict stays in view at 1366 × 768.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { deflateRawSync } from 'node:zlib';
 import { loadWasm, openPage, session } from './harness.mjs';
 
 const wasm = loadWasm();
@@ -24,7 +23,7 @@ describe('the first screen', () => {
     await page.waitForSelector('#welcome[open]');
     assert.match(await page.textContent('#welcome-what'), /^Kumiki is a playground/);
     assert.deepEqual(await page.$$eval('#welcome .way strong', (ws) => ws.map((w) => w.textContent)), [
-      "Watch a paper's experiment",
+      "Watch a paper's scenarios",
       'Take a lesson',
       'Build your own',
       'Compare two runs',
@@ -50,8 +49,20 @@ describe('the first screen', () => {
     await page.waitForSelector('#gallery[open]');
     assert.equal(await page.locator('#gallery-list [data-lesson]').count(), 0);
     assert.equal(await page.locator('#gallery-list [data-preset]').count(), wasm.presets().length);
+    // Each card shows a picture of its scenario, drawn by the page's renderer as it comes into view.
+    await page.locator('#gallery-list [data-preset="fracta-repair"]').scrollIntoViewIfNeeded();
+    await page.waitForSelector('#gallery-list [data-preset="fracta-repair"] canvas.card-picture[data-drawn="true"]', { timeout: 20000 });
+    const lit = await page.$eval('#gallery-list [data-preset="fracta-repair"] canvas.card-picture', (c) => {
+      const { data } = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+      const colours = new Set();
+      for (let i = 0; i < data.length; i += 4 * 97) colours.add(`${data[i]},${data[i + 1]},${data[i + 2]}`);
+      return colours.size;
+    });
+    assert.ok(lit > 2, `the picture has ${lit} colours: the lattice and its units are drawn`);
     await page.click('#gallery-list [data-preset="fracta-repair"]');
-    await page.waitForFunction(() => document.querySelector('#scenario-name').textContent === 'fracta-repair');
+    // The gallery's card and the header give its title in words, with its code name beside it.
+    await page.waitForFunction(() => document.querySelector('#scenario-code').textContent === 'fracta-repair');
+    assert.equal(await page.textContent('#scenario-name'), 'A triangle repairs itself');
 
     // The Lessons and Gallery buttons stay at the top.
     await page.click('#open-scenarios');
@@ -102,8 +113,14 @@ describe('the first screen', () => {
     const stops = [];
     for (let i = 0; i < 10 && (await page.isVisible('#tour')); i++) {
       stops.push(await page.textContent('#tour-title'));
-      // The stop marks its part of the page, and Next has the focus.
+      // The stop marks its part of the page, the box stands beside it (never over it), and Next
+      // has the focus.
       assert.equal(await page.locator('.tour-target').count(), 1);
+      const [box, target] = await page.evaluate(() =>
+        [document.querySelector('#tour'), document.querySelector('.tour-target')].map((e) => e.getBoundingClientRect().toJSON()),
+      );
+      const apart = box.right <= target.left || target.right <= box.left || box.bottom <= target.top || target.bottom <= box.top;
+      assert.ok(apart, `stop ${i + 1}: the box ${JSON.stringify(box)} covers ${JSON.stringify(target)}`);
       assert.equal(await page.evaluate(() => document.activeElement?.id), 'tour-next');
       await page.keyboard.press('Enter');
     }
@@ -154,6 +171,38 @@ describe('the first screen', () => {
     }
   });
 
+  test('the first screen shows the robots, the key metrics, the chart and the colour legend at 1366 × 768 and 768 × 1024', async () => {
+    for (const [width, height] of [
+      [1366, 768],
+      [768, 1024],
+    ]) {
+      const { page, context } = await openPage(s.browser, s.server.url, { width, height });
+      await page.waitForSelector('#metrics-key .metric');
+      const boxes = await page.evaluate(() =>
+        ['#view', '#metrics-key', '#metric-chart', '#legend'].map((id) => {
+          const r = document.querySelector(id).getBoundingClientRect();
+          return { id, top: r.top, bottom: r.bottom, left: r.left, right: r.right, height: r.height };
+        }),
+      );
+      for (const b of boxes) {
+        assert.ok(
+          b.height > 0 && b.top >= 0 && b.bottom <= height && b.left >= 0 && b.right <= width,
+          `${width} px: ${b.id} is on the first screen: ${JSON.stringify(b)}`,
+        );
+      }
+      // The model's key metrics come first; the rest, a click away.
+      const key = await page.$$eval('#metrics-key .metric > span:first-child', (s) => s.map((x) => x.textContent));
+      const table = wasm.metric_table('amas');
+      assert.deepEqual(
+        key,
+        table.filter((m) => m.shown === 'key').map((m) => m.name.replace(/_/g, ' ')),
+      );
+      assert.equal(await page.isVisible('#metrics-more'), false);
+      assert.equal(await page.textContent('#more-metrics-summary'), `More metrics (${table.filter((m) => m.shown === 'more').length})`);
+      await context.close();
+    }
+  });
+
   test('at 1366 × 768 the lesson with the longest instructions keeps Check and its verdict in view', async () => {
     const longest = wasm
       .lessons()
@@ -167,23 +216,6 @@ describe('the first screen', () => {
       const box = await page.locator(`#${id}`).boundingBox();
       assert.ok(box && box.y >= 0 && box.y + box.height <= 768, `#${id} is within the window: ${JSON.stringify(box)}`);
     }
-    await context.close();
-  });
-});
-
-describe('error messages', () => {
-  test('a link with a long problem says it briefly, and all of it on request', async () => {
-    // A misspelt field: the whole message lists every field AMAS allows (over 200 characters).
-    const bad = { ...JSON.parse(wasm.preset_json('amas-L')), robtos: 5 };
-    const link = `k1.${deflateRawSync(Buffer.from(JSON.stringify(bad))).toString('base64url')}`;
-    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`);
-    await page.waitForSelector('#banner:not([hidden])');
-    const brief = (await page.textContent('#banner-text')).split('\n')[1];
-    assert.equal(brief, "robtos: unknown field 'robtos'; did you mean 'robots'?");
-    assert.equal(await page.textContent('#banner-action'), 'Show all of it');
-    await page.click('#banner-action');
-    const full = (await page.textContent('#banner-text')).split('\n')[1];
-    assert.ok(full.length >= 200 && full.startsWith("robtos: unknown field 'robtos'; expected one of") && full.includes("'supply_rows'"), full);
     await context.close();
   });
 });
@@ -211,6 +243,15 @@ describe('metric explanations', () => {
     assert.equal(await first.locator('.metric-about').isVisible(), true);
     await page.mouse.move(0, 0);
     assert.equal(await first.locator('.metric-about').isVisible(), false);
+    // Every card's explanation opens inside the window, those at its right edge included.
+    const { width, height } = page.viewportSize();
+    for (const card of await page.locator('#metrics-key .metric').all()) {
+      await card.hover();
+      await page.waitForFunction(() => document.querySelector('.metric:hover .metric-about')?.style.top !== '');
+      const tip = await card.locator('.metric-about').boundingBox();
+      assert.ok(tip.x >= 0 && tip.y >= 0 && tip.x + tip.width <= width && tip.y + tip.height <= height, `the tip is on the screen: ${JSON.stringify(tip)}`);
+    }
+    await page.mouse.move(0, 0);
     // From the keyboard: the cards are in the Tab order and show their explanation when focused.
     await page.locator('#play').focus();
     let reached = false;

@@ -1,4 +1,6 @@
 // The page in headless Chromium: loading, running, keyboard, links, errors, recovery, persistence.
+// What the features compute and show without a flow through the browser (the form from the schema,
+// a refused parameter, text from a link shown as text) is tests/unit/features.test.ts's.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { animationFrames, kumiki, loadWasm, openPage, session, settle, stepCount, waitForSteps } from './harness.mjs';
@@ -115,19 +117,6 @@ describe('the page', () => {
     await context.close();
   });
 
-  test('text from a link is shown as text, never as HTML', async () => {
-    const evil = '<img src=x id=injected onerror="document.body.dataset.pwned=1">';
-    const scenario = JSON.parse(wasm.preset_json('amas-L'));
-    scenario.name = evil;
-    scenario.description = evil;
-    const link = wasm.encode_link(JSON.stringify(scenario));
-    const { page, context } = await openPage(s.browser, `${s.server.url}#${link}`);
-    assert.equal(await page.textContent('#scenario-name'), evil);
-    assert.equal(await page.$('#injected'), null);
-    assert.equal(await page.evaluate(() => document.body.dataset.pwned), undefined);
-    await context.close();
-  });
-
   test('a panic in the simulation is shown and the page recovers with the last good scenario', async () => {
     // The crash button is a debug control: hidden unless the address asks for ?debug.
     const plain = await openPage(s.browser, s.server.url);
@@ -145,34 +134,6 @@ describe('the page', () => {
     assert.equal(await hashOf(page), initial);
     await page.click('#step');
     await waitForSteps(page, 1);
-    await context.close();
-  });
-
-  test('an invalid parameter is refused with a message naming the field, and nothing is lost', async () => {
-    const { page, context } = await openPage(s.browser, s.server.url);
-    await page.click('#tab-scenario');
-    const before = await scenarioJson(page);
-    await page.fill('#param-robots', '0');
-    await page.dispatchEvent('#param-robots', 'change');
-    await page.waitForSelector('#param-robots-error:not(:empty)');
-    assert.match(await page.textContent('#param-robots-error'), /^robots:/);
-    assert.equal(await page.inputValue('#param-robots'), '0');
-    assert.equal(await scenarioJson(page), before);
-    await context.close();
-  });
-
-  test('the form offers every choice of the schema as a select, with bounds and help text', async () => {
-    const { page, context } = await openPage(s.browser, s.server.url);
-    await page.click('#tab-scenario');
-    assert.equal(await page.$eval('#param-collision', (e) => e.tagName), 'SELECT');
-    const options = await page.$$eval('#param-collision option', (os) => os.map((o) => o.textContent));
-    assert.deepEqual(options, ['token', 'relay', 'blackboard']);
-    assert.equal(await page.$eval('#param-field', (e) => e.tagName), 'SELECT');
-    assert.equal(await page.getAttribute('#param-supply_rows', 'max'), '64');
-    assert.match(await page.textContent('#param-collision-help'), /relay: /);
-    await page.selectOption('#param-collision', '"relay"');
-    await page.waitForFunction(() => document.querySelector('#scenario-json').value.includes('"collision": "relay"'));
-    assert.equal(await page.textContent('#param-collision-error'), '');
     await context.close();
   });
 

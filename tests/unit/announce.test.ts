@@ -1,6 +1,6 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { Announcer, CALM_MS } from '../../web/ui/announce';
-import type { Frame } from '../../web/types';
+import { Announcer, CALM_MS } from '../../web/features/announce/announcer';
+import type { Frame } from '../../web/contract.gen';
 
 /** A live region stand-in that keeps every text it is given. */
 function region() {

@@ -1,6 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
-import type { Frame } from '../../web/types';
-import { Embed, MAX_STEP, embedEditRequested, embedRequested, linkPayload, parseCommand } from '../../web/ui/embed';
+import type { Frame } from '../../web/contract.gen';
+import { Embed, MAX_STEP, linkPayload, parseCommand } from '../../web/features/embed/embed';
+import { embedEditRequested, embedRequested } from '../../web/page/address';
 
 describe('embed commands', () => {
   it('are read only from the exact envelope', () => {
@@ -58,7 +59,7 @@ describe('embed events', () => {
     const parent = { postMessage: (m: { type: string; step?: number }) => posted.push({ ...m, at: performance.now() }) } as unknown as Window;
     const loads: string[] = [];
     const host = {
-      load: (p: string) => {
+      load: async (p: string) => {
         loads.push(p);
         return null;
       },
@@ -100,7 +101,7 @@ describe('embed events', () => {
     }
   });
 
-  it('say ready once, then a step event per new state, and step 0 again after every load', () => {
+  it('say ready once, then a step event per new state, and step 0 again after every load', async () => {
     vi.useFakeTimers();
     try {
       const { posted, loads, command, frame } = framed();
@@ -110,7 +111,8 @@ describe('embed events', () => {
       // The same scenario loaded again starts in the same state: its step 0 is still news.
       command({ source: 'kumiki', type: 'load', link: 'https://x.org/#k1.same' });
       expect(loads).toEqual(['k1.same']);
-      vi.advanceTimersByTime(300);
+      // The load is answered once the worker has opened it.
+      await vi.advanceTimersByTimeAsync(300);
       frame(0, 'aa');
       vi.advanceTimersByTime(300);
       expect(posted.map((e) => e.type)).toEqual(['ready', 'step', 'step']);

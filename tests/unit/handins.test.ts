@@ -1,7 +1,7 @@
 // Reading a class's hand-ins for the Grade view: pasted links, and the CSV or text exports of
 // forms and learning platforms, with the student's name where the export has it.
 import { describe, expect, test } from 'vitest';
-import { cells, gradesCsv, parseHandins } from '../../web/grading/handins';
+import { cells, gradesCsv, parseHandins } from '../../web/features/grade/handins';
 
 const A = 'https://example.org/kumiki/#k1.jZLBbsIwDIbvfYqo5x6S';
 const B = '#k1.AbC-d_e';

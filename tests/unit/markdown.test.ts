@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { parseMarkdown } from '../../web/ui/markdown';
+import { parseMarkdown } from '../../web/widgets/markdown';
 
 describe('the exercise Markdown subset', () => {
   test('paragraphs, lists, bold, emphasis and code', () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import schema from '../../docs/schema/scenario.schema.json';
-import { choices, otherNumber } from '../../web/ui/params';
+import schema from '../../web/scenario.schema.gen.json';
+import { choices, otherNumber } from '../../web/widgets/params';
 import type { SchemaNode } from '../../web/wasm';
 
 const defs = (schema as { $defs: Record<string, SchemaNode> }).$defs;

@@ -1,7 +1,6 @@
 import { describe, expect, it } from 'vitest';
-// The name lives beside `download` (web/ui/dom.ts), which needs no wasm: unit tests run before the
-// wasm is built.
-import { figureFileName } from '../../web/ui/dom';
+// The name lives beside `download` (web/widgets/dom.ts), which needs no wasm.
+import { figureFileName } from '../../web/widgets/dom';
 
 describe('figure files', () => {
   it('are named after the experiment and the figure number, safe for any file system', () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { frameCount } from '../../web/sim/record';
-import { recordingName, sanitizeName } from '../../web/ui/record';
+import { recordingName, sanitizeName } from '../../web/features/record/record';
 
 describe('recording file names', () => {
   it('carry the scenario, the seed and the step range', () => {

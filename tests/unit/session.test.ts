@@ -1,8 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { cellCoords, is3d, sameLattice } from '../../web/render/geometry';
-import { Session } from '../../web/session';
-import type { Frame } from '../../web/types';
+import { type ScenarioOwner, Session, type SessionHost } from '../../web/page/session';
+import type { Proposed } from '../../web/sim/protocol';
+import type { Frame } from '../../web/contract.gen';
 import { layout } from './helpers';
+
+const NONE = { kind: 'none' } as const;
 
 /** A session with a record of every event it emitted, in order. */
 function recorded() {
@@ -18,10 +21,10 @@ function recorded() {
 describe('the session store', () => {
   it('says when a loaded run changes the lattice or its size, and keeps the scenario it runs', () => {
     const { session, events } = recorded();
-    session.loaded(layout('square', 4, 3), '{"seed":1}');
-    session.loaded(layout('square', 4, 3), '{"seed":2}');
-    session.loaded(layout('hex', 4, 3), '{"seed":3}');
-    session.loaded(layout('hex', 5, 3), '{"seed":4}');
+    session.loaded(0, layout('square', 4, 3), '{"seed":1}', NONE);
+    session.loaded(0, layout('square', 4, 3), '{"seed":2}', NONE);
+    session.loaded(0, layout('hex', 4, 3), '{"seed":3}', NONE);
+    session.loaded(0, layout('hex', 5, 3), '{"seed":4}', NONE);
     expect(events).toEqual(['loaded true', 'loaded false', 'loaded true', 'loaded true']);
     expect(session.scenario).toBe('{"seed":4}');
     expect(session.doc().seed).toBe(4);
@@ -62,7 +65,7 @@ describe('the session store', () => {
   it('a recorded disturbance replaces the scenario and can be undone', () => {
     const { session, events } = recorded();
     session.scenario = 'a';
-    session.recorded('a+click');
+    session.recorded('a+click', NONE);
     expect(session.scenario).toBe('a+click');
     expect(events).toEqual(['history true false', 'recorded']);
     expect(session.undo()).toBe('a');
@@ -82,5 +85,87 @@ describe('what generic code asks of a lattice', () => {
     expect(sameLattice(layout('square', 4, 3), layout('square', 4, 3))).toBe(true);
     expect(sameLattice(layout('square', 4, 3), layout('hex', 4, 3))).toBe(false);
     expect(sameLattice(layout('cubic', 4, 3, 2), layout('cubic', 4, 3, 3))).toBe(false);
+  });
+});
+
+describe('the session owns the scenario through the worker', () => {
+  /** A session whose worker answers each request with `answer(kind)`, recording every call. */
+  function owned(answer: (kind: string) => Partial<Proposed> = () => ({})) {
+    const calls: unknown[][] = [];
+    let id = 0;
+    const propose = async (kind: string): Promise<Proposed> => ({ id: ++id, problem: null, in_full: null, large_cells: 0, text: null, ...answer(kind) });
+    const owner: ScenarioOwner = {
+      async open(text, keepLocks, ask) {
+        calls.push(['open', text, keepLocks, ask]);
+        return propose('open');
+      },
+      async edit(changes) {
+        calls.push(['edit', changes]);
+        return propose('edit');
+      },
+      build: (request) => calls.push(['build', request]),
+      reset: () => calls.push(['reset']),
+      link: async (name) => `k1.${name ?? ''}`,
+      goalProblem: async () => null,
+    };
+    const host: SessionHost = {
+      refused: (brief, full) => calls.push(['refused', brief, full]),
+      large: (cells, build) => {
+        calls.push(['large', cells]);
+        build();
+      },
+    };
+    return { session: new Session(owner, host), calls };
+  }
+
+  it('an edit crosses to the worker once, as the changes alone, its number as typed', async () => {
+    const { session, calls } = owned();
+    expect(await session.set('seed', '9007199254740993')).toBeNull();
+    expect(await session.edit({ robots: 6, collision: 'token' })).toBeNull();
+    expect(await session.set('name', 'an L, not JSON')).toBeNull();
+    expect(calls).toEqual([
+      ['edit', '{"seed":9007199254740993}'],
+      ['edit', '{"robots":6,"collision":"token"}'],
+      ['edit', '{"name":"an L, not JSON"}'],
+    ]);
+  });
+
+  it("a refused edit is the caller's to show; a refused opening goes to the banner, brief and whole", async () => {
+    const { session, calls } = owned(() => ({ problem: 'robots: at least one robot is needed', in_full: 'robots: at least one robot is needed (all of it)' }));
+    const told: string[] = [];
+    expect(await session.set('robots', '0', { onProblem: (brief) => told.push(brief) })).toBe('robots: at least one robot is needed');
+    expect(told).toEqual(['robots: at least one robot is needed']);
+    expect(await session.open('{}')).toBe(false);
+    expect(calls.slice(1)).toEqual([
+      ['open', '{}', true, true],
+      ['refused', 'robots: at least one robot is needed', 'robots: at least one robot is needed (all of it)'],
+    ]);
+  });
+
+  it('the run of a request comes back with its number: then, and only then, it can be undone', async () => {
+    const { session } = owned();
+    const history: boolean[] = [];
+    session.on('history', () => history.push(session.canUndo));
+    session.loaded(0, layout('square', 4, 3), 'first', NONE);
+    expect(await session.open('second', { opens: true })).toBe(true);
+    // A reset of the first loads with no number: nothing to undo yet.
+    session.loaded(0, layout('square', 4, 3), 'first', NONE);
+    expect(session.canUndo).toBe(false);
+    session.loaded(1, layout('square', 4, 3), 'second', NONE);
+    expect([session.scenario, session.canUndo, session.undo()]).toEqual(['second', true, 'first']);
+  });
+
+  it('a large scenario is built only once the page agreed, with the number it was proposed under', async () => {
+    const { session, calls } = owned(() => ({ large_cells: 1 << 20, text: 'large' }));
+    const replaced: null[] = [];
+    session.on('replaced', (v) => replaced.push(v));
+    expect(await session.open('large', { opens: true })).toBe(true);
+    expect(calls).toEqual([
+      ['open', 'large', false, true],
+      ['large', 1 << 20],
+      ['build', 1],
+    ]);
+    session.loaded(1, layout('square', 1024, 1024), 'large', NONE);
+    expect(replaced).toEqual([null]);
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { SPEED_MAX, SPEED_NOTCH, speedText, stepsPerSecond } from '../../web/ui/speed';
+import { SPEED_MAX, SPEED_NOTCH, speedText, stepsPerSecond } from '../../web/features/run/speed';
 
 describe('the speed slider', () => {
   it('runs from 1 to 1,000 steps a second below its top, each notch faster, and max at the top', () => {

@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { History, loadPrefs, savedScenario, savePrefs, saveScenario } from '../../web/store';
+import { History, loadPrefs, savedScenario, savePrefs, saveScenario } from '../../web/page/store';
 
 /** A localStorage stand-in: a Map, or one that refuses every call like a disabled storage. */
 function fakeStorage(refuse = false) {

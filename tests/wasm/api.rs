@@ -64,9 +64,12 @@ fn cubes_scene_and_queries_in_wasm() {
     assert_eq!(sim.advance(5), 5);
     assert!(sim.scene().is_ok());
     // The first frame carries the scene; later ones only when it changed (light and ground stay).
-    assert!(!sim.scene_if_changed().unwrap().is_null());
+    let scene = |sim: &mut Sim| {
+        js_sys::Reflect::get(&sim.frame(false, None, 0).unwrap(), &"scene".into()).unwrap()
+    };
+    assert!(!scene(&mut sim).is_null());
     sim.advance(3);
-    assert!(sim.scene_if_changed().unwrap().is_null());
+    assert!(scene(&mut sim).is_null());
     assert!(sim.field("difference").is_some());
     let out = model_query(
         "cubes3d",
@@ -104,12 +107,19 @@ fn fracta_bonds_and_queries_in_wasm() {
 fn rewinding_gives_identical_hashes_and_a_click_in_the_past_forks() {
     let json = preset_json("amas-L").unwrap();
     let mut sim = Sim::new(&json).unwrap();
+    let furthest = |sim: &mut Sim| {
+        let frame = sim.frame(false, None, 0).unwrap();
+        js_sys::Reflect::get(&frame, &"furthest".into())
+            .unwrap()
+            .as_f64()
+            .unwrap()
+    };
     let mut hashes = vec![sim.hash()];
     for _ in 0..120 {
         sim.advance(1);
         hashes.push(sim.hash());
     }
-    assert_eq!(sim.furthest(), 120.0);
+    assert_eq!(furthest(&mut sim), 120.0);
     for back in [0usize, 7, 64, 119] {
         sim.seek(back as f64);
         assert_eq!(sim.steps(), back as f64);
@@ -118,12 +128,12 @@ fn rewinding_gives_identical_hashes_and_a_click_in_the_past_forks() {
     sim.seek(30.0);
     sim.advance(90);
     assert_eq!(sim.hash(), hashes[120], "forward again");
-    assert_eq!(sim.furthest(), 120.0);
+    assert_eq!(furthest(&mut sim), 120.0);
 
     sim.seek(100.0);
     sim.apply(r#"{"kind": "remove", "count": 2}"#).unwrap();
     assert_eq!(
-        sim.furthest(),
+        furthest(&mut sim),
         100.0,
         "the fork ends the timeline at the click"
     );
@@ -151,7 +161,9 @@ fn large_scenarios_are_measured_and_packed_without_building() {
     let small = draft.open(&json, false).unwrap();
     assert_eq!(field(&small, "large_cells").as_f64(), Some(0.0));
     assert_eq!(field(&small, "text").as_string(), Some(json.clone()));
-    let big = draft.edit("target", r#"{"rect": [2048, 2040]}"#).unwrap();
+    let big = draft
+        .edit_all(r#"{"target": {"rect": [2048, 2040]}}"#)
+        .unwrap();
     assert_eq!(field(&big, "large_cells").as_f64(), Some(2048.0 * 2040.0));
     assert!(field(&big, "problem").is_null());
     // The large one is the worker's to check: until it ran, the scenario in view is the first.
@@ -163,4 +175,36 @@ fn large_scenarios_are_measured_and_packed_without_building() {
         .as_string()
         .unwrap();
     assert_eq!(scenario, json);
+}
+
+#[wasm_bindgen_test]
+fn an_edit_runs_from_the_scenario_the_draft_checked() {
+    let field =
+        |v: &wasm_bindgen::JsValue, key: &str| js_sys::Reflect::get(v, &key.into()).unwrap();
+    let mut draft = Draft::new(f64::from(1 << 18));
+    assert!(field(
+        &draft.open(&preset_json("amas-L").unwrap(), false).unwrap(),
+        "problem"
+    )
+    .is_null());
+    let edited = draft.edit_all(r#"{"seed": 7, "robots": 6}"#).unwrap();
+    let text = field(&edited, "text").as_string().unwrap();
+    let mut started = Sim::start(&mut draft).unwrap();
+    let mut read = Sim::new(&text).unwrap();
+    assert_eq!(started.scenario_json(), text);
+    started.advance(50);
+    read.advance(50);
+    assert_eq!(
+        started.hash(),
+        read.hash(),
+        "the run started from the draft is the run of its text"
+    );
+    // The draft holds the scenario the run keeps: a click recorded in the run is in the next edit.
+    started.apply(r#"{"kind": "remove", "count": 1}"#).unwrap();
+    draft.ran(&started);
+    let next = draft.edit_all(r#"{"seed": 8}"#).unwrap();
+    assert!(field(&next, "text")
+        .as_string()
+        .unwrap()
+        .contains("\"at\": 50"));
 }

@@ -1,9 +1,9 @@
 // AMAS: the target shape painted on the square lattice above the supply row; the intermediate
 // stage targets of section 6 and the structure already built at the start, when the scenario has
 // them. Shapes given as {"rect": [w, h]} are shown as such: they are too large to paint.
-import { clear, el } from '../ui/dom';
-import type { ModelEditor } from './editor';
-import { GridEditor } from './grid-editor';
+import { clear, el } from '../widgets/dom';
+import type { ModelEditor } from '../editors/editor';
+import { GridEditor } from '../editors/grid/editor';
 
 type Part = { key: 'target' | 'initial'; label: string } | { key: 'stages'; index: number; label: string };
 
@@ -31,7 +31,7 @@ export const editor: ModelEditor = {
       return list;
     };
     const partValue = (p: Part): unknown => (p.key === 'stages' ? (doc.stages as unknown[])[p.index] : doc[p.key]);
-    const change = (p: Part, value: unknown): string | null => {
+    const change = (p: Part, value: unknown): Promise<string | null> => {
       if (p.key !== 'stages') return ctx.change({ [p.key]: value });
       const stages = [...(doc.stages as unknown[])];
       stages[p.index] = value;
@@ -78,17 +78,19 @@ export const editor: ModelEditor = {
     addStage.addEventListener('click', () => {
       const stages = Array.isArray(doc.stages) ? [...doc.stages] : [];
       stages.push(doc.target);
-      const problem = ctx.change({ stages });
-      if (problem) note.textContent = problem;
-      else chosen = stages.length - 1;
+      void ctx.change({ stages }).then((problem) => {
+        if (problem) note.textContent = problem;
+        else chosen = stages.length - 1;
+      });
     });
     removeStage.addEventListener('click', () => {
       const part = parts()[chosen];
       if (part.key !== 'stages') return;
       const stages = [...(doc.stages as unknown[])];
       stages.splice(part.index, 1);
-      const problem = ctx.change({ stages });
-      if (problem) note.textContent = problem;
+      void ctx.change({ stages }).then((problem) => {
+        if (problem) note.textContent = problem;
+      });
     });
     show();
 
@@ -115,4 +117,16 @@ export const editor: ModelEditor = {
       },
     };
   },
+};
+
+/** Its built-in scenarios' titles in words, by code name (the gallery and the page's header show both). */
+export const titles: Record<string, string> = {
+  'amas-L': 'The L-shaped benchmark',
+  'amas-T': 'The T-shaped benchmark',
+  'amas-bridge-single': 'A bridge built in one stage',
+  'amas-bridge-staged': 'A bridge built in three stages',
+  'amas-fig24': 'The L with module relay (figure 24)',
+  'amas-fig25': 'A square repaired after removals (figure 25)',
+  'amas-fig26': 'A square with broken communication (figure 26)',
+  'amas-square28': 'A 28 × 28 square for robustness tests',
 };

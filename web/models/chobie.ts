@@ -3,15 +3,15 @@
 // ('#' robot, '=' terrain, '.' empty); and the crawl forms of figure 7 drawn for any odd number of
 // robots by the core's `crawl` query. Loads are placed during a run with the page's load tools;
 // the generic panels show the mode, the leaders, the signals of each slot and the stress field.
-import { clear, el } from '../ui/dom';
-import { message, query } from '../wasm';
-import type { ModelEditor } from './editor';
-import { GridEditor } from './grid-editor';
+import { clear, el } from '../widgets/dom';
+import { message, modelQuery } from '../wasm';
+import type { ModelEditor } from '../editors/editor';
+import { GridEditor } from '../editors/grid/editor';
 
 const MAX_PAINTED = 200;
 
 /** The world text's robots and its terrain, each as a square shape. */
-const layers = (world: string) => query<{ robots: string; terrain: string }>('chobie', 'layers', { world });
+const layers = (world: string) => modelQuery<{ robots: string; terrain: string }>('chobie', 'layers', { world });
 
 export const editor: ModelEditor = {
   title: 'World: robots and terrain',
@@ -24,10 +24,10 @@ export const editor: ModelEditor = {
       text: 'Both layers are aligned at the top-left corner; gravity points down. A robot must rest on terrain, and the robots must form one piece.',
     });
     const error = el('p', { id: 'chobie-world-error', class: 'error', role: 'status', 'aria-live': 'polite' });
-    const apply = (): string | null => {
+    const apply = async (): Promise<string | null> => {
       let problem: string | null;
       try {
-        problem = ctx.change({ world: query<{ world: string }>('chobie', 'merge', { robots, terrain }).world });
+        problem = await ctx.change({ world: modelQuery<{ world: string }>('chobie', 'merge', { robots, terrain }).world });
       } catch (e) {
         // Both layers paint one cell.
         problem = message(e);
@@ -53,8 +53,8 @@ export const editor: ModelEditor = {
     const draw = el('button', { type: 'button', text: 'Draw crawl form', title: 'Replace the world by the chosen crawl form' });
     draw.addEventListener('click', () => {
       try {
-        const answer = query<{ world: string }>('chobie', 'crawl', { robots: Number(count.value), form: Number(form.value), margin: 12 });
-        error.textContent = ctx.change({ world: answer.world }) ?? '';
+        const answer = modelQuery<{ world: string }>('chobie', 'crawl', { robots: Number(count.value), form: Number(form.value), margin: 12 });
+        void ctx.change({ world: answer.world }).then((problem) => (error.textContent = problem ?? ''));
       } catch (e) {
         error.textContent = message(e);
       }
@@ -107,4 +107,19 @@ export const editor: ModelEditor = {
       },
     };
   },
+};
+
+/** Its built-in scenarios' titles in words, by code name (the gallery and the page's header show both). */
+export const titles: Record<string, string> = {
+  'chobie-bridge': 'A bridge over a cliff, adapting to its load',
+  'chobie-crawl3': 'Crawling with 3 robots',
+  'chobie-crawl5': 'Crawling with 5 robots',
+  'chobie-crawl7': 'Crawling with 7 robots',
+  'chobie-crawl9': 'Crawling with 9 robots',
+  'chobie-fig13': 'A load overloads the bridge (figure 13)',
+  'chobie-form-a': 'Electing a leader: form (a)',
+  'chobie-form-b': 'Electing a leader: form (b), a lone row',
+  'chobie-form-c': 'Electing a leader: form (c), a block',
+  'chobie-form-d': 'Electing a leader: form (d), two leaders',
+  'chobie-load5': 'Load adaptation with five robots (figure 14)',
 };

@@ -1,10 +1,10 @@
 // cubes3d: the initial configuration and the targets' shapes, built in 3-D (voxel-editor.ts), and
 // the targets' type-lists, typed, checked and derived from a shape (typelist-editor.ts). Both edit
 // the scenario keys `shape` and `targets`, so they travel in the share link.
-import { el } from '../ui/dom';
-import type { ModelEditor } from './editor';
-import { TargetsEditor, type TargetSpec } from './typelist-editor';
-import { VoxelEditor, type VoxelSubject } from './voxel-editor';
+import { el } from '../widgets/dom';
+import type { ModelEditor } from '../editors/editor';
+import { TargetsEditor, type TargetSpec } from '../editors/typelist-editor';
+import { VoxelEditor, type VoxelSubject } from '../editors/voxel/editor';
 
 export const editor: ModelEditor = {
   title: 'Shapes and targets',
@@ -77,4 +77,16 @@ export const editor: ModelEditor = {
       },
     };
   },
+};
+
+/** Its built-in scenarios' titles in words, by code name (the gallery and the page's header show both). */
+export const titles: Record<string, string> = {
+  'cubes-box12-ladder': 'A ladder of 12 units folds into a box',
+  'cubes-box16-ladder': 'A ladder of 16 units folds into a box',
+  'cubes-box16-movers': 'Sixteen units, four moving at once',
+  'cubes-box20-ladder': 'A ladder of 20 units folds into a box',
+  'cubes-box27-plank': '27 units try to fold into a cube',
+  'cubes-cube8-ladder': 'A cube lays itself out flat',
+  'cubes-cube8-zigzag': 'A zigzag gathers into a cube',
+  'cubes-light': 'A cube walks toward a light',
 };

@@ -1,9 +1,9 @@
 // fracta: the starting configuration as a hex shape, and the goal statements, typed with live
 // checking or derived from goal shapes drawn one per priority.
-import { clear, el } from '../ui/dom';
-import { message, query } from '../wasm';
-import type { ModelEditor } from './editor';
-import { GridEditor } from './grid-editor';
+import { clear, el } from '../widgets/dom';
+import { message, modelQuery } from '../wasm';
+import type { ModelEditor } from '../editors/editor';
+import { GridEditor } from '../editors/grid/editor';
 
 export const editor: ModelEditor = {
   title: 'Start and goal',
@@ -27,7 +27,7 @@ export const editor: ModelEditor = {
     let timer = 0;
     const check = (): string | null => {
       try {
-        query('fracta', 'check', { goal: goalText.value });
+        modelQuery('fracta', 'check', { goal: goalText.value });
         goalError.textContent = '';
         return null;
       } catch (e) {
@@ -41,8 +41,7 @@ export const editor: ModelEditor = {
     });
     applyGoal.addEventListener('click', () => {
       if (check()) return;
-      const problem = ctx.change({ goal: goalText.value });
-      goalError.textContent = problem ?? '';
+      void ctx.change({ goal: goalText.value }).then((problem) => (goalError.textContent = problem ?? ''));
     });
 
     // Goal shapes, one per priority, from which the statements are derived.
@@ -54,7 +53,7 @@ export const editor: ModelEditor = {
       lattice: 'hex',
       label: 'Goal shape',
       text: shapes[0],
-      apply: (text) => {
+      apply: async (text) => {
         shapes[current] = text;
         return null;
       },
@@ -87,11 +86,10 @@ export const editor: ModelEditor = {
     const derive = el('button', { type: 'button', class: 'primary', text: 'Derive statements', title: 'Derive the goal statements from the goal shapes' });
     derive.addEventListener('click', () => {
       try {
-        const answer = query<{ goal: string }>('fracta', 'derive', { shape: shapes.join('---\n') });
+        const answer = modelQuery<{ goal: string }>('fracta', 'derive', { shape: shapes.join('---\n') });
         goalText.value = answer.goal;
         goalError.textContent = '';
-        const problem = ctx.change({ goal: answer.goal });
-        goalError.textContent = problem ?? '';
+        void ctx.change({ goal: answer.goal }).then((problem) => (goalError.textContent = problem ?? ''));
       } catch (e) {
         goalError.textContent = message(e);
       }
@@ -129,4 +127,14 @@ export const editor: ModelEditor = {
       },
     };
   },
+};
+
+/** Its built-in scenarios' titles in words, by code name (the gallery and the page's header show both). */
+export const titles: Record<string, string> = {
+  'fracta-deadlock': 'Two triangles in deadlock (figure 4)',
+  'fracta-hexagon7': 'A line curls into a hexagon',
+  'fracta-large': '990 units form a large triangle',
+  'fracta-repair': 'A triangle repairs itself',
+  'fracta-triangle10': 'Two lines form a triangle',
+  'fracta-triangle10-3spares': 'A triangle with three spares',
 };

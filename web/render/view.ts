@@ -5,7 +5,7 @@
 import type { Picked, RendererChoice, ViewMarks } from '../sim/protocol';
 import type { SimClient } from '../sim/client';
 import type { Layout } from '../contract.gen';
-import type { Frame } from '../types';
+import type { Drawn } from '../types';
 import { is3d } from './geometry';
 import { bindGestures } from './gestures';
 
@@ -144,9 +144,9 @@ export class View {
   }
 
   /** A frame was drawn in the worker: what it drew, for the page and its tests. */
-  setFrame(frame: Frame) {
-    this.range = frame.overlayRange;
-    if (frame.drawn) this.canvas.dataset.scene = JSON.stringify(frame.drawn);
+  setFrame(drawn: Drawn | null) {
+    this.range = drawn?.overlayRange ?? null;
+    if (drawn?.scene) this.canvas.dataset.scene = JSON.stringify(drawn.scene);
     else delete this.canvas.dataset.scene;
     this.on.drawn();
   }

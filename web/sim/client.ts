@@ -1,16 +1,20 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
-// scenario that loaded, so the page stays usable.
-import type { Facts, Layout } from '../contract.gen';
-import type { Frame, WorkerTiming } from '../types';
+// scenario that loaded, so the page stays usable. The worker holds the scenario in view (its
+// Draft) beside the run: this client is the session's way to it (web/page/session.ts).
+import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
+import type { ScenarioOwner } from '../page/session';
+import type { Drawn, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
-import type { CameraMove, FromWorker, Picked, RendererChoice, ToWorker, ViewMarks } from './protocol';
-import { Cancelled, type Progress, type Recorded, type RecordSettings } from './record';
+import type { CameraMove, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
+import { type Progress, type Recorded, type RecordSettings, Recordings } from './record';
 
 export interface SimEvents {
-  loaded(layout: Layout, scenario: string): void;
-  frame(frame: Frame): void;
+  /** A run started: of the request `id` (0: a reset, a restart, a follower's scenario). */
+  loaded(id: number, layout: Layout, scenario: string, comparison: Comparison): void;
+  frame(frame: Frame, drawn: Drawn): void;
   playing(playing: boolean): void;
-  scenario(scenario: string): void;
+  /** A click was recorded in the scenario. */
+  scenario(scenario: string, comparison: Comparison): void;
   error(message: string, context: 'load' | 'apply' | 'step'): void;
   panic(message: string): void;
   /** The exercise's goal judged on the run: when it ends, or when asked with `check`. */
@@ -29,17 +33,18 @@ export type ViewCanvases = () => { canvas: OffscreenCanvas; annotations: Offscre
 /** How long the worker may leave a ping unanswered before the page says so. */
 const STALL_MS = 4000;
 
-export class SimClient {
+export class SimClient implements ScenarioOwner {
   private worker!: Worker;
+  /** The scenario of the last run that loaded: a restarted worker opens it again. */
   private lastGood: string | null = null;
-  private pendingLoad: string | null = null;
+  private requestId = 0;
+  /** Openings and edits waiting for their proposal. */
+  private proposals = new Map<number, (proposed: Proposed) => void>();
   private inspectId = 0;
   private inspectWaiters = new Map<number, (facts: Facts) => void>();
   private answers = new Map<number, (value: unknown) => void>();
   private askId = 0;
-  private recordId = 0;
-  /** Recordings under way, by id (the dialog starts one only after the last has settled). */
-  private recordings = new Map<number, { progress: Progress; resolve: (r: Recorded) => void; reject: (e: Error) => void }>();
+  private readonly recordings = new Recordings();
   private canvases: ViewCanvases | null = null;
   private viewState: { size: { width: number; height: number; dpr: number } | null; marks: ViewMarks | null } = { size: null, marks: null };
   private speed = 30;
@@ -51,7 +56,7 @@ export class SimClient {
   private stalledFor = 0;
   /** The latest frame the worker sent. */
   private last: Frame | null = null;
-  /** The second run of a comparison, kept at this run's step (web/ui/compare.ts). */
+  /** The second run of a comparison, kept at this run's step (web/features/compare/). */
   private follower: SimClient | null = null;
   /** The run this one follows, when it is the second run of a comparison. */
   private leader: SimClient | null = null;
@@ -182,33 +187,10 @@ export class SimClient {
   }
   /**
    * Records the view: the worker pauses the run, steps it, draws and encodes each frame, and
-   * sends back the file. Rejects with Cancelled as soon as `signal` aborts, without waiting for
-   * the worker (it may be inside a long step); the worker is told to stop.
+   * sends back the file. Rejects with Cancelled as soon as `signal` aborts (see Recordings).
    */
   record(settings: RecordSettings, signal: AbortSignal, progress: Progress): Promise<Recorded> {
-    if (signal.aborted) return Promise.reject(new Cancelled());
-    const id = ++this.recordId;
-    return new Promise((resolve, reject) => {
-      const abort = () => {
-        this.recordings.delete(id);
-        this.send({ type: 'record-cancel', id });
-        reject(new Cancelled());
-      };
-      signal.addEventListener('abort', abort, { once: true });
-      const settle = () => signal.removeEventListener('abort', abort);
-      this.recordings.set(id, {
-        progress,
-        resolve: (r) => {
-          settle();
-          resolve(r);
-        },
-        reject: (e) => {
-          settle();
-          reject(e);
-        },
-      });
-      this.send({ type: 'record', id, settings });
-    });
+    return this.recordings.start(settings, signal, progress, (msg) => this.send(msg));
   }
 
   private ask(message: (id: number) => ToWorker): Promise<unknown> {
@@ -234,10 +216,15 @@ export class SimClient {
       case 'pong':
         this.unanswered = null;
         return;
+      case 'proposed': {
+        const waiter = this.proposals.get(msg.proposal.id);
+        this.proposals.delete(msg.proposal.id);
+        waiter?.(msg.proposal);
+        return;
+      }
       case 'loaded':
-        this.lastGood = this.pendingLoad ?? msg.scenario;
-        this.pendingLoad = null;
-        this.on.loaded(msg.layout, msg.scenario);
+        this.lastGood = msg.scenario;
+        this.on.loaded(msg.id, msg.layout, msg.scenario, msg.comparison);
         return;
       case 'frame': {
         this.last = msg.frame;
@@ -247,7 +234,7 @@ export class SimClient {
         if (follower && (!msg.frame.finished || (follower.last?.steps ?? 0) < msg.frame.steps)) follower.follow(msg.frame.steps);
         if (follower && msg.frame.finished && this.stoppedPlaying && !follower.last?.finished) follower.play();
         this.stoppedPlaying = false;
-        this.on.frame(msg.frame);
+        this.on.frame(msg.frame, msg.drawn);
         return;
       }
       case 'playing':
@@ -257,7 +244,8 @@ export class SimClient {
         else this.reportPlaying();
         return;
       case 'scenario':
-        this.on.scenario(msg.scenario);
+        this.lastGood = msg.scenario;
+        this.on.scenario(msg.scenario, msg.comparison);
         return;
       case 'viewer':
         this.on.viewer(msg.kind);
@@ -272,15 +260,9 @@ export class SimClient {
         return;
       }
       case 'record-progress':
-        this.recordings.get(msg.id)?.progress(msg.done, msg.total);
-        return;
       case 'recorded':
-        this.recordings.get(msg.id)?.resolve({ blob: msg.blob, from: msg.from, to: msg.to });
-        this.recordings.delete(msg.id);
-        return;
       case 'record-failed':
-        this.recordings.get(msg.id)?.reject(msg.cancelled ? new Cancelled() : new Error(msg.message));
-        this.recordings.delete(msg.id);
+        this.recordings.receive(msg);
         return;
       case 'inspected': {
         const waiter = this.inspectWaiters.get(msg.id);
@@ -289,7 +271,6 @@ export class SimClient {
         return;
       }
       case 'error':
-        if (msg.context === 'load') this.pendingLoad = null;
         this.on.error(msg.message, msg.context);
         return;
       case 'panic':
@@ -305,8 +286,10 @@ export class SimClient {
     this.inspectWaiters.clear();
     for (const waiter of this.answers.values()) waiter(null);
     this.answers.clear();
-    for (const r of this.recordings.values()) r.reject(new Error('the simulation stopped and was restarted'));
-    this.recordings.clear();
+    // Requests the worker never answered are refused, so no caller waits for ever.
+    for (const [id, waiter] of this.proposals) waiter({ id, problem: 'the simulation stopped and was restarted', in_full: null, large_cells: 0, text: null });
+    this.proposals.clear();
+    this.recordings.fail('the simulation stopped and was restarted');
     this.unanswered = null;
     if (this.stalledFor) {
       this.stalledFor = 0;
@@ -316,10 +299,42 @@ export class SimClient {
     if (this.lastGood) this.load(this.lastGood);
   }
 
+  /** Opens a scenario and runs it, whatever its size, answering nobody (a restart, a follower). */
   load(scenario: string) {
     this.last = null;
-    this.pendingLoad = scenario;
-    this.send({ type: 'load', scenario });
+    this.send({ type: 'open', id: 0, text: scenario, keepLocks: false, ask: false });
+  }
+
+  private propose(message: (id: number) => ToWorker): Promise<Proposed> {
+    const id = ++this.requestId;
+    return new Promise((resolve) => {
+      this.proposals.set(id, resolve);
+      this.send(message(id));
+    });
+  }
+
+  open(text: string, keepLocks: boolean, ask: boolean): Promise<Proposed> {
+    return this.propose((id) => ({ type: 'open', id, text, keepLocks, ask }));
+  }
+  edit(changes: string): Promise<Proposed> {
+    return this.propose((id) => ({ type: 'edit', id, changes }));
+  }
+  build(id: number) {
+    this.send({ type: 'build', id });
+  }
+  reset() {
+    this.last = null;
+    this.send({ type: 'reset' });
+  }
+  link(name?: string): Promise<string> {
+    return this.ask((id) => ({ type: 'link', id, name: name ?? null })).then((value) => {
+      if (typeof value === 'string') return value;
+      const problem = value as { error?: string } | null;
+      throw new Error(problem?.error ?? 'the simulation stopped before it made the link');
+    });
+  }
+  goalProblem(goal: string, metrics: string[]): Promise<string | null> {
+    return this.ask((id) => ({ type: 'goal-problem', id, goal, metrics })) as Promise<string | null>;
   }
   play() {
     if (this.followerAlone) this.follower?.play();

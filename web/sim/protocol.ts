@@ -4,9 +4,9 @@
 // the worker too: only its progress and the finished file come back. While it runs, the worker
 // takes only 'ack' and 'record-cancel' (and answers pings); every other message waits, in order,
 // until the recording ends, so nothing moves the run or the view under the recording.
-import type { Facts, Layout } from '../contract.gen';
+import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
 import type { Marks as ViewMarks } from '../view.gen';
-import type { Frame, WorkerTiming } from '../types';
+import type { Drawn, WorkerTiming } from '../types';
 import type { RecordSettings } from './record';
 
 export type { Picked, Marks as ViewMarks } from '../view.gen';
@@ -15,10 +15,43 @@ export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
 
 export type CameraMove = { op: 'drag'; dx: number; dy: number; orbit: boolean } | { op: 'zoom'; factor: number; x: number; y: number } | { op: 'fit' };
 
+/**
+ * The worker's answer to an opening or an edit of the scenario in view (its Draft's proposal): why
+ * it was refused, or that it runs. One too large to check at once waits for 'build' when asked to
+ * (`large_cells`, with its text so that the page can note it before it is built).
+ */
+export interface Proposed {
+  /** The request's number. */
+  id: number;
+  /** Why it was refused, briefly; null when it runs. */
+  problem: string | null;
+  /** The whole of the problem, when it says more. */
+  in_full: string | null;
+  /** The cells of its largest shape when it is too large to check at once; else 0. */
+  large_cells: number;
+  /** Its text, when it is large; else null (the run's 'loaded' carries it). */
+  text: string | null;
+}
+
 export type ToWorker =
   /** The wasm module the page compiled: the worker starts with it, without compiling its own. */
   | { type: 'module'; module: WebAssembly.Module }
-  | { type: 'load'; scenario: string }
+  /**
+   * Opens scenario text in place of the scenario in view (`keepLocks`: held to its exercise's
+   * locks). Answered 'proposed'; then, unless it was refused, or is large and `ask` is set (it
+   * then waits for 'build'), 'loaded'.
+   */
+  | { type: 'open'; id: number; text: string; keepLocks: boolean; ask: boolean }
+  /** Sets dotted paths of the scenario in view (`changes`: a JSON object from path to value); answered like 'open'. */
+  | { type: 'edit'; id: number; changes: string }
+  /** Builds the large scenario proposed in answer to `id`, once the page agreed to it. */
+  | { type: 'build'; id: number }
+  /** Starts the scenario in view again from step 0 (nothing is read or checked again). */
+  | { type: 'reset' }
+  /** The share-link payload of the scenario in view (named `name`, a hand-in), as an 'answer'. */
+  | { type: 'link'; id: number; name: string | null }
+  /** What is wrong with an exercise goal for the scenario in view, as an 'answer' (null: nothing). */
+  | { type: 'goal-problem'; id: number; goal: string; metrics: string[] }
   | { type: 'play' }
   | { type: 'pause' }
   | { type: 'step'; count: number }
@@ -53,10 +86,14 @@ export type ToWorker =
 
 export type FromWorker =
   | { type: 'ready' }
-  | { type: 'loaded'; layout: Layout; scenario: string }
-  | { type: 'frame'; frame: Frame }
+  | { type: 'proposed'; proposal: Proposed }
+  /** A run started: of the page's request `id` (0 for a reset or a restart), with its scenario's canonical text. */
+  | { type: 'loaded'; id: number; layout: Layout; scenario: string; comparison: Comparison }
+  /** The run as it stands (generated from the core's record) and what the worker drew and measured. */
+  | { type: 'frame'; frame: Frame; drawn: Drawn }
   | { type: 'playing'; playing: boolean }
-  | { type: 'scenario'; scenario: string }
+  /** A click was recorded in the scenario (and, in the past, forked the run). */
+  | { type: 'scenario'; scenario: string; comparison: Comparison }
   | { type: 'inspected'; id: number; cell: number; facts: Facts }
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
   | { type: 'panic'; message: string }

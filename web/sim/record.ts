@@ -1,7 +1,9 @@
 // What the page and the simulation worker agree on about a recording: its settings, its frames,
 // what it yields, and how a cancelled one ends. The recording is made in the worker, where the
-// view is drawn (web/sim/encode.ts); the page's dialog (web/ui/record.ts) sends the settings and
+// view is drawn (web/sim/encode.ts); the page's dialog (web/features/record/) sends the settings and
 // receives the file.
+import type { FromWorker, ToWorker } from './protocol';
+
 export type RecordFormat = 'png' | 'webm' | 'gif';
 
 export interface RecordSettings {
@@ -53,3 +55,57 @@ export class Cancelled extends Error {}
 
 /** Frames done, of the recording's total: what the dialog's progress bar shows. */
 export type Progress = (done: number, total: number) => void;
+
+/** The recordings a simulation client asked its worker for, by id, until each settles. */
+export class Recordings {
+  private id = 0;
+  private readonly waiting = new Map<number, { progress: Progress; resolve: (r: Recorded) => void; reject: (e: Error) => void }>();
+
+  /**
+   * Starts one with `send`; rejects with Cancelled as soon as `signal` aborts, without waiting for
+   * the worker (it may be inside a long step), and tells the worker to stop.
+   */
+  start(settings: RecordSettings, signal: AbortSignal, progress: Progress, send: (msg: ToWorker) => void): Promise<Recorded> {
+    if (signal.aborted) return Promise.reject(new Cancelled());
+    const id = ++this.id;
+    return new Promise((resolve, reject) => {
+      const abort = () => {
+        this.waiting.delete(id);
+        send({ type: 'record-cancel', id });
+        reject(new Cancelled());
+      };
+      signal.addEventListener('abort', abort, { once: true });
+      const settle = () => signal.removeEventListener('abort', abort);
+      this.waiting.set(id, {
+        progress,
+        resolve: (r) => {
+          settle();
+          resolve(r);
+        },
+        reject: (e) => {
+          settle();
+          reject(e);
+        },
+      });
+      send({ type: 'record', id, settings });
+    });
+  }
+
+  /** The worker's news of a recording. */
+  receive(msg: Extract<FromWorker, { type: 'record-progress' | 'recorded' | 'record-failed' }>) {
+    const r = this.waiting.get(msg.id);
+    if (msg.type === 'record-progress') {
+      r?.progress(msg.done, msg.total);
+      return;
+    }
+    this.waiting.delete(msg.id);
+    if (msg.type === 'recorded') r?.resolve({ blob: msg.blob, from: msg.from, to: msg.to });
+    else r?.reject(msg.cancelled ? new Cancelled() : new Error(msg.message));
+  }
+
+  /** Every recording under way fails: the worker is gone. */
+  fail(message: string) {
+    for (const r of this.waiting.values()) r.reject(new Error(message));
+    this.waiting.clear();
+  }
+}

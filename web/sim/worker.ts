@@ -1,590 +1,249 @@
-// The simulation worker: owns the wasm Sim and the lattice view (a wasm Viewer drawing on the
-// page's transferred OffscreenCanvas), runs steps at the requested pace and draws at most once
-// per animation frame, reading the model's buffers in place. What the page's panels show goes
-// out as frames, flow-controlled: the next is sent only after the page has taken the last, so a
-// fast simulation never floods the page. Timing here paces the run; it never enters the model.
-// Recordings are made here too (web/sim/encode.ts): each frame is stepped, drawn and encoded next
-// to the view, and only the finished file goes to the page.
-import init, { Sim, Viewer, panic_message, simulate_panic } from '../pkg/kumiki_wasm.js';
-import type { Check, Facts, Metrics, Scene } from '../contract.gen';
-import type { ChartBand, Frame } from '../types';
-import type { RenderStats } from '../view.gen';
-import type { FromWorker, ToWorker } from './protocol';
-import { encode, type RecordHost } from './encode';
-import { Cancelled, type RecordSettings } from './record';
+// The simulation worker: owns the scenario in view (the wasm Draft), the run built from it (Sim)
+// and the lattice view (a wasm Viewer drawing on the page's transferred OffscreenCanvas). An
+// opening or an edit is checked once by the Draft, and the run is built from the checked scenario
+// it holds: nothing is read or checked again. The play loop and the frames are web/sim/pace.ts's;
+// recordings are web/sim/recorder.ts's.
+import init, { Draft, Sim, Viewer, simulate_panic } from '../pkg/kumiki_wasm.js';
+import type { Comparison, Facts, Proposal } from '../contract.gen';
+import {
+  acknowledged,
+  follow,
+  guard,
+  judge,
+  memory,
+  play,
+  post,
+  redraw,
+  run,
+  seek,
+  setPlaying,
+  setSpeed,
+  setVisible,
+  started,
+  stepNow,
+  touched,
+  untold,
+} from './pace';
+import type { Proposed, ToWorker } from './protocol';
+import { cancelRecording, holdsBack, record } from './recorder';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
-const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessage(msg, transfer);
 
-/** Longest stretch of stepping between looks at the message queue. */
-const SLICE_MS = 12;
 /**
- * The state hash costs a pass over the state: while playing it is refreshed at most this often,
- * and no more often than keeps it under HASH_SHARE of the time (a 16 M-cell AMAS takes 0.1 s to
- * hash, which every 250 ms would take as much as its stepping).
+ * Scenarios whose shapes span more cells than this are not checked at once: the page is told
+ * their size first, to show a notice while they are checked and built, and to ask about the
+ * memory of one that needs much (web/page/opening.ts). Checking costs about 0.2 µs a cell natively
+ * and about twice that in wasm: 2^18 cells stay well under 0.1 s on a busy machine; the largest
+ * (4096 × 4096, 64 times more) take seconds.
  */
-const HASH_EVERY_MS = 250;
-const HASH_SHARE = 0.05;
-/**
- * While playing, the longest between two frames: a step that would end past it waits until the
- * next animation frame has drawn. A worker's animation frames run only when its task queue is
- * idle, so a run that steps without pause (a large lattice, a slow machine) would otherwise never
- * be drawn, and one whose steps are long would be drawn a step or more late.
- */
-const FRAME_GAP_MS = 100;
-/** The longest stepping holds for an animation frame that does not come. */
-const HOLD_MAX_MS = 1000;
+const LARGE_CELLS = 1 << 18;
 
-let sim: Sim | null = null;
-let viewer: Viewer | null = null;
-let maxSteps = 0;
-let playing = false;
-let stepsPerSecond = 30;
-let overlay: string | null = null;
-/** The metric the page charts, and about how many points it draws. */
-let chartMetric: string | null = null;
-let chartPoints = 400;
-let awaitingAck = false;
-/** The page has not been told of the state as it stands. */
-let dirty = false;
-/** The state changed since the view last drew it. */
-let changed = false;
-let drawScheduled = false;
-/** When the last frame was drawn, or a hold stopped waiting for one: the next is due FRAME_GAP_MS after. */
-let lastDrawAt = 0;
-/** Stepping waits for the pending draw's animation frame. */
-let holding = false;
-/** The page is shown: a hidden page gets no animation frames, so stepping never waits for one. */
-let visible = true;
-/** What the last draw reported, for the next frame. */
-let drawn: RenderStats | null = null;
-/** While playing, the hash is not refreshed before this time. */
-let nextHashAt = 0;
-let budget = 0;
-let lastTick = 0;
-let msPerStep = 1;
-let rateWindow: { t: number; steps: number }[] = [];
-let tickScheduled = false;
-/** The run's end was judged by its exercise's goal (once per end reached). */
-let goalJudged = false;
-/** A step to go back (or forward) to; seeks that arrive together are done once, for the last. */
-let seekTo: number | null = null;
+/** The scenario in view, made once the module has started. */
+let draft: Draft | null = null;
+/** A large scenario proposed and waiting for the page to agree to it: its request and text. */
+let waiting: { id: number; text: string } | null = null;
 
-/** A step to follow (the first run of a comparison reached it); null when there is none. */
-let followTo: number | null = null;
-
-/** Calls waiting for a later task: after the messages already queued, and unthrottled (a timer is not). */
-const later: (() => void)[] = [];
-const channel = new MessageChannel();
-channel.port1.onmessage = () => later.shift()?.();
-function inLaterTask(f: () => void) {
-  later.push(f);
-  channel.port2.postMessage(null);
-}
-function schedule() {
-  if (!tickScheduled) {
-    tickScheduled = true;
-    inLaterTask(() => {
-      tickScheduled = false;
-      tick();
-    });
-  }
+/** Answers an opening or an edit; runs it unless it was refused, or is large and the page asks first. */
+function proposed(id: number, proposal: Proposal | undefined, ask: boolean) {
+  waiting = null;
+  if (!proposal) return;
+  const large = proposal.large_cells > 0;
+  const answer: Proposed = {
+    id,
+    problem: proposal.problem ?? null,
+    in_full: proposal.in_full ?? null,
+    large_cells: proposal.large_cells,
+    text: large ? proposal.text : null,
+  };
+  post({ type: 'proposed', proposal: answer });
+  if (proposal.problem) return;
+  if (!large) startRun(id, () => Sim.start(needDraft()), proposal.text);
+  else if (ask) waiting = { id, text: proposal.text };
+  else buildLarge(id, proposal.text);
 }
 
-function guard<T>(context: 'load' | 'apply' | 'step', f: () => T): T | undefined {
-  try {
-    return f();
-  } catch (e) {
-    const panic = panic_message();
-    if (panic) {
-      sim = null;
-      playing = false;
-      post({ type: 'panic', message: panic });
-    } else {
-      post({ type: 'error', message: e instanceof Error ? e.message : String(e), context });
-    }
-    return undefined;
-  }
-}
-
-function measuredRate(): number {
-  if (rateWindow.length < 2) return 0;
-  const a = rateWindow[0];
-  const b = rateWindow[rateWindow.length - 1];
-  return b.t > a.t ? ((b.steps - a.steps) * 1000) / (b.t - a.t) : 0;
-}
-
-function sendFrame(force = false) {
-  if (!sim || (awaitingAck && !force)) return;
-  const s = sim;
-  const frame = guard('step', (): Frame => {
-    let hash: string | null = null;
-    const now = performance.now();
-    if (!playing || now >= nextHashAt) {
-      hash = s.hash();
-      nextHashAt = now + Math.max(HASH_EVERY_MS, (performance.now() - now) / HASH_SHARE);
-    }
-    const scene = s.scene_if_changed() as Scene | null;
-    const range = overlay ? viewer?.overlay_range() : undefined;
-    return {
-      steps: s.steps(),
-      furthest: s.furthest(),
-      maxSteps,
-      finished: s.finished(),
-      completed: s.completed(),
-      hash,
-      metrics: s.metrics() as Metrics,
-      stepsPerSecond: playing ? measuredRate() : 0,
-      scene,
-      chart: chartMetric ? chartBand(s, chartMetric) : null,
-      overlayRange: range ? [range[0], range[1]] : null,
-      drawn,
-      work: work(),
-    };
-  });
-  if (!frame) return;
-  const transfer: Transferable[] = [];
-  if (frame.chart) transfer.push(frame.chart.steps.buffer, frame.chart.min.buffer, frame.chart.max.buffer);
-  awaitingAck = true;
-  dirty = false;
-  post({ type: 'frame', frame }, transfer);
-  if (frame.finished && !goalJudged) {
-    goalJudged = true;
-    judge(s);
-  } else if (!frame.finished) goalJudged = false;
-}
-
-/** Milliseconds spent in the model's steps since the worker started. */
-let stepMs = 0;
-/** The wasm instance's memory, once started. */
-let memory: WebAssembly.Memory | null = null;
-
-function work(): Frame['work'] {
-  const [frames, uploadMs, drawMs] = viewer ? viewer.timing() : [0, 0, 0];
-  return { stepMs, frames, uploadMs, drawMs, wasmBytes: memory?.buffer.byteLength ?? 0 };
-}
-
-/** Draws the lattice as it stands, now. */
-function draw() {
-  if (!viewer || !sim) return;
-  const v = viewer;
-  const s = sim;
-  if (changed) v.frame_changed();
-  changed = false;
-  const stats = guard('step', () => v.draw_sim(s, overlay ?? undefined) as RenderStats | null);
-  if (stats === undefined) return;
-  // What was drawn changed (marks hid the ghost, a hover highlighted cells): the page is told.
-  if (JSON.stringify(stats) !== JSON.stringify(drawn)) dirty = true;
-  drawn = stats;
-}
-
-const frameTimer: (f: () => void) => void =
-  typeof scope.requestAnimationFrame === 'function' ? (f) => scope.requestAnimationFrame(f) : (f) => setTimeout(f, 16);
-
-/** Draws at the next animation frame, then tells the page (once it took the last frame). */
-function redraw() {
-  if (drawScheduled) return;
-  drawScheduled = true;
-  frameTimer(() => {
-    drawScheduled = false;
-    lastDrawAt = performance.now();
-    draw();
-    if (dirty) sendFrame();
-    else post({ type: 'drew', work: work() });
-    if (holding) {
-      holding = false;
-      schedule();
-    }
+/** Checks and builds a large scenario (this takes a while), which then becomes the one in view. */
+function buildLarge(id: number, text: string) {
+  startRun(id, () => {
+    const sim = new Sim(text);
+    needDraft().ran(sim);
+    return sim;
   });
 }
 
-/** A draw is pending and the next step would end past its due time: stepping makes way for it. */
-function drawOverdue(): boolean {
-  return drawScheduled && visible && performance.now() + msPerStep - lastDrawAt > FRAME_GAP_MS;
+/** Replaces the run with `make()`'s and tells the page: its layout, its text and its comparison. */
+function startRun(id: number, make: () => Sim, text?: string) {
+  const created = guard('load', make);
+  if (!created) return;
+  run.sim?.free();
+  run.sim = created;
+  const comparison = guard('load', () => needDraft().comparison() as Comparison) ?? { kind: 'none' };
+  post({ type: 'loaded', id, layout: created.layout(), scenario: text ?? created.scenario_json(), comparison });
+  attachLayout();
+  started();
 }
 
-/** Stops stepping until the pending draw's animation frame, or for HOLD_MAX_MS if none comes. */
-function hold() {
-  if (holding) return;
-  holding = true;
-  setTimeout(() => {
-    if (!holding) return;
-    holding = false;
-    // Step another FRAME_GAP_MS before waiting again.
-    lastDrawAt = performance.now();
-    schedule();
-  }, HOLD_MAX_MS);
+function needDraft(): Draft {
+  draft ??= new Draft(LARGE_CELLS);
+  return draft;
 }
 
-/** The run's state changed: draw it and tell the page. */
-function touched() {
-  changed = true;
-  dirty = true;
-  redraw();
-}
-
-/** The charted metric's record of every step so far, merged to about one point per pixel. */
-function chartBand(s: Sim, metric: string): ChartBand {
-  const flat = s.chart(metric, chartPoints);
-  const n = flat.length / 3;
-  return { metric, steps: flat.slice(0, n), min: flat.slice(n, 2 * n), max: flat.slice(2 * n), span: s.chart_span() };
-}
-
-/** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
-function judge(s: Sim) {
-  const result = guard('step', () => s.check_goal() as Check | undefined);
-  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps() });
-}
-
-function setPlaying(on: boolean) {
-  if (playing === on) return;
-  playing = on && !!sim && !sim.finished();
-  budget = 0;
-  lastTick = performance.now();
-  rateWindow = [];
-  post({ type: 'playing', playing });
-  if (!playing) touched();
-  schedule();
-}
-
-/** Goes to the step a seek asked for, if one is waiting. False if the run was lost doing it. */
-function seekNow(): boolean {
-  if (!sim || seekTo === null) return !!sim;
-  const s = sim;
-  const step = seekTo;
-  seekTo = null;
-  if (guard('step', () => s.seek(step)) === undefined && !sim) return false;
-  touched();
-  return true;
-}
-
-/** Steps the run `count` steps, timing them for the page and for the pace; undefined if it failed. */
-function timedAdvance(s: Sim, count: number): number | undefined {
-  const t0 = performance.now();
-  const n = guard('step', () => s.advance(count));
-  const dt = performance.now() - t0;
-  stepMs += dt;
-  if (n) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
-  return n;
-}
-
-/**
- * Steps toward the step to follow for at most a slice, back by seeking, forward by stepping; a run
- * that ends first stays at its end. True while there is more to do.
- */
-function followNow(): boolean {
-  if (!sim || followTo === null) return false;
-  const s = sim;
-  const target = followTo;
-  if (target < s.steps()) {
-    followTo = null;
-    seekTo = target;
-    seekNow();
-    return false;
-  }
-  const start = performance.now();
-  let moved = false;
-  while (s.steps() < target && !s.finished() && performance.now() - start < SLICE_MS) {
-    const n = timedAdvance(s, Math.min(target - s.steps(), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))));
-    if (!n) break;
-    moved = true;
-  }
-  if (!sim) return false;
-  if (moved) touched();
-  const more = s.steps() < target && !s.finished();
-  if (!more) followTo = null;
-  return more;
-}
-
-function tick() {
-  if (followNow()) {
-    schedule();
-    return;
-  }
-  if (!seekNow()) return;
-  if (playing && sim) {
-    const s = sim;
-    const start = performance.now();
-    const unlimited = !Number.isFinite(stepsPerSecond);
-    budget = unlimited ? Infinity : Math.min(budget + ((start - lastTick) * stepsPerSecond) / 1000, stepsPerSecond + 1);
-    lastTick = start;
-    let taken = 0;
-    while (budget >= 1 && performance.now() - start < SLICE_MS && !drawOverdue()) {
-      const want = unlimited
-        ? Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))
-        : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4))));
-      const n = timedAdvance(s, want);
-      if (n === undefined) return;
-      taken += n;
-      budget -= n;
-      if (n < want) break;
-    }
-    if (!sim) return;
-    if (taken > 0) {
-      touched();
-      rateWindow.push({ t: performance.now(), steps: s.steps() });
-      while (rateWindow.length > 2 && rateWindow[rateWindow.length - 1].t - rateWindow[0].t > 2000) rateWindow.shift();
-    }
-    if (s.finished()) {
-      playing = false;
-      post({ type: 'playing', playing: false });
-      draw();
-      sendFrame(true);
-    }
-  }
-  if (playing) {
-    if (drawOverdue()) {
-      hold();
-    } else if (Number.isFinite(stepsPerSecond) && budget < 1) {
-      setTimeout(schedule, Math.max(1, Math.min(50, ((1 - budget) * 1000) / stepsPerSecond)));
-    } else {
-      schedule();
-    }
-  }
+/** Tells the view the run's lattice and legends. */
+function attachLayout() {
+  const v = run.viewer;
+  const s = run.sim;
+  if (v && s) guard('load', () => v.set_layout_of(s));
 }
 
 function handle(msg: ToWorker) {
   switch (msg.type) {
-    case 'load': {
-      playing = false;
-      followTo = null;
-      const created = guard('load', () => new Sim(msg.scenario));
-      if (!created) return;
-      sim?.free();
-      sim = created;
-      maxSteps = created.max_steps();
-      post({ type: 'loaded', layout: created.layout(), scenario: created.scenario_json() });
-      post({ type: 'playing', playing: false });
-      awaitingAck = false;
-      drawn = null;
-      attachLayout();
-      changed = true;
-      draw();
-      sendFrame(true);
+    case 'open':
+      return proposed(
+        msg.id,
+        guard('load', () => needDraft().open(msg.text, msg.keepLocks) as Proposal),
+        msg.ask,
+      );
+    case 'edit':
+      return proposed(
+        msg.id,
+        guard('load', () => needDraft().edit_all(msg.changes) as Proposal),
+        true,
+      );
+    case 'build':
+      if (waiting?.id === msg.id) buildLarge(msg.id, waiting.text);
+      waiting = null;
+      return;
+    case 'reset':
+      if (run.sim) startRun(0, () => Sim.start(needDraft()));
+      return;
+    case 'link': {
+      // A name too long for a hand-in is the caller's to show, not the banner's.
+      let value: unknown;
+      try {
+        value = needDraft().link(msg.name ?? undefined);
+      } catch (e) {
+        value = { error: e instanceof Error ? e.message : String(e) };
+      }
+      post({ type: 'answer', id: msg.id, value });
       return;
     }
+    case 'goal-problem':
+      post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
+      return;
     case 'play':
-      followTo = null;
-      setPlaying(true);
-      return;
+      return play();
     case 'pause':
-      setPlaying(false);
+      return setPlaying(false);
+    case 'step':
+      if (run.sim) stepNow(run.sim, msg.count);
       return;
-    case 'step': {
-      if (!sim) return;
-      const s = sim;
-      setPlaying(false);
-      followTo = null;
-      guard('step', () => s.advance(msg.count));
-      touched();
-      return;
-    }
     case 'check':
-      if (sim) judge(sim);
+      if (run.sim) judge(run.sim);
       return;
     case 'seek':
-      if (!sim) return;
-      setPlaying(false);
-      followTo = null;
-      seekTo = msg.step;
-      schedule();
+      if (run.sim) seek(msg.step);
       return;
     case 'follow':
-      if (!sim) return;
-      setPlaying(false);
-      seekTo = null;
-      followTo = msg.step;
-      schedule();
+      if (run.sim) follow(msg.step);
       return;
     case 'speed':
-      stepsPerSecond = msg.stepsPerSecond;
-      budget = 0;
-      lastTick = performance.now();
-      return;
+      return setSpeed(msg.stepsPerSecond);
     case 'overlay':
-      overlay = msg.field;
-      touched();
-      return;
+      run.overlay = msg.field;
+      return touched();
     case 'chart':
-      chartMetric = msg.metric;
-      chartPoints = Math.max(1, Math.min(4096, Math.round(msg.points)));
-      dirty = true;
-      redraw();
-      return;
-    case 'apply': {
-      if (!sim) return;
-      const s = sim;
-      const ok = guard('apply', () => {
-        s.apply(msg.action);
-        return true;
-      });
-      if (ok) {
-        post({ type: 'scenario', scenario: s.scenario_json() });
-        touched();
-      }
-      return;
-    }
+      run.chartMetric = msg.metric;
+      run.chartPoints = Math.max(1, Math.min(4096, Math.round(msg.points)));
+      return untold();
+    case 'apply':
+      return apply(msg.action);
     case 'inspect': {
-      if (!sim) return;
-      const s = sim;
-      const facts = guard('step', () => s.inspect(msg.cell) as Facts);
+      const s = run.sim;
+      const facts = s ? guard('step', () => s.inspect(msg.cell) as Facts) : undefined;
       if (facts) post({ type: 'inspected', id: msg.id, cell: msg.cell, facts });
       return;
     }
     case 'ack':
-      awaitingAck = false;
-      if (dirty) redraw();
-      return;
+      return acknowledged();
     case 'crash':
       guard('step', () => simulate_panic());
       return;
     case 'ping':
+    case 'module':
       return;
     case 'visible':
-      visible = msg.visible;
-      schedule();
-      return;
-    case 'view': {
-      viewer?.free();
-      viewer = null;
-      const created = guard('load', () => new Viewer(msg.canvas, msg.annotations, msg.prefer));
-      if (!created) return;
-      viewer = created;
-      post({ type: 'viewer', kind: viewer.kind() as 'webgl2' | 'canvas2d' });
-      attachLayout();
-      touched();
-      return;
-    }
+      return setVisible(msg.visible);
+    case 'view':
+      return attachView(msg);
     case 'resize':
-      viewer?.resize(msg.width, msg.height, msg.dpr);
-      redraw();
-      return;
+      run.viewer?.resize(msg.width, msg.height, msg.dpr);
+      return redraw();
     case 'camera': {
-      const v = viewer;
+      const v = run.viewer;
       if (!v) return;
       const m = msg.move;
       if (m.op === 'drag') v.drag(m.dx, m.dy, m.orbit);
       else if (m.op === 'zoom') v.zoom(m.factor, m.x, m.y);
       else v.fit();
-      redraw();
-      return;
+      return redraw();
     }
     case 'marks':
-      viewer?.set_marks(msg.marks);
-      redraw();
-      return;
+      run.viewer?.set_marks(msg.marks);
+      return redraw();
     case 'pick': {
-      const v = viewer;
-      const s = sim;
+      const v = run.viewer;
+      const s = run.sim;
       const value = v && s ? guard('step', () => v.pick_sim(s, msg.x, msg.y)) : null;
       post({ type: 'answer', id: msg.id, value: value ?? { cell: -1, code: 0, hit: null } });
       return;
     }
     case 'code':
-      post({ type: 'answer', id: msg.id, value: sim ? sim.cell_code(msg.cell) : 0 });
+      post({ type: 'answer', id: msg.id, value: run.sim ? run.sim.cell_code(msg.cell) : 0 });
       return;
     case 'middle':
-      post({ type: 'answer', id: msg.id, value: sim ? sim.middle_occupied() : -1 });
+      post({ type: 'answer', id: msg.id, value: run.sim ? run.sim.middle_occupied() : -1 });
       return;
     case 'record':
-      void record(msg.id, msg.settings);
+      void record(msg.id, msg.settings, handleReporting);
       return;
-    case 'record-cancel': {
-      if (recording?.id === msg.id) {
-        recording.stop.abort();
-        return;
-      }
-      // Cancelled before it started: it never will.
-      const waiting = held.findIndex((m) => m.type === 'record' && m.id === msg.id);
-      if (waiting >= 0) {
-        held.splice(waiting, 1);
-        post({ type: 'record-failed', id: msg.id, message: 'cancelled', cancelled: true });
-      }
-      return;
-    }
+    case 'record-cancel':
+      return cancelRecording(msg.id);
   }
 }
 
-// ---- recording ----------------------------------------------------------------------------------
-
-/** The recording under way, and how to stop it. */
-let recording: { id: number; stop: AbortController } | null = null;
-/**
- * What came in during a recording, other than acks and cancels: kept in order and handled
- * once it ends. Holding rather than refusing keeps the page's requests (a hover pick, a play from
- * a course page) meaningful, and nothing can move the run or resize the view under the recording.
- */
-const held: ToWorker[] = [];
-/** Messages a recording does not hold back (pings never wait): the page's panels follow it, and Cancel stops it. */
-const DURING_RECORDING = new Set<ToWorker['type']>(['ack', 'record-cancel']);
-
-/** The run and the view, as the recorder steps and copies them. */
-const recordHost: RecordHost = {
-  steps: () => sim?.steps() ?? 0,
-  async advance(count) {
-    const s = sim;
-    if (!s) throw new Error('the simulation stopped');
-    if (timedAdvance(s, count) === undefined) throw new Error('the run could not be stepped');
-    changed = true;
-    dirty = true;
-    // The GIF encoder never waits on anything: without this task boundary the worker would read
-    // no message until the recording ended. Here the page's Cancel and acks get in.
-    await new Promise<void>((resolve) => inLaterTask(resolve));
-    return { steps: s.steps(), finished: s.finished() };
-  },
-  async captureFrame() {
-    draw();
-    const v = viewer;
-    if (!v) throw new Error('the view is gone');
-    let bitmap: ImageBitmap;
-    try {
-      // In the task that drew: WebGL keeps no drawing buffer past it.
-      bitmap = v.capture();
-    } catch (e) {
-      throw new Error(`the view could not be captured: ${String(e)}`);
-    }
-    // The page follows the recording (step counter, panels) as fast as it takes frames.
-    if (dirty) sendFrame();
-    return bitmap;
-  },
-};
-
-/**
- * Records the view from the step the run stands at, as the page's dialog asked (it has already
- * resized the view to the recording's scale), and sends back the file or why there is none.
- */
-async function record(id: number, settings: RecordSettings) {
-  recording = { id, stop: new AbortController() };
-  try {
-    setPlaying(false);
-    // A seek the page asked for before recording is where the recording starts.
-    seekNow();
-    if (!sim || !viewer) throw new Error('nothing is drawn yet');
-    const progress = (done: number, total: number) => post({ type: 'record-progress', id, done, total });
-    const { blob, from, to } = await encode(recordHost, settings, recording.stop.signal, progress);
-    post({ type: 'recorded', id, blob, from, to });
-  } catch (e) {
-    post({ type: 'record-failed', id, message: e instanceof Error ? e.message : String(e), cancelled: e instanceof Cancelled });
-  } finally {
-    recording = null;
-    // A held 'record' starts the next recording, which holds what follows it.
-    while (!recording && held.length > 0) handleReporting(held.shift()!);
-  }
+/** Applies a click tool's action now and records it in the scenario in view. */
+function apply(action: string) {
+  const s = run.sim;
+  if (!s) return;
+  const ok = guard('apply', () => {
+    s.apply(action);
+    return true;
+  });
+  if (!ok) return;
+  const d = needDraft();
+  d.ran(s);
+  const comparison = guard('step', () => d.comparison() as Comparison) ?? { kind: 'none' };
+  post({ type: 'scenario', scenario: s.scenario_json(), comparison });
+  touched();
 }
 
-/** Tells the view the run's lattice and legends. */
-function attachLayout() {
-  const v = viewer;
-  const s = sim;
-  if (v && s) guard('load', () => v.set_layout_of(s));
+/** Draws on the page's canvases from now on (a new renderer, or a restarted worker). */
+function attachView(msg: Extract<ToWorker, { type: 'view' }>) {
+  run.viewer?.free();
+  run.viewer = null;
+  const created = guard('load', () => new Viewer(msg.canvas, msg.annotations, msg.prefer));
+  if (!created) return;
+  run.viewer = created;
+  post({ type: 'viewer', kind: created.kind() as 'webgl2' | 'canvas2d' });
+  attachLayout();
+  touched();
 }
 
 const queue: ToWorker[] = [];
 let ready = false;
 /** Handles a message now, or holds it until the recording under way ends. */
 function take(msg: ToWorker) {
-  if (recording && !DURING_RECORDING.has(msg.type)) held.push(msg);
-  else handleReporting(msg);
+  if (!holdsBack(msg)) handleReporting(msg);
 }
 
 /**
@@ -611,7 +270,7 @@ scope.onmessage = (e: MessageEvent<ToWorker>) => {
 function start(module: WebAssembly.Module) {
   init({ module_or_path: module })
     .then((exports) => {
-      memory = exports.memory;
+      memory.wasm = exports.memory;
       ready = true;
       post({ type: 'ready' });
       for (const m of queue.splice(0)) take(m);

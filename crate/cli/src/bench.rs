@@ -14,6 +14,11 @@
 //! One more repeat runs first and is not counted, so caches (and in wasm, the engine's optimising
 //! compiler) are warm. The median rate over the repeats is reported, with the bytes the run holds
 //! per lattice cell.
+//!
+//! `"rules": "paper"` puts every slot's paper rule, as a script, in the scenario's model
+//! (`"against"` names the workload of the built-in rules, which the bench prints it beside), and
+//! `"stops"` names a file of hostile scripts (`tests/fixtures/rules.json`) to time how long each
+//! takes to be stopped instead of stepping one run.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -22,7 +27,7 @@ use std::time::Instant;
 use kumiki_core::experiment::Experiment;
 
 use kumiki_core::playback::Playback;
-use kumiki_core::{presets, Run, Scenario};
+use kumiki_core::{models, presets, Run, Scenario};
 use serde_json::{json, Map, Value};
 
 /// Counts live heap bytes, so the benchmark can report the memory a run holds.
@@ -94,6 +99,8 @@ pub struct Workload {
     pub work_unit: String,
     /// Instead of stepping one run: the wall time of a whole built-in experiment.
     pub experiment: Option<String>,
+    /// Instead of stepping one run: hostile scripts' scenarios, each timed until it is stopped.
+    pub stops: Vec<(String, Scenario)>,
 }
 
 pub fn load(path: &std::path::Path) -> Result<Workload, String> {
@@ -105,6 +112,10 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
         .ok_or_else(|| err("name is required"))?
         .to_string();
     let experiment = v["experiment"].as_str().map(str::to_string);
+    let stops = match v["stops"].as_str() {
+        None => Vec::new(),
+        Some(file) => hostile(file).map_err(|e| err(&e))?,
+    };
     let scenario = match (&v["scenario"], &experiment) {
         (Value::String(preset), _) => presets::scenario(preset).map_err(|e| err(&e.to_string()))?,
         (obj @ Value::Object(_), _) => {
@@ -114,6 +125,7 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
             let e = Experiment::named_or_json(exp).map_err(|e| err(&e.to_string()))?;
             e.scenarios[0].clone()
         }
+        (Value::Null, None) if !stops.is_empty() => stops[0].1.clone(),
         _ => {
             return Err(err(
                 "scenario (a preset name or object) or experiment is required",
@@ -124,6 +136,14 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
     if let Some(set) = v["set"].as_object() {
         for (k, val) in set {
             overrides.push((k.clone(), val.clone()));
+        }
+    }
+    if v["rules"] == "paper" {
+        for slot in models::entry(scenario.model())
+            .map_err(|e| err(&e.to_string()))?
+            .slots
+        {
+            overrides.push((format!("rules.{}", slot.name), slot.paper.into()));
         }
     }
     let scenario = scenario
@@ -139,7 +159,52 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
         work_per_step: v["work_per_step"].as_f64(),
         work_unit: v["work_unit"].as_str().unwrap_or("").to_string(),
         experiment,
+        stops,
     })
+}
+
+/// The hostile scripts of a rules fixture (`stopped`: name, preset, slot, source), each as its
+/// scenario.
+fn hostile(file: &str) -> Result<Vec<(String, Scenario)>, String> {
+    let text = std::fs::read_to_string(file).map_err(|e| format!("{file}: {e}"))?;
+    let fixture: Value = serde_json::from_str(&text).map_err(|e| format!("{file}: {e}"))?;
+    let cases = fixture["stopped"]
+        .as_array()
+        .ok_or(format!("{file}: no stopped scripts"))?;
+    cases
+        .iter()
+        .map(|case| {
+            let field = |k: &str| case[k].as_str().unwrap_or_default();
+            let scenario = presets::scenario(field("preset"))
+                .and_then(|s| {
+                    s.with_override(&format!("rules.{}", field("slot")), field("source").into())
+                })
+                .map_err(|e| format!("{file}: {e}"))?;
+            Ok((field("name").to_string(), scenario))
+        })
+        .collect()
+}
+
+/// How long each hostile script's run takes to be stopped (reading and building it included),
+/// the median of the repeats, in seconds.
+fn time_stops(w: &Workload) -> Value {
+    let stops: Vec<Value> = w
+        .stops
+        .iter()
+        .map(|(name, scenario)| {
+            let mut times = Vec::new();
+            let mut stopped = None;
+            for _ in 0..w.repeats {
+                let t = Instant::now();
+                let mut run = Run::new(scenario.clone()).expect("checked at load");
+                run.run_to_end();
+                times.push(t.elapsed().as_secs_f64());
+                stopped = run.stopped().map(str::to_string);
+            }
+            json!({"name": name, "seconds": median(times), "stopped": stopped})
+        })
+        .collect();
+    json!({"name": w.name, "target": "native", "stops": stops})
 }
 
 fn median(mut xs: Vec<f64>) -> f64 {
@@ -154,6 +219,9 @@ fn median(mut xs: Vec<f64>) -> f64 {
 
 /// Runs one workload and returns its figures as a JSON object.
 pub fn measure(w: &Workload, threads: usize) -> Value {
+    if !w.stops.is_empty() {
+        return time_stops(w);
+    }
     if let Some(name) = &w.experiment {
         let exp = Experiment::named_or_json(name).expect("checked at load");
         let jobs = exp.jobs();

@@ -167,6 +167,12 @@ enum Command {
         #[command(flatten)]
         size: Size,
     },
+    /// The models' rule slots (MODEL SLOT and what it decides, one a line), or with MODEL and
+    /// SLOT the paper's rule as a script, to start one's own from (docs/rules.md)
+    Rules {
+        model: Option<String>,
+        slot: Option<String>,
+    },
     /// The models' helper calls: MODEL NAME and what each does
     Queries,
     /// A model's helper call, e.g. kumiki query cubes3d derive '{"shape": "##\n##\n"}'
@@ -298,6 +304,37 @@ fn main() -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// `kumiki rules [MODEL [SLOT]]`: the slots, one a line (MODEL SLOT, title), or a slot's paper
+/// rule as a script.
+fn rules(model: Option<&str>, slot: Option<&str>, out: &mut impl Write) -> Result<(), Failure> {
+    if let Some(model) = model {
+        kumiki_core::models::entry(model)?;
+    }
+    let slots: Vec<_> = kumiki_core::rules::slots()
+        .into_iter()
+        .filter(|d| model.is_none_or(|m| d.model == m))
+        .collect();
+    match slot {
+        None => {
+            for d in &slots {
+                writeln!(out, "{} {}\t{}", d.model, d.slot.name, d.slot.title)?;
+            }
+        }
+        Some(name) => {
+            let doc = slots.iter().find(|d| d.slot.name == name).ok_or_else(|| {
+                let known: Vec<&str> = slots.iter().map(|d| d.slot.name).collect();
+                Failure::Usage(format!(
+                    "{} has no rule slot '{name}'; its slots: {}",
+                    model.unwrap_or_default(),
+                    known.join(", ")
+                ))
+            })?;
+            write!(out, "{}", doc.slot.paper)?;
+        }
+    }
+    Ok(())
 }
 
 /// Where `kumiki link`'s links open when neither `--base` nor `KUMIKI_BASE` says.
@@ -441,6 +478,7 @@ fn dispatch(command: Option<Command>) -> Result<(), Failure> {
             }
         }
         Some(Command::Schema { check, root }) => schema(check, &root)?,
+        Some(Command::Rules { model, slot }) => rules(model.as_deref(), slot.as_deref(), &mut out)?,
         Some(Command::Queries) => {
             for (model, q) in kumiki_core::models::queries() {
                 writeln!(out, "{model} {}\t{}", q.name, q.description)?;

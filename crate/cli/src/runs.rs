@@ -35,6 +35,10 @@ pub(crate) struct RunArgs {
     /// (5, true, [1,2]) and as text otherwise
     #[arg(long = "set", value_name = "PATH=VALUE", value_parser = parse_set)]
     sets: Vec<(String, Value)>,
+    /// Put the script in FILE in the model's rule slot SLOT, in place of the paper's rule (see
+    /// kumiki rules and docs/rules.md)
+    #[arg(long = "rule", value_name = "SLOT=FILE", value_parser = parse_rule)]
+    rules: Vec<(String, PathBuf)>,
     #[arg(long, value_enum, default_value_t = Format::Json)]
     format: Format,
     #[command(flatten)]
@@ -98,6 +102,15 @@ fn parse_set(text: &str) -> Result<(String, Value), String> {
     parse_override(text).map_err(|e| e.to_string())
 }
 
+fn parse_rule(text: &str) -> Result<(String, PathBuf), String> {
+    match text.split_once('=') {
+        Some((slot, file)) if !slot.is_empty() && !file.is_empty() => {
+            Ok((slot.to_string(), PathBuf::from(file)))
+        }
+        _ => Err(format!("'{text}' is not SLOT=FILE")),
+    }
+}
+
 /// A scenario from a file, a link, a preset name or a lesson name, in that order, held to
 /// `limits`.
 pub(crate) fn load_scenario(target: &str, limits: &'static Limits) -> Result<Scenario, Failure> {
@@ -138,6 +151,11 @@ pub(crate) fn run(args: RunArgs, out: &mut impl Write) -> Result<(), Failure> {
     if !args.sets.is_empty() {
         scenario = scenario.with_overrides(&args.sets)?;
         params.extend(args.sets.iter().cloned());
+    }
+    for (slot, file) in &args.rules {
+        let source = std::fs::read_to_string(file)
+            .map_err(|e| format!("--rule {slot}={}: {e}", file.display()))?;
+        scenario = scenario.with_override(&format!("rules.{slot}"), source.into())?;
     }
     if let Some(m) = args.max_steps {
         scenario = scenario.with_override("max_steps", m.into())?;
@@ -334,6 +352,11 @@ impl Output {
             |k, row| -> Result<(), Failure> {
                 let row = row?;
                 bar.inc(1);
+                if let Some(why) = &row.stopped {
+                    bar.suspend(|| {
+                        eprintln!("kumiki: {} (seed {}): {why}", row.scenario, row.seed)
+                    });
+                }
                 if keep {
                     rows.push(row.clone());
                 }

@@ -100,6 +100,7 @@ pub fn json_line(command: Command, row: &Row) -> String {
             steps: row.steps,
             hash: row.hash.clone(),
             metrics: row.metrics.clone(),
+            stopped: row.stopped.clone(),
         }),
     }
     .expect("rows serialise")

@@ -1,12 +1,13 @@
 //! The scenario the page shows and edits, held read between edits ([`Draft`]).
 //!
-//! The page keeps one draft. Opening a text (a preset, a link, the JSON editor, undo) reads and
-//! checks it once; an edit applies its changes to the scenario held and checks the result once,
-//! without reading any text; either answers with a [`Proposal`]: the text to run, or why it was
-//! refused (its own problem, or an exercise's lock). A scenario too large to
-//! check on the page's thread (its shapes span more than [`Draft::new`]'s cells, counted from the
-//! text) is held as its document and checked by the worker that runs it, which gives back its
-//! text ([`Draft::ran`]).
+//! The page's simulation worker keeps one draft, beside the run it builds from it. Opening a text
+//! (a preset, a link, the JSON editor, undo) reads and checks it once; an edit applies its changes
+//! to the scenario held and checks the result once, without reading any text; either answers with
+//! a [`Proposal`]: the text to run, or why it was refused (its own problem, or an exercise's lock).
+//! The run is then built from the checked scenario the draft holds ([`Draft::start`]), checking
+//! nothing again. A scenario too large to check at once (its shapes span more than
+//! [`Draft::new`]'s cells, counted from the text) is proposed unchecked, so that the page can say
+//! so first; the run that checks it as it opens gives it back ([`Draft::ran`]).
 
 use schemars::JsonSchema;
 use serde::Serialize;
@@ -15,7 +16,7 @@ use serde_json::Value;
 use crate::error::{Error, Result};
 use crate::exercise::Goal;
 use crate::scenario::set_path;
-use crate::{grading, json, link, shape, Scenario};
+use crate::{grading, json, link, shape, Run, Scenario};
 
 /// What an edit or an opening would make of the scenario in view.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, JsonSchema)]
@@ -47,23 +48,13 @@ pub enum Comparison {
     TooLarge,
 }
 
-/// The scenario in view.
-#[derive(Clone, Debug)]
-enum Held {
-    /// Read and checked here.
-    Checked(Box<Scenario>),
-    /// A scenario a run reported (the worker's canonical text of one too large to check here, a
-    /// click recorded into it), read when next needed: its worker checked it.
-    Ran(String),
-}
-
 /// The scenario in view, held between edits.
 #[derive(Clone, Debug)]
 pub struct Draft {
     /// Scenarios whose shapes span more cells than this are not checked here.
     check_up_to: u64,
-    /// `None` before the first scenario opens.
-    current: Option<Held>,
+    /// Read and checked; `None` before the first scenario opens.
+    current: Option<Box<Scenario>>,
 }
 
 impl Draft {
@@ -110,29 +101,33 @@ impl Draft {
         self.propose(doc, Some(current), true)
     }
 
-    /// The run in view runs `text`, the scenario its worker checked and wrote back: after opening
-    /// one too large to check here, or with a click recorded. Nothing is read until it is next
-    /// needed.
-    pub fn ran(&mut self, text: String) {
-        self.current = Some(Held::Ran(text));
+    /// The run of the scenario in view, built from the checked scenario held: what checking it
+    /// learnt goes into the model, nothing is read or checked again, and the draft holds the
+    /// scenario the run keeps.
+    pub fn start(&mut self) -> Result<Run> {
+        let scenario = self
+            .current
+            .take()
+            .ok_or_else(|| Error::field("", "no scenario is open"))?;
+        let run = Run::new(*scenario)?;
+        self.ran(run.scenario().clone());
+        Ok(run)
+    }
+
+    /// The run in view runs `scenario`: one too large to check at once, which its run checked as
+    /// it opened, or the one in view with a click recorded.
+    pub fn ran(&mut self, scenario: Scenario) {
+        self.current = Some(Box::new(scenario));
     }
 
     /// The share-link payload of the scenario in view, or of it named `name` (a student's
     /// hand-in).
     pub fn link(&self, name: Option<&str>) -> Result<String> {
-        let doc = match (self.checked(), name) {
-            (Some(scenario), None) => return Ok(link::encode(scenario)),
-            (Some(scenario), Some(name)) => {
-                return Ok(link::encode(&scenario.with_override("name", name.into())?))
-            }
-            (None, None) => self.document()?,
-            (None, Some(name)) => {
-                let mut doc = self.document()?;
-                set_path(&mut doc, "name", name.into())?;
-                doc
-            }
-        };
-        Ok(link::pack(doc))
+        let scenario = self.held()?;
+        match name {
+            None => Ok(link::encode(scenario)),
+            Some(name) => Ok(link::encode(&scenario.with_override("name", name.into())?)),
+        }
     }
 
     /// The hand-in link of the scenario in view: named `name`, with the hand-in's record
@@ -149,10 +144,7 @@ impl Draft {
         crate::handin::Handin::from_value(record.clone()).map_err(|e| e.within("handin"))?;
         set_path(&mut doc, "name", name.into())?;
         set_path(&mut doc, "handin", record)?;
-        match self.checked() {
-            Some(_) => Ok(link::encode(&Scenario::from_value(doc)?)),
-            None => Ok(link::pack(doc)),
-        }
+        Ok(link::encode(&Scenario::from_value(doc)?))
     }
 
     /// Why a click of the tool `label`, whose action is of `kind`, may not be made on the
@@ -169,13 +161,13 @@ impl Draft {
 
     /// The scenario in view's comparison. Its `compare` section was checked with the scenario, so
     /// nothing is checked again here: the second run's worker checks the second scenario as it
-    /// opens it.
+    /// opens it. A scenario too large to check at once is not run twice.
     pub fn comparison(&self) -> Result<Comparison> {
         let doc = self.document()?;
         let Some(section) = doc.get("compare").cloned() else {
             return Ok(Comparison::None);
         };
-        if self.checked().is_none() && shape::estimate_cells(&doc) > self.check_up_to {
+        if shape::estimate_cells(&doc) > self.check_up_to {
             return Ok(Comparison::TooLarge);
         }
         let compare = crate::compare::Compare::from_value(section, &doc)?;
@@ -204,21 +196,16 @@ impl Draft {
         }
     }
 
-    /// The scenario in view as checked here, if it was.
-    fn checked(&self) -> Option<&Scenario> {
-        match &self.current {
-            Some(Held::Checked(scenario)) => Some(scenario),
-            _ => None,
-        }
+    /// The scenario in view.
+    fn held(&self) -> Result<&Scenario> {
+        self.current
+            .as_deref()
+            .ok_or_else(|| Error::field("", "no scenario is open"))
     }
 
     /// The scenario in view as a JSON document.
     fn document(&self) -> Result<Value> {
-        match &self.current {
-            None => Err(Error::field("", "no scenario is open")),
-            Some(Held::Checked(scenario)) => Ok(scenario.to_value()),
-            Some(Held::Ran(text)) => json::parse(text).map_err(|e| Error::json(&e)),
-        }
+        self.held().map(Scenario::to_value)
     }
 
     /// Reads and checks `doc` (unless too large) and holds it to the locks of the exercise in
@@ -226,31 +213,33 @@ impl Draft {
     /// does once its worker ran it ([`Draft::ran`]).
     fn propose(&mut self, doc: Value, current: Option<Value>, keep_locks: bool) -> Proposal {
         let cells = shape::estimate_cells(&doc);
-        let checked = match cells > self.check_up_to {
-            true => None,
-            false => match Scenario::from_value(doc.clone()) {
-                Ok(scenario) => Some(scenario),
+        // Read and checked, unless too large: then left as it is, for its run to check.
+        let (checked, unchecked) = match cells > self.check_up_to {
+            true => (None, Some(doc)),
+            false => match Scenario::from_value(doc) {
+                Ok(scenario) => (Some(scenario), None),
                 Err(e) => return refused(e),
             },
         };
-        let next = checked.as_ref().map_or(doc, Scenario::to_value);
-        if let Some(problem) = current
-            .as_ref()
-            .filter(|_| keep_locks)
-            .and_then(|current| grading::locked_problem(current, &next))
-        {
-            return Proposal {
-                problem: Some(problem),
-                ..Proposal::default()
+        if let Some(current) = current.as_ref().filter(|_| keep_locks) {
+            let next = match (&checked, &unchecked) {
+                (Some(scenario), _) => scenario.to_value(),
+                (None, doc) => doc.clone().unwrap_or(Value::Null),
             };
+            if let Some(problem) = grading::locked_problem(current, &next) {
+                return Proposal {
+                    problem: Some(problem),
+                    ..Proposal::default()
+                };
+            }
         }
-        let (text, large_cells) = match checked {
-            Some(scenario) => {
+        let (text, large_cells) = match (checked, unchecked) {
+            (Some(scenario), _) => {
                 let text = scenario.to_json_pretty();
-                self.current = Some(Held::Checked(Box::new(scenario)));
+                self.current = Some(Box::new(scenario));
                 (text, 0)
             }
-            None => match json::pretty(&next) {
+            (None, doc) => match json::pretty(&doc.unwrap_or(Value::Null)) {
                 Ok(text) => (text, cells),
                 Err(e) => return refused(Error::json(&e)),
             },
@@ -280,7 +269,7 @@ mod tests {
     use serde_json::json;
 
     use super::*;
-    use crate::{counts, lessons, presets, Run};
+    use crate::{counts, lessons, presets};
 
     const PAGE: u64 = 1 << 18;
 
@@ -298,10 +287,11 @@ mod tests {
         draft.edit(&[(path.to_string(), value)])
     }
 
-    /// One edit of the page's form reads no scenario text and checks the result once; the worker
-    /// that runs it reads its text once and checks it once, and its run checks nothing again.
-    /// (The string relay this replaced read the scenario's text 9 times and checked it 4 times
-    /// on the page's thread, and 1 and 2 times in the worker.)
+    /// One edit of the page's form reads no scenario text and checks the result once, and the
+    /// run is built from the scenario checked, reading and checking nothing again. (The string
+    /// relay before the draft read the scenario's text 9 times and checked it 4 times on the page's
+    /// thread, and 1 and 2 times in the worker; the draft on the page's thread, with the worker
+    /// reading its text again, read it once and checked it twice.)
     #[test]
     fn an_edit_reads_no_text_and_checks_once() {
         for name in presets::names() {
@@ -315,13 +305,20 @@ mod tests {
             assert_eq!(counts::builds(), builds, "{name}: the edit built the model");
             let expected = scenario.with_override("seed", json!(7)).unwrap();
             assert_eq!(proposal.text, expected.to_json_pretty(), "{name}");
-            // The worker: one read, one check, one build.
+            // The run: no read, no check, one build.
             let (parses, checks) = (counts::parses(), counts::checks());
-            let run = Run::new(Scenario::from_json(&proposal.text).unwrap()).unwrap();
-            assert_eq!(counts::parses() - parses, 1, "{name}");
-            assert_eq!(counts::checks() - checks, 1, "{name}");
+            let run = draft.start().unwrap();
+            assert_eq!(counts::parses() - parses, 0, "{name}: the run read text");
+            assert_eq!(counts::checks(), checks, "{name}: the run checked again");
             assert_eq!(counts::builds() - builds, 1, "{name}");
             assert_eq!(run.scenario().seed, 7);
+            assert_eq!(run.scenario().to_json_pretty(), proposal.text, "{name}");
+            // The draft holds the scenario the run keeps: the next edit starts from it.
+            assert_eq!(
+                draft.link(None).unwrap(),
+                link::encode(run.scenario()),
+                "{name}"
+            );
         }
     }
 
@@ -417,10 +414,7 @@ mod tests {
             serde_json::from_str::<Value>(&before.text).unwrap()["target"],
             presets::scenario("amas-L").unwrap().to_value()["target"]
         );
-        let ran = Scenario::from_json(&proposal.text)
-            .unwrap()
-            .to_json_pretty();
-        draft.ran(ran);
+        draft.ran(Scenario::from_json(&proposal.text).unwrap());
         let checks = counts::checks();
         let edited = edit(&mut draft, "seed", json!(5));
         assert_eq!((edited.problem, edited.large_cells), (None, 1048576.0));
@@ -450,9 +444,8 @@ mod tests {
         );
         assert_eq!(opened("amas-L").comparison().unwrap(), Comparison::None);
         let mut large = Draft::new(100);
-        let text = scenario.to_json_pretty();
-        assert!(large.open(&text, false).large_cells > 0.0);
-        large.ran(text);
+        assert!(large.open(&scenario.to_json_pretty(), false).large_cells > 0.0);
+        large.ran(scenario.clone());
         assert_eq!(large.comparison().unwrap(), Comparison::TooLarge);
     }
 

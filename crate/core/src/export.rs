@@ -118,7 +118,7 @@ pub fn json_lines(p: &Provenance, rows: &[Row]) -> String {
 /// CSV with the provenance as comment lines first (spreadsheets and `pandas.read_csv(...,
 /// comment="#")` skip them).
 pub fn csv(p: &Provenance, rows: &[Row]) -> String {
-    p.comment() + &to_csv(rows)
+    p.comment() + to_csv(rows).as_str()
 }
 
 /// The traced metrics in long form: one line per run, step and metric, with the metric's unit.
@@ -177,6 +177,11 @@ pub fn to_csv(rows: &[Row]) -> String {
         };
         out.push_str(&format!(",{}", csv_field(&column)));
     }
+    // Why a rule's script stopped a run: a column only when one did, so other exports keep theirs.
+    let stopped = rows.iter().any(|r| r.stopped.is_some());
+    if stopped {
+        out.push_str(",stopped");
+    }
     out.push('\n');
     for r in rows {
         out.push_str(&format!(
@@ -196,6 +201,10 @@ pub fn to_csv(rows: &[Row]) -> String {
         for m in &metrics {
             out.push(',');
             out.push_str(&csv_value(r.metrics.get(*m)));
+        }
+        if stopped {
+            out.push(',');
+            out.push_str(&csv_text(r.stopped.as_deref().unwrap_or_default()));
         }
         out.push('\n');
     }
@@ -244,6 +253,7 @@ mod tests {
                 steps: 5,
                 hash: "00".into(),
                 metrics: [("m".to_string(), metric)].into_iter().collect(),
+                stopped: None,
             },
             params: [("p".to_string(), param)].into_iter().collect(),
             scenario_hash: "11".into(),

@@ -11,6 +11,8 @@
 //! - [`link`]: the share-link codec;
 //! - [`schema`]: the JSON Schemas of scenarios and experiments, derived from the same types;
 //! - [`presets`] and [`lessons`]: the built-in scenarios and classroom exercises;
+//! - [`rules`]: a scenario's scripts in its model's rule slots (the engine with the `rules`
+//!   feature);
 //! - [`run`] and [`experiment`]: driving one run, and grids of runs ([`design`]: ranges, samples
 //!   and stop conditions); [`playback`]: a run played,
 //!   rewound and forked as the page does it, with its keyframes ([`timeline`]) and chart record
@@ -44,6 +46,7 @@ pub mod playback;
 pub mod plot;
 pub mod presets;
 pub mod reproduce;
+pub mod rules;
 pub mod run;
 pub mod scenario;
 #[cfg(feature = "schema")]

@@ -6,8 +6,12 @@
 //! and a native test passes a clock it drives itself. The clock only decides how often keyframes
 //! are kept, never what the run does.
 
+use schemars::JsonSchema;
+use serde::Serialize;
+
 use crate::error::Result;
-use crate::models::Action;
+use crate::hash;
+use crate::models::{Action, Metrics, Scene};
 use crate::run::Run;
 use crate::scenario::Disturbance;
 use crate::series::{self, Series};
@@ -71,6 +75,40 @@ impl KeyframeCost {
     }
 }
 
+/// A metric's every-step record, merged for drawing (a [`series::Band`] with its name and span).
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
+pub struct ChartBand {
+    pub metric: String,
+    /// The first step of each point's range.
+    pub steps: Vec<f64>,
+    /// The least and the greatest value over each point's steps.
+    pub min: Vec<f64>,
+    pub max: Vec<f64>,
+    /// Steps per recorded bucket: 1 until the record is full, then doubling.
+    pub span: u64,
+}
+
+/// One frame of a run, as the page's panels show it: where the run stands and its metrics, with
+/// what was asked for beside them. The lattice itself is never in it: the view reads the model's
+/// buffers in place.
+#[derive(Clone, Debug, PartialEq, Serialize, JsonSchema)]
+pub struct Frame {
+    pub steps: u64,
+    /// The furthest step reached since the last fork: where the timeline ends.
+    pub furthest: u64,
+    pub max_steps: u64,
+    pub finished: bool,
+    pub completed: bool,
+    /// The 64-bit state hash in hex, when asked for (it costs a pass over the state).
+    pub hash: Option<String>,
+    #[schemars(with = "crate::models::MetricValues")]
+    pub metrics: Metrics,
+    /// The model's scene when it changed since the last frame that carried one, else null.
+    pub scene: Option<Scene>,
+    /// The charted metric's record, when one was asked for.
+    pub chart: Option<ChartBand>,
+}
+
 /// One run with the keyframes that let it go back and the record of its metrics.
 pub struct Playback {
     /// `None` only within [`Playback::seek`], between freeing the state at hand and building the
@@ -124,6 +162,33 @@ impl Playback {
     /// Keyframes kept and the steps between them.
     pub fn keyframes(&self) -> (usize, u64) {
         self.timeline.keyframes()
+    }
+
+    /// The run as it stands, for the page: with the state hash when `hashed`, and with `chart`'s
+    /// metric merged into at most `points` points when one is given. The scene is left out: the
+    /// caller knows whether it changed.
+    pub fn frame(&self, hashed: bool, chart: Option<(&str, usize)>) -> Frame {
+        let run = self.run();
+        Frame {
+            steps: run.steps(),
+            furthest: self.furthest,
+            max_steps: run.scenario().max_steps,
+            finished: run.finished(),
+            completed: run.model().completed(),
+            hash: hashed.then(|| hash::hex(run.state_hash())),
+            metrics: run.model().metrics(),
+            scene: None,
+            chart: chart.map(|(metric, points)| {
+                let band = self.series.decimate(metric, points);
+                ChartBand {
+                    metric: metric.to_string(),
+                    steps: band.steps,
+                    min: band.min,
+                    max: band.max,
+                    span: self.series.span(),
+                }
+            }),
+        }
     }
 
     /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were

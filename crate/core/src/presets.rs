@@ -188,8 +188,8 @@ mod tests {
 
     /// What the scenario reader takes as the envelope is the contract's list, which a model
     /// crate leaves out when it reads one of its own preset files: over the built-in scenarios
-    /// (one with disturbances, exercises, a comparison, and a hand-in), the keys written beside the model's own
-    /// are exactly [`models::ENVELOPE`].
+    /// (one with disturbances, exercises, a comparison, and a hand-in), and a scenario with rules,
+    /// the keys written beside the model's own are exactly [`models::ENVELOPE`].
     #[test]
     fn the_envelope_is_the_contracts_list() {
         let mut beside = std::collections::BTreeSet::new();
@@ -199,10 +199,13 @@ mod tests {
             doc["handin"] = serde_json::json!({"checks": 1});
             crate::Scenario::from_value(doc)
         });
+        let paper = models::entry("chobie").unwrap().slots[0].paper;
+        let scripted =
+            scenario("chobie-crawl3").and_then(|s| s.with_override("rules.leader", paper.into()));
         for s in names()
             .map(scenario)
             .chain(crate::lessons::names().map(crate::lessons::scenario))
-            .chain([handin])
+            .chain([handin, scripted])
         {
             let s = s.unwrap();
             let Value::Object(doc) = s.to_value() else {

@@ -271,6 +271,7 @@ mod tests {
                 steps,
                 hash: String::new(),
                 metrics,
+                stopped: None,
             },
             params,
             scenario_hash: String::new(),

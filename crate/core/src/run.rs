@@ -3,6 +3,7 @@
 use crate::error::Result;
 use crate::hash::{self, StateHasher};
 use crate::models::{Action, Model};
+use crate::rules::Installed;
 use crate::scenario::{Disturbance, Scenario};
 pub use kumiki_model::row::Outcome;
 
@@ -11,17 +12,21 @@ pub struct Run {
     model: Box<dyn Model>,
     /// Index of the next scheduled disturbance.
     next: usize,
+    /// The scripts in the model's rule slots, whose budgets start again each step.
+    rules: Installed,
 }
 
 impl Run {
-    /// Builds the scenario's model, once, from what reading the scenario learnt: nothing is
-    /// checked again.
+    /// Builds the scenario's model, once, from what reading the scenario learnt (nothing is
+    /// checked again), with its rules' scripts in their slots.
     pub fn new(mut scenario: Scenario) -> Result<Run> {
-        let model = scenario.build_once()?;
+        let mut model = scenario.build_once()?;
+        let rules = scenario.install(model.as_mut())?;
         Ok(Run {
             scenario,
             model,
             next: 0,
+            rules,
         })
     }
 
@@ -37,10 +42,17 @@ impl Run {
         self.model.steps()
     }
 
-    /// Finished at the step limit, or when the goal is reached and nothing is left to happen.
+    /// Finished at the step limit, when the goal is reached and nothing is left to happen, or
+    /// when a rule's script stopped the run.
     pub fn finished(&self) -> bool {
         self.model.steps() >= self.scenario.max_steps
             || (self.model.completed() && self.next >= self.scenario.disturbances.len())
+            || self.model.stopped().is_some()
+    }
+
+    /// Why a rule's script stopped the run (the rule, the line and the cap), if one did.
+    pub fn stopped(&self) -> Option<&str> {
+        self.model.stopped()
     }
 
     /// Applies the disturbances due now, then takes one step. Returns false, doing nothing, once
@@ -50,6 +62,7 @@ impl Run {
         if self.finished() {
             return false;
         }
+        self.rules.begin_step();
         self.model.step();
         true
     }
@@ -100,6 +113,7 @@ impl Run {
             scenario: self.scenario.clone(),
             model: self.model.snapshot(),
             next: self.next,
+            rules: self.rules.clone(),
         }
     }
 
@@ -127,6 +141,7 @@ impl Run {
             steps: self.model.steps(),
             hash: hash::hex(self.state_hash()),
             metrics: self.model.metrics(),
+            stopped: self.model.stopped().map(str::to_string),
         }
     }
 }

@@ -118,7 +118,11 @@ mod tests {
 
     #[test]
     fn going_back_then_forward_gives_identical_hashes_in_every_model() {
-        for preset in ["amas-L", "fracta-triangle10-3spares", "cubes-box12-ladder"] {
+        for preset in [
+            "amas-L",
+            "fracta-triangle10-3spares-corner",
+            "cubes-box12-ladder",
+        ] {
             let (end, timeline, hashes) = recorded(preset, 300, 8);
             let last = end.steps();
             let (frames, every) = timeline.keyframes();

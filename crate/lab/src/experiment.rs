@@ -170,3 +170,12 @@ pub fn reproduce_claim(model: &str, id: &str, rows_json: &str) -> Result<JsValue
         .ok_or_else(|| JsError::new(&format!("the report has no claim '{id}' for {model}")))?;
     to_js(&finding)
 }
+
+/// The reproduction report as `kumiki reproduce` last wrote it (`docs/reproduction.json`, built
+/// into this module): each model's section, by model name. The page's About tab shows it.
+#[wasm_bindgen]
+pub fn reproduction_report() -> Result<JsValue, JsError> {
+    let report: serde_json::Value =
+        json::parse(include_str!("../../../docs/reproduction.json")).map_err(js_err)?;
+    to_js(&report["models"])
+}

@@ -11,6 +11,7 @@ use serde_json::{Map, Value};
 use crate::error::Result;
 use crate::limits::{LimitTable, Limits};
 use crate::model::{Action, MetricInfo, Model, Spec};
+use crate::slot::SlotInfo;
 
 /// Reads and checks a model's keys within the limits, with the scenario's scheduled actions; see
 /// [`parse`].
@@ -41,6 +42,9 @@ pub struct ModelEntry {
     pub disturbance: SchemaOf,
     /// Its helper calls (none for a model without any).
     pub queries: &'static [Query],
+    /// Its rule slots: the decisions a scenario's `rules` may give to a script (none for a
+    /// model without any); see [`crate::slot`].
+    pub slots: &'static [SlotInfo],
     /// The settings a link made with an earlier behaviour version pins, so that it replays as
     /// it did where a change of behaviour came behind a new setting (none for most models).
     pub pins: &'static [Pin],
@@ -127,6 +131,7 @@ pub const ENVELOPE: &[EnvelopeKey] = &[
     EnvelopeKey::new("description", Role::Text),
     EnvelopeKey::new("max_steps", Role::Setting),
     EnvelopeKey::new("seed", Role::Setting),
+    EnvelopeKey::new("rules", Role::Setting),
     EnvelopeKey::new("disturbances", Role::Section),
     EnvelopeKey::new("exercise", Role::Section),
     EnvelopeKey::new("compare", Role::Section),

@@ -12,6 +12,9 @@
 //! - [`rng`], [`math`], [`hash`]: the portable randomness, maths and state hash every model uses;
 //!   [`error`]: errors that name the field and the rule; [`sort`]: one stable sort for the cold
 //!   paths; [`stats`]: two conditions compared (effect sizes, the Mann-Whitney U test);
+//!   `typescript` (with the `schema` feature): TypeScript declarations written from JSON Schemas;
+//! - [`slot`]: the rule slots, decisions a model lets a user's script take in place of its
+//!   paper's rule;
 //! - [`row`] and [`report`]: what a run leaves, and the vocabulary a model's paper uses to turn
 //!   experiment rows into the reproduction report's findings.
 
@@ -28,8 +31,11 @@ pub mod report;
 pub mod rng;
 pub mod row;
 pub mod shape;
+pub mod slot;
 pub mod sort;
 pub mod stats;
+#[cfg(feature = "schema")]
+pub mod typescript;
 
 pub use error::{Error, Result};
 pub use limits::Limits;

@@ -8,6 +8,7 @@
 //! ([`Model::cells`], [`Model::field`]) plus small lists ([`Model::agents`], [`Model::events`]).
 
 use std::borrow::Cow;
+use std::rc::Rc;
 
 use schemars::JsonSchema;
 use serde::de::DeserializeOwned;
@@ -19,6 +20,7 @@ use crate::error::Result;
 use crate::hash::StateHasher;
 use crate::lattice::LatticeKind;
 use crate::limits::Limits;
+use crate::slot::Script;
 
 /// Named metric values, sorted by name. Counts are integers, ratios floats.
 pub type Metrics = Map<String, Value>;
@@ -92,11 +94,47 @@ pub struct MetricInfo {
     pub unit: &'static str,
     /// One sentence, for a reader who has not read the paper.
     pub about: &'static str,
+    /// Where the page shows it: among the few that matter first, with the others, or only in its
+    /// debug view.
+    pub shown: Shown,
+}
+
+/// Where the page shows a metric.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Shown {
+    /// One of the few that matter most for the model's scenarios: on the first screen.
+    Key,
+    /// With the others, a click away.
+    More,
+    /// An internal counter of the implementation (work done, not a finding): only with `?debug`.
+    Debug,
 }
 
 impl MetricInfo {
     pub const fn new(name: &'static str, unit: &'static str, about: &'static str) -> Self {
-        MetricInfo { name, unit, about }
+        MetricInfo {
+            name,
+            unit,
+            about,
+            shown: Shown::More,
+        }
+    }
+
+    /// One of the few that matter most: the page shows it first.
+    pub const fn key(self) -> Self {
+        MetricInfo {
+            shown: Shown::Key,
+            ..self
+        }
+    }
+
+    /// An internal counter: the page shows it only in its debug view.
+    pub const fn internal(self) -> Self {
+        MetricInfo {
+            shown: Shown::Debug,
+            ..self
+        }
     }
 }
 
@@ -276,6 +314,20 @@ pub trait Model: Snapshot {
     /// (the lattice's direction numbering). Empty when the model has no bonds to draw.
     fn bonds(&self) -> Cow<'_, [u8]> {
         Cow::Borrowed(&[])
+    }
+    /// Puts `script` in the rule slot named `slot` (one of its entry's
+    /// [`slots`](crate::entry::ModelEntry::slots)) in place of the paper's rule. A model without
+    /// slots keeps this default, which refuses.
+    fn install(&mut self, slot: &str, _script: Rc<dyn Script>) -> Result<()> {
+        Err(crate::Error::field(
+            format!("rules.{slot}"),
+            "this model has no rule slot of that name",
+        ))
+    }
+    /// Why the run stopped before its end (a rule's script went past a cap or failed), if it
+    /// did: a stopped model takes no more steps.
+    fn stopped(&self) -> Option<&str> {
+        None
     }
 }
 

@@ -24,6 +24,10 @@ pub struct Outcome {
     pub hash: String,
     #[schemars(with = "crate::model::MetricValues")]
     pub metrics: Metrics,
+    /// Why the run stopped before its end: a rule's script went past a cap or failed (the
+    /// message names the rule, the line and the cap). Absent for a run that was not stopped.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stopped: Option<String>,
 }
 
 /// A metric sampled during a run: `step[i]` and `values[name][i]`.

@@ -6,8 +6,8 @@
 use crate::camera::{Camera2D, Camera3D};
 use crate::geometry::{hex_corners, HEX_RADIUS};
 use crate::scene::{CursorKind, SceneRef};
-use kumiki_core::lattice::LatticeKind;
-use kumiki_core::models::CellMark;
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::CellMark;
 use std::f64::consts::TAU;
 use web_sys::OffscreenCanvasRenderingContext2d as Ctx;
 
@@ -19,7 +19,7 @@ const MAX_VISIBLE: u64 = 40_000;
 pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
     let mut drew = false;
     let grid = &scene.grid;
-    let frame = &scene.frame;
+    let state = &scene.state;
     let marks = scene.marks;
     let w = grid.dims[0] as usize;
     let range = cam.visible_cells(grid);
@@ -40,7 +40,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         cam.to_screen(x, y)
     };
 
-    if !frame.bonds.is_empty() && cam.scale >= 7.0 && count <= MAX_VISIBLE {
+    if !state.bonds.is_empty() && cam.scale >= 7.0 && count <= MAX_VISIBLE {
         // Each bond once, from the lower-numbered cell, as a connector across the shared edge,
         // clear of the labels at the centres.
         drew = true;
@@ -49,7 +49,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         ctx.set_line_cap("round");
         ctx.begin_path();
         in_view(&mut |i| {
-            let mask = frame.bonds.get(i).copied().unwrap_or(0);
+            let mask = state.bonds.get(i).copied().unwrap_or(0);
             if mask == 0 {
                 return;
             }
@@ -67,7 +67,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         ctx.set_line_cap("butt");
     }
 
-    let field = frame.overlay;
+    let field = state.overlay;
     let arrows = field.is_some_and(|o| {
         scene
             .layout
@@ -119,7 +119,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         ctx.set_stroke_style_str("rgba(0,0,0,0.6)");
         ctx.set_fill_style_str("#fff");
         in_view(&mut |i| {
-            let code = frame.cells[i];
+            let code = state.cells[i];
             let Some(name) = names[usize::from(code)].filter(|_| code != 0) else {
                 return;
             };
@@ -140,7 +140,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
     if !marked.is_empty() && count <= MAX_VISIBLE {
         let mut at: Vec<Vec<[f64; 2]>> = vec![Vec::new(); marked.len()];
         in_view(&mut |i| {
-            let code = frame.cells[i];
+            let code = state.cells[i];
             if let Some(k) = marked.iter().position(|m| m.0 == code && code != 0) {
                 at[k].push(centre(i));
             }
@@ -178,7 +178,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         }
     }
 
-    if !frame.events.is_empty() {
+    if !state.events.is_empty() {
         // One path per kind: a large run has hundreds of events a step.
         drew = true;
         let radius = (cam.scale * 0.48).max(4.0);
@@ -186,7 +186,7 @@ pub fn planar(ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) -> bool {
         for kind in &scene.layout.events {
             ctx.set_stroke_style_str(&kind.color);
             ctx.begin_path();
-            for e in frame.events.iter().filter(|e| e.kind == kind.code) {
+            for e in state.events.iter().filter(|e| e.kind == kind.code) {
                 let [sx, sy] = centre(e.cell as usize);
                 if sx < -radius
                     || sy < -radius

@@ -1,6 +1,6 @@
 //! The view's records that cross to and from the page: the page's marks, what a frame drew and
 //! what is under the pointer. Their TypeScript types (`web/view.gen.ts`) are generated from these
-//! Rust types by the core's generator, and a test holds the file to them (re-written with
+//! Rust types by the contract's generator, and a test holds the file to them (re-written with
 //! `KUMIKI_BLESS=1 cargo test -p kumiki-view contract`).
 
 use schemars::generate::SchemaSettings;
@@ -31,7 +31,7 @@ mod tests {
     fn the_views_contract_is_current() {
         let text = format!(
             "// Generated from the view's records (crate/view/src/contract.rs): do not edit.\n{}",
-            kumiki_core::schema::declarations(&schema())
+            kumiki_model::typescript::declarations(&schema())
         );
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("../..")

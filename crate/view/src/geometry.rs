@@ -1,10 +1,10 @@
 //! Where lattice cells are in the view's world space, and which cell a point falls in: the one
 //! place the page's drawing, picking, editors and annotations take lattice geometry from. The
-//! numbering and the neighbour order are the core's ([`kumiki_core::lattice`]); this adds the
+//! numbering and the neighbour order are the core's ([`kumiki_model::lattice`]); this adds the
 //! drawing units: square cells are unit squares at integer corners, hex rows are sqrt(3)/2 apart
 //! with odd rows shifted half a cell right (pointy-top hexagons of radius 1/sqrt(3)).
 
-use kumiki_core::lattice::{Coord, Cubic, Hex, Lattice, LatticeKind, Square};
+use kumiki_model::lattice::{Coord, Cubic, Hex, Lattice, LatticeKind, Square};
 
 /// Vertical distance between hex rows.
 pub const HEX_ROW: f64 = 0.866_025_403_784_438_6;

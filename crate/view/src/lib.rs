@@ -1,5 +1,5 @@
 //! Kumiki's view: it draws the lattices and their fields next to the simulation, reading the
-//! core's buffers in place.
+//! model's buffers in place.
 //!
 //! - [`geometry`], [`camera`] and [`palette`] are pure: where cells are, how the view looks at
 //!   them and what colour they are. The page's editors ask them too (through the wasm module).
@@ -9,7 +9,7 @@
 //!
 //! - [`contract`]: the records that cross to and from the page, whose TypeScript is generated.
 //!
-//! The core never depends on this crate.
+//! It reads the model contract (`kumiki-model`) alone; the core never depends on this crate.
 
 pub mod annotate;
 pub mod camera;

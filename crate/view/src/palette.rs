@@ -1,6 +1,6 @@
 //! Colours: legend colours to RGBA tables, and the heat map (viridis, sampled) for fields.
 
-use kumiki_core::models::LegendEntry;
+use kumiki_model::model::LegendEntry;
 
 pub type Rgba = [u8; 4];
 

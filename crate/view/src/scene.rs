@@ -3,7 +3,7 @@
 
 use crate::camera::Camera;
 use crate::geometry::Grid;
-use kumiki_core::models::{Agent, Event, Layout, Scene};
+use kumiki_model::model::{Agent, Event, Layout, Scene};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -18,7 +18,7 @@ pub struct Overlay<'a> {
 
 /// The model's state as the view reads it, in place.
 #[derive(Clone, Copy, Debug)]
-pub struct Frame<'a> {
+pub struct State<'a> {
     /// One code per cell; 0 is empty.
     pub cells: &'a [u8],
     pub agents: &'a [Agent],
@@ -96,7 +96,7 @@ impl Default for Marks {
 pub struct SceneRef<'a> {
     pub layout: &'a Layout,
     pub grid: Grid,
-    pub frame: Frame<'a>,
+    pub state: State<'a>,
     pub camera: &'a Camera,
     pub marks: &'a Marks,
 }

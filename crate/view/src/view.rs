@@ -13,9 +13,9 @@ use crate::gl::Multisample;
 use crate::palette::{css, BACKGROUND};
 use crate::planar::canvas::PlanarCanvas;
 use crate::planar::gl::PlanarGl;
-use crate::scene::{Frame, Marks, RenderStats, SceneRef};
-use kumiki_core::lattice::LatticeKind;
-use kumiki_core::models::Layout;
+use crate::scene::{Marks, RenderStats, SceneRef, State};
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::Layout;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{
     ImageBitmap, OffscreenCanvas, OffscreenCanvasRenderingContext2d as Ctx,
@@ -232,8 +232,8 @@ impl View {
         Ok(())
     }
 
-    /// The frame changed (a step, a seek, a click): the next draw uploads it.
-    pub fn frame_changed(&mut self) {
+    /// The state changed (a step, a seek, a click): the next draw uploads it.
+    pub fn state_changed(&mut self) {
         self.revision += 1;
     }
 
@@ -312,21 +312,21 @@ impl View {
 
     /// Frames what is on the lattice with a margin (in 3-D with the ghost and the lamp), or the
     /// whole lattice when it is empty.
-    pub fn fit(&mut self, frame: &Frame) {
+    pub fn fit(&mut self, state: &State) {
         self.fit_pending = false;
         self.follow = true;
         let grid = self.grid;
         match &mut self.camera {
             Camera::Orbit(c) => {
                 let ghost: &[u32] = if self.marks.ghost {
-                    &frame.world.ghost
+                    &state.world.ghost
                 } else {
                     &[]
                 };
-                match occupied_box(grid.dims, frame.cells, ghost) {
+                match occupied_box(grid.dims, state.cells, ghost) {
                     Some((mut min, mut max)) => {
                         // The lamp of a light source is part of the picture.
-                        if let Some(lamp) = frame
+                        if let Some(lamp) = state
                             .world
                             .light
                             .and_then(|l| lamp_placement(min, max, l, grid.dims))
@@ -342,7 +342,7 @@ impl View {
                     None => c.fit(grid.dims),
                 }
             }
-            Camera::Planar(c) => match grid.content_bounds(frame.cells) {
+            Camera::Planar(c) => match grid.content_bounds(state.cells) {
                 Some(b) => c.fit(b),
                 None => c.fit(grid.bounds()),
             },
@@ -350,12 +350,12 @@ impl View {
     }
 
     /// Draws the lattice and its annotations. Returns what a 3-D frame drew.
-    pub fn draw(&mut self, frame: &Frame) -> Result<Option<RenderStats>, JsValue> {
-        if self.layout.is_none() || frame.cells.len() != self.grid.len() {
+    pub fn draw(&mut self, state: &State) -> Result<Option<RenderStats>, JsValue> {
+        if self.layout.is_none() || state.cells.len() != self.grid.len() {
             return Ok(None);
         }
         if self.fit_pending {
-            self.fit(frame);
+            self.fit(state);
         }
         let Some(layout) = &self.layout else {
             return Ok(None);
@@ -363,7 +363,7 @@ impl View {
         let scene = SceneRef {
             layout,
             grid: self.grid,
-            frame: *frame,
+            state: *state,
             camera: &self.camera,
             marks: &self.marks,
         };
@@ -396,7 +396,7 @@ impl View {
                         Some(stats)
                     }
                     (Camera::Planar(cam), _) => {
-                        planar.upload(gl, frame, revision)?;
+                        planar.upload(gl, state, revision)?;
                         uploaded = now();
                         planar.draw(gl, &scene, cam, dpr, [pw, ph]);
                         None

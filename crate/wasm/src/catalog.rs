@@ -66,3 +66,19 @@ pub fn preset_changes(scenario_json: &str) -> Result<JsValue, JsError> {
     let s = kumiki_core::Scenario::from_json(scenario_json).map_err(js_err)?;
     to_js(&presets::changes_from_preset(&s))
 }
+
+/// Every model's rule slots: `[{model, slot: {name, title, about, input, output, paper, random}}]`
+/// (`kumiki_core::rules::SlotDoc`), the paper's rule as each slot's script. In the rules module
+/// only, which the page loads to edit or run rules.
+#[cfg(feature = "rules")]
+#[wasm_bindgen]
+pub fn rule_slots() -> Result<JsValue, JsError> {
+    to_js(&kumiki_core::rules::slots())
+}
+
+/// Whether this module runs rule scripts: false in the page's first-load module, true in its
+/// rules module (kumiki_wasm_rules), which the page loads for a scenario that carries `rules`.
+#[wasm_bindgen]
+pub fn rules_engine() -> bool {
+    kumiki_core::rules::ENGINE
+}

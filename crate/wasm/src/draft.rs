@@ -1,23 +1,25 @@
-//! The scenario the page shows and edits, held here between edits: a handle on
-//! [`kumiki_core::draft::Draft`]. Answers are `Proposal` and `Comparison` records
-//! (web/contract.gen.ts).
+//! The scenario the page shows and edits, held in the simulation worker between edits, beside the
+//! run built from it: a handle on [`kumiki_core::draft::Draft`]. Answers are `Proposal` and
+//! `Comparison` records (web/contract.gen.ts).
 
 use kumiki_core::json;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
 
-use crate::{js_err, to_js};
+use crate::{js_err, to_js, Sim};
 
-/// The page's scenario in view. One per page, made once; `free` is never needed.
+/// The page's scenario in view, held by the simulation worker. One per worker, made once; `free`
+/// is never needed.
 #[wasm_bindgen]
 pub struct Draft {
-    draft: kumiki_core::draft::Draft,
+    pub(crate) draft: kumiki_core::draft::Draft,
 }
 
 #[wasm_bindgen]
 impl Draft {
     /// A draft with nothing in view, which checks scenarios whose shapes span up to
-    /// `check_up_to_cells` cells and leaves larger ones to the simulation worker.
+    /// `check_up_to_cells` cells at once and proposes larger ones unchecked, for their run to
+    /// check once the page has said so.
     #[wasm_bindgen(constructor)]
     pub fn new(check_up_to_cells: f64) -> Draft {
         Draft {
@@ -31,13 +33,6 @@ impl Draft {
         to_js(&self.draft.open(json, keep_locks))
     }
 
-    /// Sets one dotted path (`value_json` is JSON, or else taken as text) and checks the result.
-    /// A `Proposal`.
-    pub fn edit(&mut self, path: &str, value_json: &str) -> Result<JsValue, JsError> {
-        let value = json::parse(value_json).unwrap_or_else(|_| Value::String(value_json.into()));
-        to_js(&self.draft.edit(&[(path.to_string(), value)]))
-    }
-
     /// Sets several dotted paths at once (`changes_json`: an object from path to value) and
     /// checks the result once. A `Proposal`.
     pub fn edit_all(&mut self, changes_json: &str) -> Result<JsValue, JsError> {
@@ -48,9 +43,10 @@ impl Draft {
         to_js(&self.draft.edit(&changes))
     }
 
-    /// The simulation worker runs `json` (it opened a large scenario, or recorded a click).
-    pub fn ran(&mut self, json: String) {
-        self.draft.ran(json);
+    /// `sim` runs the scenario in view: a large one it checked as it opened, or the one in view
+    /// with a click recorded.
+    pub fn ran(&mut self, sim: &Sim) {
+        self.draft.ran(sim.run().scenario().clone());
     }
 
     /// The share-link payload of the scenario in view, or of it named `name` (a hand-in).

@@ -1,13 +1,13 @@
 //! The simulation handle ([`Sim`]) and a bare run for the benchmarks ([`Stepper`]).
 
-use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
+use js_sys::{Float32Array, Uint32Array, Uint8Array};
 use kumiki_core::models::Scene;
 use kumiki_core::playback::Playback;
 use kumiki_core::{grading, hash, json, Run, Scenario};
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
 
-use crate::{js_err, to_js};
+use crate::{js_err, to_js, Draft};
 
 /// `performance.now()` of the page or worker, in milliseconds; `None` where there is none.
 fn clock() -> Option<js_sys::Function> {
@@ -23,7 +23,7 @@ fn clock() -> Option<js_sys::Function> {
 pub struct Sim {
     playback: Playback,
     clock: Option<js_sys::Function>,
-    /// The scene [`Sim::scene_if_changed`] last gave, so a frame carries it only when it changed.
+    /// The scene the last frame carried, so a frame carries it only when it changed.
     last_scene: Option<Scene>,
 }
 
@@ -31,18 +31,49 @@ impl Sim {
     pub(crate) fn run(&self) -> &Run {
         self.playback.run()
     }
+
+    fn playing(run: Run) -> Sim {
+        Sim {
+            playback: Playback::new(run),
+            clock: clock(),
+            last_scene: None,
+        }
+    }
 }
 
 #[wasm_bindgen]
 impl Sim {
+    /// A run of scenario JSON, read and checked here (one too large for the draft to check at
+    /// once, or a comparison's second run).
     #[wasm_bindgen(constructor)]
     pub fn new(scenario_json: &str) -> Result<Sim, JsError> {
         let scenario = Scenario::from_json(scenario_json).map_err(js_err)?;
-        Ok(Sim {
-            playback: Playback::new(Run::new(scenario).map_err(js_err)?),
-            clock: clock(),
-            last_scene: None,
-        })
+        Ok(Sim::playing(Run::new(scenario).map_err(js_err)?))
+    }
+
+    /// A run of the scenario in view, built from what the draft checked: nothing is read or
+    /// checked again (see `kumiki_core::draft::Draft::start`).
+    pub fn start(draft: &mut Draft) -> Result<Sim, JsError> {
+        Ok(Sim::playing(draft.draft.start().map_err(js_err)?))
+    }
+
+    /// The run as it stands, for the page's panels: a `Frame` (web/contract.gen.ts), with the
+    /// state hash when `hashed`, the record of `chart` merged into at most `points` points when
+    /// given, and the model's scene when it changed since the last frame (always in the first).
+    pub fn frame(
+        &mut self,
+        hashed: bool,
+        chart: Option<String>,
+        points: u32,
+    ) -> Result<JsValue, JsError> {
+        let chart = chart.as_deref().map(|metric| (metric, points as usize));
+        let mut frame = self.playback.frame(hashed, chart);
+        let scene = self.run().model().scene();
+        if self.last_scene.as_ref() != Some(&scene) {
+            frame.scene = Some(scene.clone());
+            self.last_scene = Some(scene);
+        }
+        to_js(&frame)
     }
 
     /// Takes up to `n` steps, keeping keyframes and every step's metrics; returns how many were
@@ -65,40 +96,17 @@ impl Sim {
         self.playback.seek(step.max(0.0) as u64);
     }
 
-    /// A metric's every-step record for the chart, merged into at most `points` points:
-    /// `[steps…, least…, greatest…]`, three runs of the same length.
-    pub fn chart(&self, metric: &str, points: u32) -> Float64Array {
-        let band = self.playback.series().decimate(metric, points as usize);
-        let flat: Vec<f64> = [band.steps, band.min, band.max].concat();
-        Float64Array::from(flat.as_slice())
-    }
-
-    /// Steps per recorded bucket of the chart's series (1 until the record is full, then doubling).
-    pub fn chart_span(&self) -> f64 {
-        self.playback.series().span() as f64
-    }
-
-    /// The furthest step reached, where the timeline ends.
-    pub fn furthest(&self) -> f64 {
-        self.playback.furthest() as f64
-    }
-
-    /// Keyframes kept and the steps between them, for the page's memory note.
-    pub fn keyframes(&self) -> Vec<f64> {
-        let (n, every) = self.playback.keyframes();
-        vec![n as f64, every as f64]
-    }
-
     pub fn steps(&self) -> f64 {
         self.run().steps() as f64
     }
 
-    pub fn finished(&self) -> bool {
-        self.run().finished()
+    /// Why a rule's script stopped the run (the rule, the line and the cap), or undefined.
+    pub fn stopped(&self) -> Option<String> {
+        self.run().stopped().map(str::to_string)
     }
 
-    pub fn completed(&self) -> bool {
-        self.run().model().completed()
+    pub fn finished(&self) -> bool {
+        self.run().finished()
     }
 
     /// The 64-bit state hash in hex.
@@ -200,24 +208,6 @@ impl Sim {
     /// the ghost follows the current target.
     pub fn scene(&self) -> Result<JsValue, JsError> {
         to_js(&self.run().model().scene())
-    }
-
-    /// [`Sim::scene`] when it differs from what this call last returned (always on the first
-    /// call), else null: the worker's frames carry the scene only when it changed, without
-    /// serialising it every frame to find out.
-    pub fn scene_if_changed(&mut self) -> Result<JsValue, JsError> {
-        let scene = self.run().model().scene();
-        if self.last_scene.as_ref() == Some(&scene) {
-            return Ok(JsValue::NULL);
-        }
-        let value = to_js(&scene)?;
-        self.last_scene = Some(scene);
-        Ok(value)
-    }
-
-    /// The step limit of the scenario.
-    pub fn max_steps(&self) -> f64 {
-        self.run().scenario().max_steps as f64
     }
 
     /// The scenario as it now stands, with clicked disturbances recorded.

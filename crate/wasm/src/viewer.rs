@@ -8,7 +8,7 @@ use kumiki_core::models::{Layout, Scene};
 use kumiki_view::camera::{Camera, Picked};
 use kumiki_view::geometry::{hex_corners, Grid, HEX_RADIUS, HEX_ROW};
 use kumiki_view::palette::range;
-use kumiki_view::scene::{Frame, Marks, Overlay};
+use kumiki_view::scene::{Marks, Overlay, State};
 use kumiki_view::view::{Kind, View};
 use wasm_bindgen::prelude::*;
 use web_sys::{ImageBitmap, OffscreenCanvas};
@@ -71,9 +71,9 @@ impl Viewer {
         self.view.set_layout(layout, false)
     }
 
-    /// The frame changed: the next draw uploads it.
-    pub fn frame_changed(&mut self) {
-        self.view.frame_changed();
+    /// The run's state changed: the next draw uploads it.
+    pub fn state_changed(&mut self) {
+        self.view.state_changed();
     }
 
     /// The page's marks (hover, selection, highlights, cursor, view options).
@@ -177,7 +177,7 @@ impl Viewer {
         });
         self.overlay_range = overlay.map(|o| (o.min, o.max));
         self.view.keep_in_view(&cells);
-        let frame = Frame {
+        let state = State {
             cells: &cells,
             agents: &agents,
             events: &events,
@@ -185,7 +185,7 @@ impl Viewer {
             overlay,
             world: &world,
         };
-        let stats = self.view.draw(&frame)?;
+        let stats = self.view.draw(&state)?;
         Ok(to_js(&stats)?)
     }
 
@@ -196,7 +196,7 @@ impl Viewer {
         } else {
             serde_wasm_bindgen::from_value(scene)?
         };
-        let frame = Frame {
+        let state = State {
             cells,
             agents: &[],
             events: &[],
@@ -205,8 +205,8 @@ impl Viewer {
             world: &world,
         };
         // An editor's cells change between calls without saying so: upload them every time.
-        self.view.frame_changed();
-        let stats = self.view.draw(&frame)?;
+        self.view.state_changed();
+        let stats = self.view.draw(&state)?;
         Ok(to_js(&stats)?)
     }
 

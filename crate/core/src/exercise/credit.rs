@@ -51,6 +51,22 @@ pub struct Verdict {
     pub credit: Vec<Credit>,
 }
 
+impl Verdict {
+    /// This verdict on a run that a rule's script stopped (it went past a cap or failed), when
+    /// `stopped` says why: never met and no points, whatever the goal, and the stop is the reason.
+    pub fn with_stop(mut self, stopped: Option<&str>) -> Verdict {
+        if let Some(why) = stopped {
+            self.met = false;
+            self.because = format!("a rule's script stopped the run: {why}");
+            self.points = self.points.map(|_| 0);
+            for part in &mut self.credit {
+                part.earned = 0;
+            }
+        }
+        self
+    }
+}
+
 /// Parts whose goals parse and whose points are within [`MAX_POINTS`].
 pub(super) fn check(parts: &[Part]) -> Result<()> {
     if parts.len() > MAX_PARTS {

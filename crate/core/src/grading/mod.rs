@@ -147,7 +147,8 @@ pub fn verdict(run: &crate::Run) -> Option<Verdict> {
             scenario: &doc,
         },
         &rules_broken(exercise, &doc),
-    ))
+    )
+    .with_stop(outcome.stopped.as_deref()))
 }
 
 /// Why `next` may not replace `current` by an edit (a form field, an editor, the seed, the JSON

@@ -159,7 +159,8 @@ impl Replay {
                 scenario: &doc,
             },
             &[],
-        );
+        )
+        .with_stop(outcome.stopped.as_deref());
         with_verdict(grade, verdict)
     }
 }

@@ -8,7 +8,7 @@ use serde_json::json;
 /// ("Goal met at step 190") are of that run; the tests keep them rather than follow the model.
 fn amas_l() -> Value {
     let mut doc = presets::scenario("amas-L").unwrap().to_value();
-    doc["target"] = json!("####..........\n".repeat(8) + &"##############\n".repeat(4));
+    doc["target"] = json!("####..........\n".repeat(8) + "##############\n".repeat(4).as_str());
     as_in_the_issue(doc)
 }
 

@@ -56,6 +56,7 @@ pub(super) fn made_up_rows(e: &Experiment) -> Vec<Row> {
                     steps: next() as u64,
                     hash: "0".into(),
                     metrics,
+                    stopped: None,
                 },
                 params: job.params.iter().cloned().collect(),
                 scenario_hash: "0".into(),

@@ -9,6 +9,7 @@
 //!   "seed": 1,
 //!   "max_steps": 20000,
 //!   "disturbances": [{ "at": 360, "kind": "remove", "count": 10 }],
+//!   "rules": { "leader": "fn leader(robot) { ... }" },
 //!   "...": "every other key belongs to the model and is checked by it"
 //! }
 //! ```
@@ -18,7 +19,7 @@
 //! every scheduled action, without building the model. What the check learns (the shapes laid on
 //! the lattice) stays with the description, so the run builds its model without checking it
 //! again. A disturbance is applied after `at` steps have run; its other keys are the model's
-//! action.
+//! action. `rules` puts scripts in the model's rule slots ([`crate::rules`]).
 
 use serde_json::{Map, Value};
 
@@ -28,6 +29,7 @@ use crate::exercise::Exercise;
 use crate::handin::Handin;
 use crate::limits::Limits;
 use crate::models::{self, Action, Model, ModelSpec};
+use crate::rules::{self, Rules};
 pub use kumiki_model::entry::{envelope_role, EnvelopeKey, Role, ENVELOPE};
 
 mod migrate;
@@ -74,6 +76,8 @@ pub struct Scenario {
     /// A hand-in's record of itself: when, how many checks and hints, an answer (see
     /// [`crate::handin`]).
     pub handin: Option<Handin>,
+    /// Scripts in the model's rule slots, in place of the paper's rules (see [`crate::rules`]).
+    pub rules: Rules,
     /// The model's own keys, read into its typed description.
     pub spec: ModelSpec,
     /// The size limits it was read under; its overrides and its run are held to them too.
@@ -118,6 +122,7 @@ impl Scenario {
             MAX_STEPS,
         )?;
         let disturbances = take_disturbances(&mut map)?;
+        let rules = Rules::read(map.remove(rules::KEY), entry)?;
         let exercise = map.remove("exercise");
         let compare = map.remove("compare");
         let handin = map
@@ -137,6 +142,7 @@ impl Scenario {
             exercise: None,
             compare: None,
             handin,
+            rules,
             spec,
             limits,
         };
@@ -169,10 +175,17 @@ impl Scenario {
         self.spec.to_body()
     }
 
-    /// Builds the model at step 0 from what reading the scenario learnt, checking nothing again:
-    /// the one place a scenario becomes a model.
+    /// Builds the model at step 0 from what reading the scenario learnt, checking nothing again,
+    /// with its rules' scripts in their slots: the one place a scenario becomes a model.
     pub fn build(&self) -> Result<Box<dyn Model>> {
-        self.spec.build(self.seed, self.limits)
+        let mut model = self.spec.build(self.seed, self.limits)?;
+        self.install(model.as_mut())?;
+        Ok(model)
+    }
+
+    /// Puts the scenario's scripts in `model`'s rule slots.
+    pub(crate) fn install(&self, model: &mut dyn Model) -> Result<rules::Installed> {
+        self.rules.install(model, models::entry(self.model())?)
     }
 
     /// [`Scenario::build`] for a run that keeps this scenario: what reading it learnt goes into
@@ -215,6 +228,9 @@ impl Scenario {
                 "handin".into(),
                 serde_json::to_value(handin).expect("a hand-in record serialises"),
             );
+        }
+        if !self.rules.is_empty() {
+            map.insert(rules::KEY.into(), self.rules.to_value());
         }
         canonical(Value::Object(map))
     }
@@ -286,7 +302,8 @@ pub fn parse_override(text: &str) -> Result<(String, Value)> {
     Ok((path.to_string(), value))
 }
 
-/// Sets a dotted path in a JSON document, creating the last key if it is missing.
+/// Sets a dotted path in a JSON document, creating the last key if it is missing. A scenario
+/// without rules writes no `rules`: a rule set by its path (`rules.leader`) starts the section.
 pub fn set_path(doc: &mut Value, path: &str, value: Value) -> Result<()> {
     let segments: Vec<&str> = path.split('.').collect();
     let mut here = doc;
@@ -298,6 +315,10 @@ pub fn set_path(doc: &mut Value, path: &str, value: Value) -> Result<()> {
                 if last {
                     map.insert((*seg).to_string(), value);
                     return Ok(());
+                }
+                if n == 0 && *seg == rules::KEY {
+                    map.entry(rules::KEY)
+                        .or_insert_with(|| Value::Object(Map::new()));
                 }
                 map.get_mut(*seg)
                     .ok_or_else(|| Error::field(so_far, "no such field"))?

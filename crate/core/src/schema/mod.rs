@@ -16,11 +16,11 @@ use crate::exercise::{Exercise, MAX_GOAL_CHARS};
 use crate::experiment::MAX_JOBS;
 use crate::models::MODELS;
 use crate::presets;
+use crate::rules;
 use crate::scenario::{FORMAT_VERSION, MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS, MAX_SEED, MAX_STEPS};
 
 mod pages;
-mod typescript;
-pub use typescript::{declarations, typescript};
+pub use kumiki_model::typescript::{declarations, typescript};
 
 /// Where the published schemas live, relative to the repository root.
 pub const DIR: &str = "docs/schema";
@@ -59,6 +59,7 @@ pub fn scenario() -> Value {
             [&exercise, &compare, &handin],
             &disturbance,
         );
+        properties.insert(rules::KEY.into(), rules_schema(entry.slots));
         if let Some(Value::Object(own)) = body.remove("properties") {
             properties.extend(own);
         }
@@ -133,6 +134,32 @@ fn envelope(
         Value::Object(map) => map,
         _ => unreachable!(),
     }
+}
+
+/// The envelope's `rules` of a model with `slots`: a script (or null, the paper's rule) for each
+/// slot, and no other key.
+fn rules_schema(slots: &[rules::SlotInfo]) -> Value {
+    let properties: Map<String, Value> = slots
+        .iter()
+        .map(|slot| {
+            let about = format!(
+                "{}. {} The script defines fn {}(input), which answers {}. null: the paper's rule.",
+                slot.title, slot.about, slot.name, slot.output
+            );
+            let node = json!({
+                "description": about,
+                "type": ["string", "null"],
+                "maxLength": rules::MAX_SOURCE_BYTES,
+            });
+            (slot.name.to_string(), node)
+        })
+        .collect();
+    json!({
+        "description": "Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule.",
+        "type": "object",
+        "properties": properties,
+        "additionalProperties": false,
+    })
 }
 
 /// The schema of an experiment file (docs/experiments.md).
@@ -294,6 +321,9 @@ fn capitalised(name: &str) -> String {
 pub const TYPESCRIPT_FILE: &str = "web/scenario.gen.ts";
 /// Where the TypeScript types of the records the core hands the page live (see [`contract`]).
 pub const CONTRACT_FILE: &str = "web/contract.gen.ts";
+/// The page's copy of the scenario schema, which its form reads (the page takes no runtime data
+/// from `docs/`).
+pub const PAGE_SCHEMA_FILE: &str = "web/scenario.schema.gen.json";
 
 /// Where the generated table of every model's metrics lives, from the repository root.
 pub const METRICS_FILE: &str = "docs/metrics.md";
@@ -306,6 +336,7 @@ pub fn files() -> Vec<(String, String)> {
     let scenario = scenario();
     vec![
         (format!("{DIR}/{SCENARIO_FILE}"), pretty(&scenario)),
+        (PAGE_SCHEMA_FILE.to_string(), pretty(&scenario)),
         (format!("{DIR}/{EXPERIMENT_FILE}"), pretty(&experiment())),
         (TYPESCRIPT_FILE.to_string(), typescript(&scenario)),
         (CONTRACT_FILE.to_string(), contract_typescript()),
@@ -315,8 +346,8 @@ pub fn files() -> Vec<(String, String)> {
 
 /// The schema of every record the core hands the page through the wasm glue (serde-wasm-bindgen
 /// or JSON text), so that their TypeScript types are generated from them and a change of one in
-/// Rust is a type error in the page, not a silent mismatch: a run's layout, scene, metrics and
-/// inspected facts, an exercise's check and a graded hand-in, the scenario in view's proposals and
+/// Rust is a type error in the page, not a silent mismatch: a run's layout, scene, frame,
+/// metrics and inspected facts, an exercise's check and a graded hand-in, the scenario in view's proposals and
 /// comparison, links unpacked, shapes read, the lists of presets, lessons, metrics and
 /// experiments, an experiment's rows and figures, and the reproduction report's sections and a
 /// claim recomputed.
@@ -325,6 +356,7 @@ pub fn contract() -> Value {
     let mut generator = SchemaSettings::draft2020_12().into_generator();
     generator.subschema_for::<crate::models::Layout>();
     generator.subschema_for::<crate::models::Scene>();
+    generator.subschema_for::<crate::playback::Frame>();
     generator.subschema_for::<MetricValues>();
     generator.subschema_for::<MetricInfo>();
     generator.subschema_for::<Facts>();
@@ -348,6 +380,7 @@ pub fn contract() -> Value {
     generator.subschema_for::<crate::plot::figure::Figure>();
     generator.subschema_for::<crate::reproduce::Section>();
     generator.subschema_for::<crate::reproduce::Finding>();
+    generator.subschema_for::<crate::rules::SlotDoc>();
     let defs: Map<String, Value> = generator.take_definitions(true).into_iter().collect();
     json!({ "$defs": defs })
 }
@@ -493,7 +526,8 @@ mod tests {
     #[test]
     fn the_envelope_table_is_the_envelopes_keys() {
         let (exercise, compare, handin, disturbance) = (json!({}), json!({}), json!({}), json!({}));
-        let schema = envelope("amas", "", 1, [&exercise, &compare, &handin], &disturbance);
+        let mut schema = envelope("amas", "", 1, [&exercise, &compare, &handin], &disturbance);
+        schema.insert(rules::KEY.into(), rules_schema(&[]));
         let mut keys: Vec<&str> = schema.keys().map(String::as_str).collect();
         let mut table: Vec<&str> = crate::scenario::ENVELOPE.iter().map(|k| k.key).collect();
         keys.sort_unstable();

@@ -46,6 +46,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
+    slots: &[],
     queries: &[],
     // Links made before a version replay with the readings they were made with.
     pins: &[

@@ -12,12 +12,14 @@ pub const METRICS: &[MetricInfo] = &[
         "total_steps",
         "robot steps",
         "Steps times the number of robots: the work the paper's figures count (figure 23).",
-    ),
+    )
+    .key(),
     MetricInfo::new(
         "collisions",
         "count",
         "Times a robot was blocked by another robot in its way.",
-    ),
+    )
+    .key(),
     MetricInfo::new(
         "corner_collisions",
         "count",
@@ -57,7 +59,8 @@ pub const METRICS: &[MetricInfo] = &[
         "relays",
         "count",
         "Modules handed from one robot to another instead of carried all the way (section 5.2).",
-    ),
+    )
+    .key(),
     MetricInfo::new(
         "corner_relays",
         "count",
@@ -77,7 +80,8 @@ pub const METRICS: &[MetricInfo] = &[
         "built",
         "fraction",
         "Share of the current target's cells that hold a module, from 0 to 1.",
-    ),
+    )
+    .key(),
     MetricInfo::new(
         "placed",
         "count",

@@ -8,6 +8,8 @@
 //! 5. the driven robots send the completion signal that resynchronises everyone;
 //! 6. the stress of the new configuration is solved.
 
+use kumiki_model::slot::Stop;
+
 use super::election::{self, Elected, Kind, Mode};
 use super::frame;
 use super::motion::{Drive, RIGHT, UP};
@@ -20,7 +22,9 @@ type Order = (u32, Vec<Drive>, u64);
 use super::{Chobie, Last};
 
 impl Chobie {
-    pub(super) fn cycle(&mut self) {
+    /// One transformation; a script in the slot `leader` that goes past a cap stops it after
+    /// the load check, before anything moves.
+    pub(super) fn cycle(&mut self) -> Result<(), Stop> {
         let mut comm = Comm::default();
         if self.p.task == Task::Bridge {
             let overloaded: Vec<u32> = self.overloaded_robots();
@@ -44,8 +48,8 @@ impl Chobie {
             || self.failure != Failure::Standing;
         let leaders = match self.p.leader {
             _ if idle => Vec::new(),
-            Leader::Temporary => self.elect(&mut comm),
-            Leader::Permanent => self.direct(&mut comm),
+            Leader::Temporary => self.elect(&mut comm)?,
+            Leader::Permanent => self.direct(&mut comm)?,
         };
         let (orders, step7) = self.orders(&leaders);
         if self.p.leader == Leader::Temporary && !orders.is_empty() {
@@ -94,6 +98,7 @@ impl Chobie {
         last.trace = comm.trace;
         self.last = last;
         self.solve();
+        Ok(())
     }
 
     /// The orders the leaders send: (leader, lines, route hops). In construction, a leader whose tier cannot slide alone (the robots
@@ -148,19 +153,21 @@ impl Chobie {
     }
 
     /// The temporary-leader election with the selected method and priority sequence.
-    fn elect(&mut self, comm: &mut Comm) -> Vec<Elected> {
+    fn elect(&mut self, comm: &mut Comm) -> Result<Vec<Elected>, Stop> {
         let body = &self.body;
+        let (rule, mode) = (&self.leader, self.mode);
+        let three_rule = |body, comm: &mut Comm| election::three_rule_with(body, comm, rule, mode);
         let leaders = match self.mode {
             Mode::Adaptation => {
                 let over: Vec<bool> = self.stress.iter().map(|&s| self.overloaded(s)).collect();
                 election::adaptation(body, &over, comm)
             }
-            Mode::Construction => election::three_rule(body, comm),
+            Mode::Construction => three_rule(body, comm)?,
             Mode::Crawl => {
                 match self.p.method {
-                    Method::First => election::three_rule(body, comm),
+                    Method::First => three_rule(body, comm)?,
                     Method::TrialAndError => {
-                        let first = election::three_rule(body, comm);
+                        let first = three_rule(body, comm)?;
                         if !first.is_empty() {
                             first
                         } else {
@@ -181,7 +188,7 @@ impl Chobie {
                     Method::Cautious => {
                         // The first two slots give every robot its neighbours and the rule-2
                         // signals; then one slot per algorithm, in order, until one has a leader.
-                        let first = election::three_rule(body, comm);
+                        let first = three_rule(body, comm)?;
                         let tries = [first, election::row_end(body), election::corner(body)];
                         let found = tries.iter().position(|t| !t.is_empty());
                         let checks = found.map_or(tries.len(), |i| i + 1);
@@ -197,7 +204,7 @@ impl Chobie {
         if leaders.is_empty() {
             self.totals.election_failures += 1;
         }
-        leaders
+        Ok(leaders)
     }
 
     /// The announcement slot; with the priority sequence (figure 18) one slot per kind, in
@@ -265,7 +272,7 @@ impl Chobie {
     /// to it (2·⌈log₂ side⌉ bits, each ON bit a message per hop, relayed through the leader's
     /// faces), and it picks the command with the same rules (and the priority sequence), free
     /// of election slots.
-    fn direct(&mut self, comm: &mut Comm) -> Vec<Elected> {
+    fn direct(&mut self, comm: &mut Comm) -> Result<Vec<Elected>, Stop> {
         let body = &self.body;
         let side = body.w.max(body.h).max(2);
         let bits = 2 * (32 - (side - 1).leading_zeros()) as u64;
@@ -284,14 +291,16 @@ impl Chobie {
         );
         comm.send_along(body, self.permanent, sent, kind::GATHER);
         let mut scratch = Comm::default();
+        let (rule, mode) = (&self.leader, self.mode);
+        let three_rule = |body, comm: &mut Comm| election::three_rule_with(body, comm, rule, mode);
         let mut leaders = match self.mode {
             Mode::Adaptation => {
                 let over: Vec<bool> = self.stress.iter().map(|&s| self.overloaded(s)).collect();
                 election::adaptation(body, &over, &mut scratch)
             }
-            Mode::Construction => election::three_rule(body, &mut scratch),
+            Mode::Construction => three_rule(body, &mut scratch)?,
             Mode::Crawl => {
-                let mut all = election::three_rule(body, &mut scratch);
+                let mut all = three_rule(body, &mut scratch)?;
                 if all.is_empty() {
                     all = election::row_end(body);
                 }
@@ -307,7 +316,7 @@ impl Chobie {
             self.totals.election_failures += 1;
         }
         kumiki_model::sort::sort_by_key(&mut leaders, |e| (e.kind, e.robot));
-        leaders
+        Ok(leaders)
     }
 
     /// The baseline's command: the ids of the driving robots (⌈log₂ n⌉ bits each) and a

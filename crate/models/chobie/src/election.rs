@@ -1,11 +1,15 @@
 //! Temporary leaders: who becomes leader after a transformation, and which lines it commands.
 //!
-//! - [`three_rule`]: the election of section 3.3 (figure 8) and its four leader kinds;
+//! - [`three_rule`]: the election of section 3.3 (figure 8) and its four leader kinds, rule 3
+//!   asked of the slot `leader` ([`three_rule_with`]);
 //! - [`row_end`] and [`corner`]: the second and third algorithms of section IV for forms (b)
 //!   and (c), where the first elects nobody;
 //! - [`adaptation`]: steps 2-6 of the load-adaptation algorithm of section 3.4;
 //! - [`Elected::command`]: the lines each kind drives, in each mode.
 
+use kumiki_model::slot::{Rule, Stop};
+
+use super::leader::{self, Heard, Leader, Senses};
 use super::motion::{Body, Drive, DOWN, LEFT, NONE, RIGHT, UP};
 use super::signals::{kind, Comm};
 
@@ -84,14 +88,27 @@ pub struct Elected {
     pub kind: Kind,
 }
 
-/// The three-rule election of section 3.3, in two slots.
+/// The three-rule election of section 3.3, in two slots, with the paper's rule 3.
+pub fn three_rule(body: &Body, comm: &mut Comm) -> Vec<Elected> {
+    let paper = Rule::paper();
+    three_rule_with(body, comm, &paper, Mode::Crawl).expect("the paper's rule never stops")
+}
+
+/// The three-rule election of section 3.3, in two slots, rule 3 decided by `rule` (the slot
+/// `leader`, [`super::leader`]):
 /// 1. every robot signals in all four directions;
 /// 2. a robot that heard from top or bottom stops signalling left and right;
 /// 3. a robot that heard from a vertical and a horizontal direction is the leader.
 ///
-/// The vertical source is named top when it heard from top, the horizontal one right when it
-/// heard from right (a robot hearing both ways picks those).
-pub fn three_rule(body: &Body, comm: &mut Comm) -> Vec<Elected> {
+/// In the paper's rule the vertical source is named top when it heard from top, the horizontal
+/// one right when it heard from right (a robot hearing both ways picks those). A script in the
+/// slot that goes past a cap stops the election.
+pub fn three_rule_with(
+    body: &Body,
+    comm: &mut Comm,
+    rule: &Rule<Leader>,
+    mode: Mode,
+) -> Result<Vec<Elected>, Stop> {
     all_directions(body, comm);
     comm.slot(RULE_2);
     let vertical = |r: u32| body.has(r, UP) || body.has(r, DOWN);
@@ -104,31 +121,35 @@ pub fn three_rule(body: &Body, comm: &mut Comm) -> Vec<Elected> {
             comm.send_toward(body, r, faces, kind::ELECTION);
         }
     }
+    let mode = leader::mode_name(mode);
     let mut out = Vec::new();
     for r in 0..body.len() as u32 {
-        if !vertical(r) {
-            continue;
-        }
         let hears = |d: usize| {
             let n = body.nbr(r, d);
             n != NONE && !vertical(n)
         };
-        let horizontal = if hears(RIGHT) {
-            RIGHT
-        } else if hears(LEFT) {
-            LEFT
-        } else {
-            continue;
+        let senses = Senses {
+            first: Heard {
+                right: body.has(r, RIGHT),
+                up: body.has(r, UP),
+                left: body.has(r, LEFT),
+                down: body.has(r, DOWN),
+            },
+            second: Heard {
+                right: hears(RIGHT),
+                left: hears(LEFT),
+                ..Heard::default()
+            },
+            mode,
         };
-        let kind = match (body.has(r, UP), horizontal) {
-            (true, RIGHT) => Kind::TopRight,
-            (true, _) => Kind::TopLeft,
-            (false, RIGHT) => Kind::BottomRight,
-            (false, _) => Kind::BottomLeft,
-        };
-        out.push(Elected { robot: r, kind });
+        if let Some(form) = rule.decide(&senses, None)? {
+            out.push(Elected {
+                robot: r,
+                kind: form.kind(),
+            });
+        }
     }
-    out
+    Ok(out)
 }
 
 /// The meanings of the election's slots, as the page shows them.

@@ -113,6 +113,8 @@ impl Chobie {
             failure: super::Failure::Standing,
             resumed: 0,
             band: super::frame::Scratch::default(),
+            leader: Default::default(),
+            stopped: None,
         };
         model.solve();
         model

@@ -6,7 +6,8 @@
 //! - [`init`]: the model built from a scenario;
 //! - [`motion`]: the lattice and line motion with its constraints;
 //! - [`signals`]: time slots and messages;
-//! - [`election`]: temporary leaders and their commands;
+//! - [`election`]: temporary leaders and their commands; [`leader`]: the rule slot `leader`,
+//!   rule 3 of the election, which a scenario's script may take;
 //! - [`frame`]: the plane-frame stress model;
 //! - [`cycle`]: one transformation, phase by phase;
 //! - [`view`], [`actions`], [`queries`]: what the page draws, the load tool, helper calls;
@@ -20,6 +21,7 @@ pub mod cycle;
 pub mod election;
 pub mod frame;
 pub mod init;
+pub mod leader;
 pub mod limits;
 pub mod metrics;
 pub mod motion;
@@ -46,6 +48,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<spec::Spec>,
     schema: entry::schema_of::<spec::Spec>(),
     disturbance: entry::schema_of::<actions::LoadAction>(),
+    slots: &[<leader::Leader as kumiki_model::slot::Slot>::INFO],
     queries: &[
         entry::Query {
             name: "crawl",
@@ -153,6 +156,10 @@ pub struct Chobie {
     resumed: u64,
     /// The stress solver's band, kept from one step to the next.
     band: frame::Scratch,
+    /// Rule 3 of the election: the paper's, or a scenario's script (the slot `leader`).
+    leader: kumiki_model::slot::Rule<leader::Leader>,
+    /// Why a script stopped the run, once one did.
+    stopped: Option<String>,
 }
 
 /// A structure that broke or fell stays so.

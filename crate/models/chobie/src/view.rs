@@ -2,6 +2,7 @@
 //! the metrics and the state hash.
 
 use std::borrow::Cow;
+use std::rc::Rc;
 
 use serde_json::{json, Map, Value};
 
@@ -15,6 +16,7 @@ use kumiki_model::lattice::LatticeKind;
 use kumiki_model::model::{
     Action, Agent, CellMark, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
+use kumiki_model::slot::Script;
 
 /// Cell codes.
 pub mod code {
@@ -116,8 +118,27 @@ impl Model for Chobie {
     }
 
     fn step(&mut self) {
-        self.cycle();
+        if let Err(stop) = self.cycle() {
+            self.stopped = Some(stop.0);
+        }
         self.steps += 1;
+    }
+
+    fn install(&mut self, slot: &str, script: Rc<dyn Script>) -> Result<()> {
+        match slot {
+            "leader" => {
+                self.leader.install(script);
+                Ok(())
+            }
+            _ => Err(kumiki_model::Error::field(
+                format!("rules.{slot}"),
+                "CHOBIE II has one rule slot: leader",
+            )),
+        }
+    }
+
+    fn stopped(&self) -> Option<&str> {
+        self.stopped.as_deref()
     }
 
     fn steps(&self) -> u64 {

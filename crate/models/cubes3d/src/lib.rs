@@ -61,6 +61,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::ActionSpec>(),
+    slots: &[],
     queries: &[
         Query {
             name: "derive",

@@ -65,12 +65,21 @@ pub enum Priorities {
     Penalty,
 }
 
+/// A statement as [`Goal::difference`] reads it: its neighbour types right-aligned in six
+/// places, the places before them `none`. Two lists padded at the front to one length pair
+/// place by place as padded to six: the extra places pair `none` with `none`, distance 0.
 #[derive(Clone, Copy, Debug)]
 struct Packed {
     unit: u8,
-    n: u8,
     nb: [u8; 6],
     priority: u8,
+}
+
+/// Sorted neighbour types right-aligned in six places, `none` before them.
+fn right_aligned(neighbours: &[u8]) -> [u8; 6] {
+    let mut out = [NONE; 6];
+    out[6 - neighbours.len()..].copy_from_slice(neighbours);
+    out
 }
 
 /// A goal: its statements, sorted by priority, then type, then neighbours, without repeats.
@@ -105,15 +114,10 @@ impl Goal {
         }
         let packed = kept
             .iter()
-            .map(|s| {
-                let mut nb = [NONE; 6];
-                nb[..s.neighbours.len()].copy_from_slice(&s.neighbours);
-                Packed {
-                    unit: s.unit,
-                    n: s.neighbours.len() as u8,
-                    nb,
-                    priority: s.priority,
-                }
+            .map(|s| Packed {
+                unit: s.unit,
+                nb: right_aligned(&s.neighbours),
+                priority: s.priority,
             })
             .collect();
         let top = kept.iter().map(|s| s.priority).min().unwrap_or(1);
@@ -214,17 +218,26 @@ impl Goal {
             statement: 0,
         };
         let mut exact: Option<u16> = None;
+        let cur = right_aligned(neighbours);
         for (k, s) in self.packed.iter().enumerate() {
-            let d = distance(dist, own, neighbours, s);
+            // What the statement's score adds to its distance. A statement whose distance
+            // reaches the best score less that cannot score better, and one whose distance
+            // reaches 1 is no exact match, so its sum stops at the larger of the two.
+            let offset = match mode {
+                Priorities::Pooled | Priorities::Guided => 0,
+                Priorities::Penalty => u32::from(s.priority - self.top),
+            };
+            let bound = best.difference.saturating_sub(offset).max(1);
+            let Some(d) = distance(dist, own, &cur, s, bound) else {
+                continue;
+            };
             if d == 0 {
                 exact = Some(k as u16);
                 break;
             }
             let scored = match mode {
-                Priorities::Pooled => d,
                 Priorities::Guided if s.priority != self.top => continue,
-                Priorities::Guided => d,
-                Priorities::Penalty => d + u32::from(s.priority - self.top),
+                _ => d + offset,
             };
             if scored < best.difference {
                 best = Closest {
@@ -243,18 +256,24 @@ impl Goal {
     }
 }
 
+/// The distance of a unit (type `own`, neighbour types `cur` right-aligned) to statement `s`,
+/// or `None` once it reaches `bound`.
 #[inline]
-fn distance(dist: &[[u8; CLASSES]; CLASSES], own: u8, cur: &[u8], s: &Packed) -> u32 {
+fn distance(
+    dist: &[[u8; CLASSES]; CLASSES],
+    own: u8,
+    cur: &[u8; 6],
+    s: &Packed,
+    bound: u32,
+) -> Option<u32> {
     let mut c = u32::from(dist[own as usize][s.unit as usize]);
-    let n = cur.len();
-    let m = s.n as usize;
-    let k = n.max(m);
-    for i in 0..k {
-        let a = if i + n >= k { cur[i + n - k] } else { NONE };
-        let b = if i + m >= k { s.nb[i + m - k] } else { NONE };
-        c += u32::from(dist[a as usize][b as usize]);
+    for i in 0..6 {
+        if c >= bound {
+            return None;
+        }
+        c += u32::from(dist[cur[i] as usize][s.nb[i] as usize]);
     }
-    c
+    (c < bound).then_some(c)
 }
 
 fn parse_line(t: &Types, content: &str) -> Result<Vec<Statement>, String> {

@@ -63,12 +63,13 @@ pub const ENTRY: ModelEntry = ModelEntry {
     name: "fracta",
     title: "Fracta: hexagonal self-assembly and self-repair",
     default_max_steps: 20_000,
-    model_version: 6,
+    model_version: 7,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::FaultAction>(),
+    slots: &[],
     queries: &[
         entry::Query {
             name: "derive",

@@ -5,9 +5,9 @@ use kumiki_model::model::MetricInfo;
 pub const METRICS: &[MetricInfo] = &[
     MetricInfo::new("completed", "flag", "True when every working unit matches a goal statement."),
     MetricInfo::new("steps", "steps", "Time steps taken so far."),
-    MetricInfo::new("mean_difference", "difference", "Mean over working units of the difference between a unit's connection state and its closest goal statement."),
-    MetricInfo::new("moves", "count", "Rolls made by units so far."),
-    MetricInfo::new("conflicts", "count", "Rolls cancelled because two units would collide."),
+    MetricInfo::new("mean_difference", "difference", "Mean over working units of the difference between a unit's connection state and its closest goal statement.").key(),
+    MetricInfo::new("moves", "count", "Rolls made by units so far.").key(),
+    MetricInfo::new("conflicts", "count", "Rolls cancelled because two units would collide.").key(),
     MetricInfo::new("irritations", "count", "Times a unit's irritation passed the threshold and made it move whatever the difference (condition 5)."),
     MetricInfo::new("units", "units", "Working units in the system."),
     MetricInfo::new("faults", "count", "Units whose power was cut (a fault injected)."),

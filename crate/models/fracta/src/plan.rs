@@ -93,43 +93,71 @@ impl Fracta {
     }
 
     /// How much the motion of unit `u` from `from` to `to` changes the summed difference of
-    /// the working units it touches: those within two cells of either end (a motion changes
-    /// the bonds of the units beside its ends, and so the statements of the units beside
-    /// those; no unit farther away sees a change). This equals the change of the whole
-    /// system's summed difference, computed from what the units around the mover know.
+    /// the working units: the change of those whose statement it changes. The bonds change for
+    /// the mover and the units beside either end (their types may change), and the neighbour
+    /// types change only for the units beside a unit whose type changed; every other unit,
+    /// within two cells of the ends or farther, keeps its statement and its difference. This
+    /// is the change of the whole system's summed difference, computed from what the units
+    /// around the mover know.
     pub(super) fn change_after(&mut self, u: u32, from: u32, to: u32) -> i64 {
         let t = types();
-        let mut touched = std::mem::take(&mut self.touched);
-        touched.clear();
+        self.occ[from as usize] = NO_UNIT;
+        self.occ[to as usize] = u;
+        // The units whose bonds change (working or faulty: a faulty unit is still a
+        // neighbour), with their type after the motion.
+        let mut bonds = [(NO_UNIT, 0u8); 13];
+        let mut n = 0;
+        bonds[n] = (u, t.of(self.ring(to)));
+        n += 1;
         for end in [from, to] {
-            let mut ring = [NO_UNIT; 7];
-            ring[0] = end;
-            ring[1..].copy_from_slice(&self.nbr[end as usize]);
-            for c in ring {
+            for &c in &self.nbr[end as usize] {
                 if c == NO_UNIT {
                     continue;
                 }
-                for d in std::iter::once(c).chain(self.nbr[c as usize]) {
-                    if d == NO_UNIT {
-                        continue;
-                    }
-                    let v = self.occ[d as usize];
-                    if v != NO_UNIT
-                        && self.units[v as usize].status == Status::Working
-                        && !touched.contains(&v)
-                    {
-                        touched.push(v);
-                    }
+                let v = self.occ[c as usize];
+                if v != NO_UNIT && !bonds[..n].iter().any(|b| b.0 == v) {
+                    bonds[n] = (v, t.of(self.ring(c)));
+                    n += 1;
                 }
             }
         }
-        let before: i64 = touched
-            .iter()
-            .map(|&v| i64::from(self.diff[v as usize]))
-            .sum();
-        self.occ[from as usize] = NO_UNIT;
-        self.occ[to as usize] = u;
-        let mut after = 0i64;
+        let bonds = &bonds[..n];
+        let class_of = |v: u32| {
+            bonds
+                .iter()
+                .find(|b| b.0 == v)
+                .map_or(self.class[v as usize], |b| b.1)
+        };
+        // The working units whose statement can change: those whose bonds change, and those
+        // beside a unit whose type changed.
+        let mut touched = std::mem::take(&mut self.touched);
+        touched.clear();
+        for &(v, class) in bonds {
+            if self.units[v as usize].status == Status::Working && !touched.contains(&v) {
+                touched.push(v);
+            }
+            if class == self.class[v as usize] {
+                continue;
+            }
+            let cell = if v == u {
+                to
+            } else {
+                self.units[v as usize].cell
+            };
+            for &c in &self.nbr[cell as usize] {
+                if c == NO_UNIT {
+                    continue;
+                }
+                let w = self.occ[c as usize];
+                if w != NO_UNIT
+                    && self.units[w as usize].status == Status::Working
+                    && !touched.contains(&w)
+                {
+                    touched.push(w);
+                }
+            }
+        }
+        let mut change = 0i64;
         let mut nb = [0u8; 6];
         for &v in &touched {
             let cell = if v == u {
@@ -137,18 +165,24 @@ impl Fracta {
             } else {
                 self.units[v as usize].cell
             };
-            let own = t.of(self.ring(cell));
-            let n = self.neighbour_classes(cell, &mut nb, true);
-            after += i64::from(
-                self.goal
-                    .difference(&t.dist, own, &nb[..n], self.p.priorities)
-                    .difference,
-            );
+            let mut k = 0;
+            for &c in &self.nbr[cell as usize] {
+                if c != NO_UNIT && self.occ[c as usize] != NO_UNIT {
+                    nb[k] = class_of(self.occ[c as usize]);
+                    k += 1;
+                }
+            }
+            nb[..k].sort_unstable();
+            let after = self
+                .goal
+                .difference(&t.dist, class_of(v), &nb[..k], self.p.priorities)
+                .difference;
+            change += i64::from(after) - i64::from(self.diff[v as usize]);
         }
         self.occ[to as usize] = NO_UNIT;
         self.occ[from as usize] = u;
         self.touched = touched;
-        after - before
+        change
     }
 
     /// Section 3.2.4: each active unit picks clockwise or counter-clockwise, the direction that

@@ -1,5 +1,7 @@
-//! The fewest motions a repair needs: a breadth-first search over the model's own motions,
-//! for the reproduction report to put beside the repair times.
+//! What the report measures beside the runs, on the model's own rules: the fewest motions a
+//! repair needs (a breadth-first search), how a run begins, where its steps go (a step-by-step
+//! trace), and whether a finished shape stays still; each for both readings of where the spare
+//! sits ([`Spare`]).
 
 use std::collections::BTreeSet;
 
@@ -7,9 +9,65 @@ use super::*;
 use kumiki_model::entry::envelope_role;
 use kumiki_model::limits::Limits;
 
-/// The presets the search starts from, read from this crate's files.
-const REPAIR: &str = include_str!("../presets/fracta-repair.json");
-const TRIANGLE10: &str = include_str!("../presets/fracta-triangle10.json");
+/// Where figure 5's spare sits (interpretation 15): the readings the report runs, each with the
+/// presets that hold it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spare {
+    /// In the middle of an edge, bonded to its two edge units (the default).
+    Edge,
+    /// Beside a corner, bonded to the corner and the next edge unit.
+    Corner,
+}
+
+impl Spare {
+    pub const BOTH: [Spare; 2] = [Spare::Edge, Spare::Corner];
+
+    /// The self-assembly from two lines.
+    pub fn assembly(self) -> &'static str {
+        match self {
+            Spare::Edge => "fracta-triangle10",
+            Spare::Corner => "fracta-triangle10-corner",
+        }
+    }
+
+    /// The finished triangle with its spare and a fault.
+    pub fn repair(self) -> &'static str {
+        match self {
+            Spare::Edge => "fracta-repair",
+            Spare::Corner => "fracta-repair-corner",
+        }
+    }
+
+    /// Figure 4's deadlock.
+    pub fn deadlock(self) -> &'static str {
+        match self {
+            Spare::Edge => "fracta-deadlock",
+            Spare::Corner => "fracta-deadlock-corner",
+        }
+    }
+
+    /// "in the middle of an edge", "beside a corner".
+    pub fn words(self) -> &'static str {
+        match self {
+            Spare::Edge => "in the middle of an edge",
+            Spare::Corner => "beside a corner",
+        }
+    }
+
+    fn assembly_text(self) -> &'static str {
+        match self {
+            Spare::Edge => include_str!("../presets/fracta-triangle10.json"),
+            Spare::Corner => include_str!("../presets/fracta-triangle10-corner.json"),
+        }
+    }
+
+    fn repair_text(self) -> &'static str {
+        match self {
+            Spare::Edge => include_str!("../presets/fracta-repair.json"),
+            Spare::Corner => include_str!("../presets/fracta-repair-corner.json"),
+        }
+    }
+}
 
 impl Fracta {
     /// The model of one of this crate's preset files, built the way a run builds it (within the
@@ -40,14 +98,14 @@ impl Fracta {
     }
 }
 
-/// The `fracta-repair` preset's model (run with `seed`) with the fault on `unit` applied and
+/// The repair preset's model of `spare` (run with `seed`) with the fault on `unit` applied and
 /// cut off. The finished triangle makes no draw before the fault, so this is the state the
 /// preset's run with that seed reaches in the step that cuts the unit off.
-fn after_cut_off(unit: u64, seed: u64) -> Option<Fracta> {
+fn after_cut_off(spare: Spare, unit: u64, seed: u64) -> Option<Fracta> {
     let Value::Object(fault) = json!({"kind": "fault", "unit": unit}) else {
         return None;
     };
-    let mut m = Fracta::of_preset(REPAIR, |doc| {
+    let mut m = Fracta::of_preset(spare.repair_text(), |doc| {
         doc.insert("seed".into(), json!(seed));
     })?;
     m.apply(&fault).ok()?;
@@ -55,11 +113,20 @@ fn after_cut_off(unit: u64, seed: u64) -> Option<Fracta> {
     Some(m)
 }
 
-/// What a repair waits for before its first motion.
+/// The assembly preset's model of `spare` run with `seed`, its keys changed by `set`.
+fn assembly(spare: Spare, seed: u64, set: &[(&str, Value)]) -> Option<Fracta> {
+    Fracta::of_preset(spare.assembly_text(), |doc| {
+        doc.insert("seed".into(), json!(seed));
+        for (key, value) in set {
+            doc.insert(key.to_string(), value.clone());
+        }
+    })
+}
+
+/// What a run waits for before its first motion.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FirstMotion {
-    /// The working units that, right after the cut-off, have a motion lowering the summed
-    /// difference.
+    /// The working units that, at the start, have a motion lowering the summed difference.
     pub improving: Vec<u32>,
     /// Their differences at that moment.
     pub differences: Vec<u32>,
@@ -67,7 +134,7 @@ pub struct FirstMotion {
     pub mean_difference: f64,
     /// Whether equation 3 activated one of them before or at the first motion.
     pub improving_activated: bool,
-    /// Steps from the cut-off to the step of the first motion.
+    /// Steps from the start to the step of the first motion.
     pub wait: u64,
     /// Whether every unit that made the first motion had fired by irritation.
     pub by_irritation: bool,
@@ -96,26 +163,25 @@ pub(super) fn improving_units(m: &Fracta) -> Vec<u32> {
     out
 }
 
-/// How the repair of a fault on `unit` of `fracta-repair` begins, run with the preset's seed for
-/// at most `limit` steps after the cut-off; `None` when no unit moved by then.
-pub fn first_motion_after_fault(unit: u64, limit: u64) -> Option<FirstMotion> {
-    let seed = serde_json::from_str::<Value>(REPAIR)
+/// How the repair of a fault on `unit` begins, run with the repair preset's seed for at most
+/// `limit` steps after the cut-off; `None` when no unit moved by then.
+pub fn first_motion_after_fault(spare: Spare, unit: u64, limit: u64) -> Option<FirstMotion> {
+    let seed = serde_json::from_str::<Value>(spare.repair_text())
         .ok()?
         .get("seed")?
         .as_u64()?;
-    first_motion(after_cut_off(unit, seed)?, limit)
+    first_motion(after_cut_off(spare, unit, seed)?, limit)
 }
 
-/// How the self-assembly of `fracta-triangle10` from two lines begins, within `limit` steps,
-/// with the activation threshold `g` (equation 3). Nothing is drawn at random before the first
-/// motion, so every seed begins the same way.
-pub fn first_motion_of_assembly(g: f64, limit: u64) -> Option<FirstMotion> {
-    first_motion(
-        Fracta::of_preset(TRIANGLE10, |doc| {
-            doc.insert("G".into(), json!(g));
-        })?,
-        limit,
-    )
+/// How the self-assembly from two lines begins, within `limit` steps, with the preset's keys
+/// changed by `set`. Nothing is drawn at random before the first motion is planned, so every
+/// seed begins the same way.
+pub fn first_motion_of_assembly(
+    spare: Spare,
+    set: &[(&str, Value)],
+    limit: u64,
+) -> Option<FirstMotion> {
+    first_motion(assembly(spare, 1, set)?, limit)
 }
 
 /// The units of `m` with a motion that lowers the summed difference, with their differences
@@ -132,11 +198,7 @@ fn first_motion(mut m: Fracta, limit: u64) -> Option<FirstMotion> {
             .iter()
             .any(|&(u, irritated)| !irritated && improving.contains(&u));
         if !m.plans.is_empty() {
-            let by_irritation = m.plans.iter().all(|p| {
-                m.active
-                    .iter()
-                    .any(|&(u, irritated)| u == p.unit && irritated)
-            });
+            let by_irritation = m.plans.iter().all(|p| m.irritated(p.unit));
             return Some(FirstMotion {
                 improving,
                 differences,
@@ -151,15 +213,20 @@ fn first_motion(mut m: Fracta, limit: u64) -> Option<FirstMotion> {
     None
 }
 
-/// Where the repairs of a fault on one unit spend their steps, summed over the runs that
-/// reached the triangle.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RepairTrace {
-    /// Runs that reached the triangle within the limit, and runs that did not (not counted
-    /// below).
+impl Fracta {
+    /// Whether unit `u` is active this step because its irritation fired.
+    fn irritated(&self, u: u32) -> bool {
+        self.active.iter().any(|&(a, fired)| a == u && fired)
+    }
+}
+
+/// Where runs spend their steps, summed over the runs that reached the goal.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Trace {
+    /// Runs that reached the goal within the limit, and runs that did not (not counted below).
     pub runs: u64,
     pub unfinished: u64,
-    /// Steps from the fault to the triangle.
+    /// Steps to the goal.
     pub steps: u64,
     /// Steps that began with some unit able to lower the summed difference and none of those
     /// units activated (by equation 3 or by irritation).
@@ -172,10 +239,18 @@ pub struct RepairTrace {
     pub together_worse: u64,
     /// Rolls made by units whose irritation fired (condition 5), which take any change.
     pub irritated_rolls: u64,
+    /// Runs that passed through the text's deadlock (section 3.2.5, figure 4): every movable
+    /// unit matches a statement (difference 0), so equation 3 activates none, and the goal is
+    /// not reached.
+    pub deadlocked_runs: u64,
+    /// The steps that began in such a deadlock.
+    pub deadlocked_steps: u64,
+    /// Each run's longest stretch of steps in which no unit rolled.
+    pub longest_stalls: Vec<u64>,
 }
 
-impl RepairTrace {
-    fn add(&mut self, t: &RepairTrace) {
+impl Trace {
+    fn add(&mut self, t: &Trace) {
         self.runs += t.runs;
         self.unfinished += t.unfinished;
         self.steps += t.steps;
@@ -183,11 +258,14 @@ impl RepairTrace {
         self.stuck += t.stuck;
         self.together_worse += t.together_worse;
         self.irritated_rolls += t.irritated_rolls;
+        self.deadlocked_runs += t.deadlocked_runs;
+        self.deadlocked_steps += t.deadlocked_steps;
+        self.longest_stalls.extend(&t.longest_stalls);
     }
 
     /// The sum of several traces.
-    pub fn total<'a>(traces: impl IntoIterator<Item = &'a RepairTrace>) -> RepairTrace {
-        let mut out = RepairTrace::default();
+    pub fn total<'a>(traces: impl IntoIterator<Item = &'a Trace>) -> Trace {
+        let mut out = Trace::default();
         for t in traces {
             out.add(t);
         }
@@ -203,62 +281,146 @@ fn summed_difference(m: &Fracta) -> u64 {
         .sum()
 }
 
-/// Traces the repair of a fault on `unit` of `fracta-repair`, step by step, for each of
-/// `seeds` (at most `limit` steps after the cut-off each): where the runs that reach the
-/// triangle spend their steps (see [`RepairTrace`]).
+/// Whether `m` is in the text's deadlock: not at its goal, and every working movable unit
+/// matches a statement.
+fn deadlocked(m: &Fracta) -> bool {
+    let t = types();
+    !m.completed()
+        && m.working
+            .iter()
+            .all(|&u| m.diff[u as usize] == 0 || !t.info[m.class[u as usize] as usize].movable)
+}
+
+/// Runs `m` to its goal, step by step, for at most `limit` steps, and says where the steps
+/// went (a [`Trace`] of one run, `unfinished` when it did not get there).
+fn trace_run(mut m: Fracta, limit: u64) -> Trace {
+    let mut run = Trace {
+        runs: 1,
+        ..Trace::default()
+    };
+    let (mut stall, mut longest) = (0, 0);
+    while !m.completed() && run.steps < limit {
+        let improving = improving_units(&m);
+        let before = summed_difference(&m);
+        if deadlocked(&m) {
+            run.deadlocked_steps += 1;
+        }
+        m.decide();
+        if improving.is_empty() {
+            run.stuck += 1;
+        } else if !m.active.iter().any(|a| improving.contains(&a.0)) {
+            run.held += 1;
+        }
+        let fired: Vec<(u32, u32)> = m
+            .active
+            .iter()
+            .filter(|a| a.1)
+            .map(|a| (a.0, m.units[a.0 as usize].cell))
+            .collect();
+        let moves = m.moves;
+        m.act();
+        run.steps += 1;
+        stall = if m.moves == moves { stall + 1 } else { 0 };
+        longest = longest.max(stall);
+        if m.moves >= moves + 2 && summed_difference(&m) > before {
+            run.together_worse += 1;
+        }
+        run.irritated_rolls += fired
+            .iter()
+            .filter(|&&(u, cell)| m.units[u as usize].cell != cell)
+            .count() as u64;
+    }
+    run.deadlocked_runs = u64::from(run.deadlocked_steps > 0);
+    run.longest_stalls = vec![longest];
+    if m.completed() {
+        run
+    } else {
+        Trace {
+            unfinished: 1,
+            ..Trace::default()
+        }
+    }
+}
+
+/// Traces the repair of a fault on `unit` of the repair preset, step by step, for each of
+/// `seeds` (at most `limit` steps after the cut-off each).
 pub fn trace_repairs(
+    spare: Spare,
     unit: u64,
     seeds: impl IntoIterator<Item = u64>,
     limit: u64,
-) -> Option<RepairTrace> {
-    let mut out = RepairTrace::default();
+) -> Option<Trace> {
+    let mut out = Trace::default();
     for seed in seeds {
-        let mut m = after_cut_off(unit, seed)?;
-        let mut run = RepairTrace {
-            runs: 1,
-            ..RepairTrace::default()
-        };
-        while !m.completed() && run.steps < limit {
-            let improving = improving_units(&m);
-            let before = summed_difference(&m);
-            m.decide();
-            if improving.is_empty() {
-                run.stuck += 1;
-            } else if !m.active.iter().any(|a| improving.contains(&a.0)) {
-                run.held += 1;
-            }
-            let fired: Vec<(u32, u32)> = m
-                .active
-                .iter()
-                .filter(|a| a.1)
-                .map(|a| (a.0, m.units[a.0 as usize].cell))
-                .collect();
-            let moves = m.moves;
-            m.act();
-            run.steps += 1;
-            if m.moves >= moves + 2 && summed_difference(&m) > before {
-                run.together_worse += 1;
-            }
-            run.irritated_rolls += fired
-                .iter()
-                .filter(|&&(u, cell)| m.units[u as usize].cell != cell)
-                .count() as u64;
+        out.add(&trace_run(after_cut_off(spare, unit, seed)?, limit));
+    }
+    Some(out)
+}
+
+/// Traces the self-assembly from two lines, step by step, for each of `seeds` (at most
+/// `limit` steps each), with the preset's keys changed by `set`.
+pub fn trace_assemblies(
+    spare: Spare,
+    set: &[(&str, Value)],
+    seeds: impl IntoIterator<Item = u64>,
+    limit: u64,
+) -> Option<Trace> {
+    let mut out = Trace::default();
+    for seed in seeds {
+        out.add(&trace_run(assembly(spare, seed, set)?, limit));
+    }
+    Some(out)
+}
+
+/// What finished shapes do while every unit works: the self-assemblies of `seeds` that reached
+/// the goal within `limit` steps, each run on for `after` more steps.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stillness {
+    /// Assemblies that reached the goal.
+    pub runs: u64,
+    /// Of them, those in which a unit moved after the goal was reached.
+    pub moved: u64,
+    /// Rolls made after the goal, over all runs.
+    pub moves: u64,
+    /// Runs whose irritation fired after the goal.
+    pub irritated: u64,
+}
+
+/// Runs the self-assembly of `spare` (its keys changed by `set`) for each of `seeds` until it
+/// reaches the goal (within `limit` steps), then `after` steps more with every unit working.
+pub fn stillness(
+    spare: Spare,
+    set: &[(&str, Value)],
+    seeds: impl IntoIterator<Item = u64>,
+    limit: u64,
+    after: u64,
+) -> Option<Stillness> {
+    let mut out = Stillness::default();
+    for seed in seeds {
+        let mut m = assembly(spare, seed, set)?;
+        while !m.completed() && m.steps < limit {
+            m.step();
         }
-        if m.completed() {
-            out.add(&run);
-        } else {
-            out.unfinished += 1;
+        if !m.completed() {
+            continue;
         }
+        let (moves, irritations) = (m.moves, m.irritations);
+        for _ in 0..after {
+            m.step();
+        }
+        out.runs += 1;
+        out.moved += u64::from(m.moves > moves);
+        out.moves += m.moves - moves;
+        out.irritated += u64::from(m.irritations > irritations);
     }
     Some(out)
 }
 
 /// The fewest motions (one unit's motion at a time, every rule of the model applied) that take
-/// the 10 units left after a fault on `unit` of the `fracta-repair` preset to the triangle,
-/// searched breadth first up to `limit` motions; `None` if more are needed or the preset is
-/// missing.
-pub fn fewest_repair_motions(unit: u64, limit: usize) -> Option<usize> {
-    let m = after_cut_off(unit, 1)?;
+/// the 10 units left after a fault on `unit` of the repair preset to the triangle, searched
+/// breadth first up to `limit` motions; `None` if more are needed or the preset is missing.
+pub fn fewest_repair_motions(spare: Spare, unit: u64, limit: usize) -> Option<usize> {
+    let m = after_cut_off(spare, unit, 1)?;
     let mut seen = BTreeSet::from([m.configuration()]);
     let mut layer = vec![m];
     for depth in 0..=limit {

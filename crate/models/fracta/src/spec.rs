@@ -88,7 +88,7 @@ pub mod defaults {
         0.1
     }
     pub fn l() -> f64 {
-        0.05
+        0.3
     }
     pub fn g() -> f64 {
         1.0

@@ -4,7 +4,7 @@
 //! arithmetic they and the 3-D renderers share is in `vector.rs`.
 
 use crate::geometry::{Bounds, Grid};
-use kumiki_core::lattice::LatticeKind;
+use kumiki_model::lattice::LatticeKind;
 
 mod orbit;
 mod vector;

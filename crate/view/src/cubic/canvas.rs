@@ -211,7 +211,7 @@ impl CubicCanvas {
         let strokes = [edge(ghost), edge(reach), edge(add)];
         let rgb = |c: [u8; 4]| [c[0], c[1], c[2]].map(f64::from);
 
-        let cells = scene.frame.cells;
+        let cells = scene.state.cells;
         let mut faces = Faces {
             pr: &pr,
             cells,
@@ -253,7 +253,7 @@ impl CubicCanvas {
         if let Some(lamp) = m.lamp.filter(|_| behind) {
             let _ = draw_lamp(ctx, lamp, &pr);
         }
-        kumiki_core::sort::sort_by(&mut faces, |a, b| b.depth.total_cmp(&a.depth));
+        kumiki_model::sort::sort_by(&mut faces, |a, b| b.depth.total_cmp(&a.depth));
         ctx.set_line_width(1.0);
         ctx.set_line_join("round");
         for f in &faces {
@@ -437,7 +437,7 @@ fn draw_outlines(ctx: &Ctx, scene: &SceneRef, m: &CubicModel, pr: &Projector) {
         ctx.stroke();
     };
     let legend = &scene.layout.events;
-    for e in scene.frame.events {
+    for e in scene.state.events {
         let color = legend.iter().rev().find(|l| l.code == e.kind);
         wire(e.cell, color.map_or("#ff4d4f", |l| &l.color), 0.52);
     }

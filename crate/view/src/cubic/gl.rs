@@ -357,7 +357,7 @@ impl CubicGl {
         let buf = &mut self.scratch;
         buf.clear();
         if let Some(c) = scene.marks.cursor {
-            if c.kind == CursorKind::Add && scene.frame.cells.get(c.cell as usize) == Some(&0) {
+            if c.kind == CursorKind::Add && scene.state.cells.get(c.cell as usize) == Some(&0) {
                 put(
                     buf,
                     centre(m.coord(c.cell)),
@@ -375,7 +375,7 @@ impl CubicGl {
         let m = self.cache.model();
         let mut groups: Vec<(Vec<u32>, [f64; 4], f64)> = Vec::new();
         let mut kinds: Vec<(u8, Vec<u32>)> = Vec::new();
-        for e in scene.frame.events {
+        for e in scene.state.events {
             match kinds.iter_mut().find(|(k, _)| *k == e.kind) {
                 Some((_, cells)) => cells.push(e.cell),
                 None => kinds.push((e.kind, vec![e.cell])),

@@ -5,8 +5,8 @@ use crate::camera::Camera2D;
 use crate::geometry::{cell_centre, hex_corners, HEX_RADIUS};
 use crate::palette::{css, heat, legend_table, Rgba};
 use crate::scene::SceneRef;
-use kumiki_core::lattice::LatticeKind;
-use kumiki_core::models::Layout;
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::Layout;
 use std::f64::consts::TAU;
 use wasm_bindgen::{Clamped, JsCast, JsValue};
 use web_sys::{ImageData, OffscreenCanvas, OffscreenCanvasRenderingContext2d as Ctx};
@@ -59,7 +59,7 @@ impl PlanarCanvas {
     }
 
     fn overlay_color(scene: &SceneRef, i: usize) -> Option<Rgba> {
-        let o = scene.frame.overlay?;
+        let o = scene.state.overlay?;
         let v = f64::from(*o.data.get(i)?);
         if !v.is_finite() {
             return None;
@@ -78,7 +78,7 @@ impl PlanarCanvas {
         let Some((canvas, image_ctx)) = &self.image else {
             return Ok(());
         };
-        let cells = scene.frame.cells;
+        let cells = scene.state.cells;
         if self.pixels.len() != cells.len() * 4 {
             return Ok(());
         }
@@ -112,7 +112,7 @@ impl PlanarCanvas {
     }
 
     fn draw_hex(&self, ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
-        let cells = scene.frame.cells;
+        let cells = scene.state.cells;
         let [w, h, _] = scene.grid.dims;
         // The cells in view, one more row and column on the far sides: a hexagon reaches past
         // its cell's box.
@@ -149,7 +149,7 @@ impl PlanarCanvas {
 
     fn draw_agents(&self, ctx: &Ctx, scene: &SceneRef, cam: &Camera2D) {
         let radius = (cam.scale * 0.34).max(1.2);
-        for a in scene.frame.agents {
+        for a in scene.state.agents {
             let [wx, wy] = scene.grid.centre(a.cell as usize);
             let [sx, sy] = cam.to_screen(wx, wy);
             let colour = self.agent_css[usize::from(a.kind)]

@@ -8,9 +8,9 @@
 use crate::camera::Camera2D;
 use crate::gl::{attribute, static_buffer, texture, upload_table, Program};
 use crate::palette::{heat_table, legend_table};
-use crate::scene::{Frame, SceneRef};
-use kumiki_core::lattice::LatticeKind;
-use kumiki_core::models::Layout;
+use crate::scene::{SceneRef, State};
+use kumiki_model::lattice::LatticeKind;
+use kumiki_model::model::Layout;
 use wasm_bindgen::JsValue;
 use web_sys::{WebGl2RenderingContext as Gl, WebGlBuffer, WebGlTexture, WebGlVertexArrayObject};
 
@@ -321,9 +321,9 @@ impl PlanarGl {
 
     /// Uploads the frame: the rows of codes that changed since this texture set last held a
     /// frame, the overlay, and the agents; nothing when this revision already was.
-    pub fn upload(&mut self, gl: &Gl, frame: &Frame, revision: u64) -> Result<(), JsValue> {
+    pub fn upload(&mut self, gl: &Gl, state: &State, revision: u64) -> Result<(), JsValue> {
         let [w, h] = self.dims;
-        if frame.cells.len() != (w * h) as usize || self.uploaded == Some(revision) {
+        if state.cells.len() != (w * h) as usize || self.uploaded == Some(revision) {
             return Ok(());
         }
         self.uploaded = Some(revision);
@@ -333,7 +333,7 @@ impl PlanarGl {
         let row = w as usize;
         let shadow = &mut self.shadow;
         let changed: Vec<usize> = (0..h as usize)
-            .filter(|y| frame.cells[y * row..(y + 1) * row] != shadow[y * row..(y + 1) * row])
+            .filter(|y| state.cells[y * row..(y + 1) * row] != shadow[y * row..(y + 1) * row])
             .collect();
         // This set missed what the other one took at the last upload.
         let missed = std::mem::take(&mut self.last_changed);
@@ -349,15 +349,15 @@ impl PlanarGl {
                 (last + 1 - first) as i32,
                 Gl::RED_INTEGER,
                 Gl::UNSIGNED_BYTE,
-                Some(&frame.cells[band]),
+                Some(&state.cells[band]),
             )?;
         }
         for &y in &changed {
             let band = y * row..(y + 1) * row;
-            shadow[band.clone()].copy_from_slice(&frame.cells[band]);
+            shadow[band.clone()].copy_from_slice(&state.cells[band]);
         }
         self.last_changed = changed;
-        if let Some(o) = frame.overlay.filter(|o| o.data.len() == frame.cells.len()) {
+        if let Some(o) = state.overlay.filter(|o| o.data.len() == state.cells.len()) {
             if !set.field_sized {
                 size_field(gl, &set.field, w, h)?;
                 set.field_sized = true;
@@ -378,8 +378,8 @@ impl PlanarGl {
             )?;
         }
         self.agent_data.clear();
-        let cells = frame.cells.len() as u32;
-        for a in frame.agents.iter().filter(|a| a.cell < cells) {
+        let cells = state.cells.len() as u32;
+        for a in state.agents.iter().filter(|a| a.cell < cells) {
             self.agent_data.extend([a.cell, u32::from(a.kind)]);
         }
         gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&self.agent_buffer));
@@ -392,8 +392,8 @@ impl PlanarGl {
     /// Draws the lattice and its agents from what was last uploaded.
     pub fn draw(&self, gl: &Gl, scene: &SceneRef, cam: &Camera2D, dpr: f64, viewport: [i32; 2]) {
         let [w, h] = self.dims;
-        let frame = &scene.frame;
-        if frame.cells.len() != (w * h) as usize {
+        let state = &scene.state;
+        if state.cells.len() != (w * h) as usize {
             return;
         }
         gl.disable(Gl::DEPTH_TEST);
@@ -430,7 +430,7 @@ impl PlanarGl {
             hex,
         };
         view.set(gl, p);
-        let overlay = frame.overlay.filter(|o| o.data.len() == frame.cells.len());
+        let overlay = state.overlay.filter(|o| o.data.len() == state.cells.len());
         gl.uniform1i(
             p.uniform(gl, "u_overlay").as_ref(),
             i32::from(overlay.is_some()),

@@ -276,9 +276,9 @@ fn bridge_world(reserves: usize, depth: usize) -> String {
         r.push('\n');
         r
     };
-    let mut w = row(0, '#') + &row(reserves, '#') + &row(20, '#');
+    let mut w = row(0, '#') + row(reserves, '#').as_str() + row(20, '#').as_str();
     for _ in 0..depth {
-        w += &row(20, '=');
+        w += row(20, '=').as_str();
     }
     w
 }
@@ -376,4 +376,41 @@ fn the_reinforcement_count_is_the_cycles_in_which_a_leader_1_moved() {
         plain.totals.reinforcements, 0,
         "no step 7 without adaptation"
     );
+}
+
+#[test]
+fn step_7s_rise_would_leave_the_tier_hanging_in_every_bridge() {
+    // Section 3.4's step 7 reads "the vertical line of itself drives to downward and the
+    // vertical line of its right-side neighbor drives to upward". In every leader-1 election
+    // of the chobie-bridge experiment's 45 adaptive runs, the right neighbour is the single
+    // tier over the void: rising, with the leader's column or alone, it would leave the tier
+    // right of it connected to nothing, while the leader's own column can go down
+    // (interpretation 13). Read strictly, both commands or none, step 7 would never move.
+    let mut elections = 0;
+    for reserves in [1, 3, 5, 7, 9] {
+        for load in [0.0, 10.0, 20.0] {
+            for goal in [13, 16, 19] {
+                let mut m = model(
+                    &bridge_world(reserves, 2),
+                    json!({"task": "bridge", "goal": goal, "max_steps": 120, "tip_load": load}),
+                );
+                while !m.completed() && m.steps < 120 {
+                    let over: Vec<bool> = m.stress.iter().map(|&s| m.overloaded(s)).collect();
+                    if over.iter().any(|&o| o) {
+                        let leaders = election::adaptation(&m.body, &over, &mut Comm::default());
+                        for e in leaders.iter().filter(|e| e.kind == Kind::Leader1) {
+                            let (lines, _) = e.command(&m.body, Mode::Adaptation);
+                            assert_eq!(lines.len(), 2);
+                            assert_eq!(m.body.check(&lines), Err(Refusal::Disconnected));
+                            assert_eq!(m.body.check(&lines[1..]), Err(Refusal::Disconnected));
+                            assert!(m.body.check(&lines[..1]).is_ok());
+                            elections += 1;
+                        }
+                    }
+                    step_checked(&mut m);
+                }
+            }
+        }
+    }
+    assert_eq!(elections, 166);
 }

@@ -21,9 +21,24 @@ fn the_triangles_statements_are_the_papers() {
         .map(Statement::text)
         .collect();
     assert_eq!(first, texts);
-    // The spare beside a corner gives the second priority: derived, not written by hand.
+    // The spare gives the second priority, derived, not written by hand: in the middle of an
+    // edge (the same statements for each of the three edges) and beside a corner.
+    for edge in [
+        ". . # .\n . # # #\n. # # #\n # # # #\n",
+        ". . # .\n # # # .\n. # # #\n # # # #\n",
+        ". . # .\n . # # .\n. # # #\n # # # #\n. . # .\n",
+    ] {
+        let spare = shape::parse_hex(edge).unwrap();
+        assert_eq!(derive(&[tri.clone(), spare]).unwrap().text(), g.text());
+    }
+    let corner = presets::scenario("fracta-triangle10-corner").unwrap();
     let spare = shape::parse_hex(". # # .\n . # # .\n. # # #\n # # # #\n").unwrap();
-    assert_eq!(derive(&[tri, spare]).unwrap().text(), g.text());
+    assert_eq!(
+        derive(&[tri, spare]).unwrap().text(),
+        Goal::parse(corner.body()["goal"].as_str().unwrap())
+            .unwrap()
+            .text()
+    );
 }
 
 #[test]
@@ -144,8 +159,16 @@ fn a_completed_goal_has_zero_difference_and_stays_still() {
     for (start, goal) in [
         (TRIANGLE, TRIANGLE_GOAL),
         (
-            ". # # .\n . # # .\n. # # #\n # # # #\n",
+            ". . # .\n . # # #\n. # # #\n # # # #\n",
             presets::scenario("fracta-triangle10").unwrap().body()["goal"]
+                .as_str()
+                .unwrap(),
+        ),
+        (
+            ". # # .\n . # # .\n. # # #\n # # # #\n",
+            presets::scenario("fracta-triangle10-corner")
+                .unwrap()
+                .body()["goal"]
                 .as_str()
                 .unwrap(),
         ),

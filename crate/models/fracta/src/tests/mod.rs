@@ -10,6 +10,7 @@ use kumiki_core::scenario::Scenario;
 use kumiki_core::{models, presets};
 use kumiki_model::lattice::Coord;
 use proptest::prelude::*;
+use search::Spare;
 
 impl Fracta {
     /// The model of a scenario, built the way a run builds it. Its keys are read again into
@@ -97,6 +98,7 @@ fn check_invariants(m: &Fracta) {
     );
 }
 
+mod fixed_points;
 mod goals;
 mod holes;
 mod motions;

@@ -43,22 +43,23 @@ fn a_fault_is_cut_off_and_the_triangle_repaired() {
     assert!(m.completed());
     let fault = s.disturbances[0].clone();
     assert_eq!(fault.at, 10);
+    let u = fault.action["unit"].as_u64().unwrap() as usize;
     for _ in 0..10 {
         m.step();
     }
     assert_eq!(m.moves, 0);
     m.apply(&fault.action).unwrap();
     assert!(!m.completed(), "a faulty unit is pending");
-    assert_eq!(m.units[3].status, Status::Faulty);
-    assert_eq!(m.cells()[m.units[3].cell as usize], code::FAULTY);
+    assert_eq!(m.units[u].status, Status::Faulty);
+    assert_eq!(m.cells()[m.units[u].cell as usize], code::FAULTY);
     m.step();
-    assert_eq!(m.units[3].status, Status::CutOff);
+    assert_eq!(m.units[u].status, Status::CutOff);
     assert_eq!(m.working.len(), 10);
     assert_eq!(m.cut_off, 1);
     assert!(m
         .events()
         .iter()
-        .any(|e| e.kind == event::CUT_OFF && e.cell == m.units[3].cell));
+        .any(|e| e.kind == event::CUT_OFF && e.cell == m.units[u].cell));
     check_invariants(&m);
     while !m.completed() && m.steps < 5000 {
         m.step();

@@ -7,7 +7,7 @@ use crate::camera::{norm, V3};
 use crate::geometry::Grid;
 use crate::palette::{heat_table, legend_table, Rgba};
 use crate::scene::{CursorKind, RenderStats, SceneRef};
-use kumiki_core::lattice::LatticeKind;
+use kumiki_model::lattice::LatticeKind;
 
 /// Colour of a unit under the pointer: lightened this far toward white.
 const HOVER_LIFT: f64 = 0.35;
@@ -113,12 +113,12 @@ impl CubicModel {
         let dims = scene.grid.dims;
         let [w, h, d] = dims.map(|v| v as usize);
         let grid = scene.grid;
-        let cells = scene.frame.cells;
-        let world = scene.frame.world;
+        let cells = scene.state.cells;
+        let world = scene.state.world;
         let marks = scene.marks;
         let palette = legend_table(&scene.layout.cells);
         let heat = heat_table();
-        let overlay = scene.frame.overlay;
+        let overlay = scene.state.overlay;
         let span = overlay.map_or(1.0, |o| (f64::from(o.max) - f64::from(o.min)).max(1e-9));
         let hover = marks.hover;
         let removing = marks
@@ -198,7 +198,7 @@ impl CubicModel {
 
         // Bonds, from the model's bond masks: each unit with its +x, +y and +z neighbours (bits
         // 0, 2 and 4 of the mask, the lattice's direction order).
-        let masks = scene.frame.bonds;
+        let masks = scene.state.bonds;
         if !masks.is_empty() && marks.bonds {
             let stride = [1, w, layer];
             for (&cell, &c) in m.unit_cell.iter().zip(&m.unit_pos) {

@@ -2,8 +2,8 @@
 
 use super::*;
 use crate::camera::{dot, sub, Camera, Camera3D};
-use crate::scene::{Cursor, Frame, Marks, Overlay};
-use kumiki_core::models::{Layout, LegendEntry, Scene};
+use crate::scene::{Cursor, Marks, Overlay, State};
+use kumiki_model::model::{Layout, LegendEntry, Scene};
 
 fn layout(dims: [u32; 3]) -> Layout {
     Layout {
@@ -65,7 +65,7 @@ impl Fixture {
         SceneRef {
             layout: &self.layout,
             grid: Grid::new(LatticeKind::Cubic, self.layout.dims),
-            frame: Frame {
+            state: State {
                 cells: &self.cells,
                 agents: &[],
                 events: &[],
