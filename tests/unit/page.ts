@@ -15,7 +15,7 @@ import { Tabs } from '../../web/page/tabs';
 import * as wasm from '../../web/pkg/kumiki_wasm.js';
 import type { View } from '../../web/render/view';
 import type { SimClient, SimEvents } from '../../web/sim/client';
-import type { Proposed } from '../../web/sim/protocol';
+import type { ClickState, Proposed } from '../../web/sim/protocol';
 import { Banner } from '../../web/widgets/banner';
 
 const root = (path: string) => resolve(__dirname, '../..', path);
@@ -133,6 +133,30 @@ class Worker {
 
   async goalProblem(goal: string, metrics: string[]): Promise<string | null> {
     return this.draft.goal_problem(goal, metrics) ?? null;
+  }
+
+  async clicks(tools: { kind: string; label: string }[]): Promise<ClickState[]> {
+    this.sent.push(`clicks ${tools.map((t) => t.kind).join(',')}`);
+    await later();
+    return tools.map((t) => ({ problem: this.draft.click_problem(t.kind, t.label) ?? null, left: this.draft.clicks_left(t.kind) ?? null }));
+  }
+
+  /** A click tool's action, applied now and recorded in the scenario in view, as the worker does. */
+  apply(action: Record<string, unknown>) {
+    this.sent.push(`apply ${JSON.stringify(action)}`);
+    void later().then(() => {
+      const sim = this.sim;
+      if (!sim) return;
+      try {
+        sim.apply(JSON.stringify(action));
+      } catch (e) {
+        this.on().error(e instanceof Error ? e.message : String(e), 'apply');
+        return;
+      }
+      this.draft.ran(sim);
+      this.on().scenario(sim.scenario_json(), this.draft.comparison() as Comparison);
+      this.frame();
+    });
   }
 
   step(count: number) {

@@ -5,7 +5,7 @@ import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
 import type { ScenarioOwner } from '../page/session';
 import type { Drawn, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
-import type { CameraMove, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
+import type { CameraMove, ClickState, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
 import { type Progress, type Recorded, type RecordSettings, Recordings } from './record';
 
 export interface SimEvents {
@@ -335,6 +335,10 @@ export class SimClient implements ScenarioOwner {
   }
   goalProblem(goal: string, metrics: string[]): Promise<string | null> {
     return this.ask((id) => ({ type: 'goal-problem', id, goal, metrics })) as Promise<string | null>;
+  }
+  /** Whether the exercise in view lets each of `tools` (its action's kind and its label) be clicked. */
+  clicks(tools: { kind: string; label: string }[]): Promise<ClickState[]> {
+    return this.ask((id) => ({ type: 'clicks', id, tools })) as Promise<ClickState[]>;
   }
   play() {
     if (this.followerAlone) this.follower?.play();

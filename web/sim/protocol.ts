@@ -33,6 +33,14 @@ export interface Proposed {
   text: string | null;
 }
 
+/** What the exercise in view says of one click tool (its Draft's `click_problem` and `clicks_left`). */
+export interface ClickState {
+  /** Why a click of it may not be made, in words to show where the click is made; null when it may. */
+  problem: string | null;
+  /** How many more of its kind the exercise lets a student add; null when no exercise counts them. */
+  left: number | null;
+}
+
 export type ToWorker =
   /** The wasm module the page compiled: the worker starts with it, without compiling its own. */
   | { type: 'module'; module: WebAssembly.Module }
@@ -52,6 +60,8 @@ export type ToWorker =
   | { type: 'link'; id: number; name: string | null }
   /** What is wrong with an exercise goal for the scenario in view, as an 'answer' (null: nothing). */
   | { type: 'goal-problem'; id: number; goal: string; metrics: string[] }
+  /** Whether the exercise in view lets each click tool be used, as an 'answer': a `ClickState` each. */
+  | { type: 'clicks'; id: number; tools: { kind: string; label: string }[] }
   | { type: 'play' }
   | { type: 'pause' }
   | { type: 'step'; count: number }
