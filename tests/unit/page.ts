@@ -5,7 +5,7 @@
 // its frames come back. Only the drawing is left out: the view is a stand-in that keeps its marks.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import type { Comparison, Frame, Proposal } from '../../web/contract.gen';
+import type { Comparison, Frame, Proposal, Verdict } from '../../web/contract.gen';
 import type { Feature, PageContext, PageEvents } from '../../web/page/context';
 import { Events } from '../../web/page/events';
 import { Session } from '../../web/page/session';
@@ -129,6 +129,21 @@ class Worker {
 
   async link(name?: string): Promise<string> {
     return this.draft.link(name);
+  }
+
+  async handin(name: string, record: Record<string, unknown>): Promise<string> {
+    this.sent.push(`handin ${name}`);
+    await later();
+    return this.draft.handin(name, JSON.stringify(record));
+  }
+
+  /** The exercise's verdict on the run as it stands, as the worker's 'check' answers it. */
+  check() {
+    void later().then(() => {
+      const sim = this.sim;
+      const verdict = sim?.check_goal() as Verdict | undefined;
+      if (sim && verdict) this.on().goal(verdict.met, verdict.because, sim.steps(), verdict.credit ?? []);
+    });
   }
 
   async goalProblem(goal: string, metrics: string[]): Promise<string | null> {

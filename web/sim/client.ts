@@ -1,7 +1,7 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable. The worker holds the scenario in view (its
 // Draft) beside the run: this client is the session's way to it (web/page/session.ts).
-import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
+import type { Comparison, Credit, Facts, Frame, Layout } from '../contract.gen';
 import type { ScenarioOwner } from '../page/session';
 import type { Drawn, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
@@ -18,7 +18,7 @@ export interface SimEvents {
   error(message: string, context: 'load' | 'apply' | 'step'): void;
   panic(message: string): void;
   /** The exercise's goal judged on the run: when it ends, or when asked with `check`. */
-  goal(met: boolean, because: string, steps: number): void;
+  goal(met: boolean, because: string, steps: number, credit: Credit[]): void;
   /** The worker has not answered for `ms` milliseconds (`ms` is 0 once it answers again). */
   stalled(ms: number): void;
   /** The worker's view started drawing with this renderer. */
@@ -211,7 +211,7 @@ export class SimClient implements ScenarioOwner {
       case 'ready':
         return;
       case 'goal':
-        this.on.goal(msg.met, msg.because, msg.steps);
+        this.on.goal(msg.met, msg.because, msg.steps, msg.credit);
         return;
       case 'pong':
         this.unanswered = null;
@@ -331,6 +331,14 @@ export class SimClient implements ScenarioOwner {
       if (typeof value === 'string') return value;
       const problem = value as { error?: string } | null;
       throw new Error(problem?.error ?? 'the simulation stopped before it made the link');
+    });
+  }
+  /** The hand-in link of the exercise in view, named `name`, with its record (when, checks, hints, the answer); throws why not. */
+  handin(name: string, record: { made: string; checks: number; hints: number; answer?: string }): Promise<string> {
+    return this.ask((id) => ({ type: 'handin', id, name, record: JSON.stringify(record) })).then((value) => {
+      if (typeof value === 'string') return value;
+      const problem = value as { error?: string } | null;
+      throw new Error(problem?.error ?? 'the simulation stopped before it made the hand-in');
     });
   }
   goalProblem(goal: string, metrics: string[]): Promise<string | null> {

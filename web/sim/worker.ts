@@ -127,6 +127,16 @@ function handle(msg: ToWorker) {
       post({ type: 'answer', id: msg.id, value });
       return;
     }
+    case 'handin': {
+      let value: unknown;
+      try {
+        value = needDraft().handin(msg.name, msg.record);
+      } catch (e) {
+        value = { error: e instanceof Error ? e.message : String(e) };
+      }
+      post({ type: 'answer', id: msg.id, value });
+      return;
+    }
     case 'goal-problem':
       post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
       return;
