@@ -66,6 +66,8 @@ export function setupStudentPanel(page: PageContext) {
   function renderExercise(exercise: Exercise | undefined) {
     const panel = byId('exercise');
     panel.hidden = !exercise;
+    // The page's layout keeps the run's controls beside the exercise on a phone (static/style.css).
+    document.body.classList.toggle('exercise-open', Boolean(exercise));
     if (!exercise) return;
     const key = JSON.stringify(exercise);
     if (key !== exerciseShown) {
