@@ -326,19 +326,12 @@ export class SimClient implements ScenarioOwner {
     this.last = null;
     this.send({ type: 'reset' });
   }
-  link(name?: string): Promise<string> {
-    return this.ask((id) => ({ type: 'link', id, name: name ?? null })).then((value) => {
+  /** The share-link payload of the scenario in view; named `name` with a `record` (when, checks, hints, the answer), its hand-in link. */
+  link(name?: string, record?: { made: string; checks: number; hints: number; answer?: string }): Promise<string> {
+    const handin = record && JSON.stringify(record);
+    return this.ask((id) => (handin ? { type: 'handin', id, name: name ?? '', record: handin } : { type: 'link', id, name: name ?? null })).then((value) => {
       if (typeof value === 'string') return value;
-      const problem = value as { error?: string } | null;
-      throw new Error(problem?.error ?? 'the simulation stopped before it made the link');
-    });
-  }
-  /** The hand-in link of the exercise in view, named `name`, with its record (when, checks, hints, the answer); throws why not. */
-  handin(name: string, record: { made: string; checks: number; hints: number; answer?: string }): Promise<string> {
-    return this.ask((id) => ({ type: 'handin', id, name, record: JSON.stringify(record) })).then((value) => {
-      if (typeof value === 'string') return value;
-      const problem = value as { error?: string } | null;
-      throw new Error(problem?.error ?? 'the simulation stopped before it made the hand-in');
+      throw new Error((value as { error?: string } | null)?.error ?? 'the simulation stopped before it made the link');
     });
   }
   goalProblem(goal: string, metrics: string[]): Promise<string | null> {

@@ -111,7 +111,7 @@ export function setupStudentPanel(page: PageContext) {
     const out = byId('exercise-handin-out');
     try {
       const record = handinRecord(new Date(), checks, hintsShown, answer);
-      const url = `${location.origin}${location.pathname}#${await sim.handin(student, record)}`;
+      const url = `${location.origin}${location.pathname}#${await sim.link(student, record)}`;
       out.textContent = url;
       events.emit('handin', { link: url, name: student });
       await navigator.clipboard?.writeText(url).then(
