@@ -246,6 +246,9 @@ describe('the Grade view', () => {
         /^Graded by “How many robots build the L quickly\?”, which 4 of the 4 hand-ins with an exercise carry \(none was given\)\. It asks: Why do more robots not always help\?/,
       );
       assert.equal(await page.textContent('#grade-status'), '5 hand-ins: 1 met, 3 not met (1 over budget), 1 could not be graded.');
+      // The export is the CSV kumiki check writes for the same file, byte for byte.
+      const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-export')]);
+      assert.equal(readFileSync(await download.path(), 'utf8'), kumiki(['check', '--file', file, '--format', 'csv']), `${file}: the export`);
     }
     assert.deepEqual(await audit(page), [], 'axe, with the graded table');
 
