@@ -5,7 +5,7 @@
 // paces the run; it never enters the model.
 import type { Sim, Viewer } from '../pkg/kumiki_wasm.js';
 import { panic_message } from '../pkg/kumiki_wasm.js';
-import type { Check, Frame } from '../contract.gen';
+import type { Frame, Verdict } from '../contract.gen';
 import type { Drawn, WorkerTiming } from '../types';
 import type { RenderStats } from '../view.gen';
 import type { FromWorker } from './protocol';
@@ -229,8 +229,8 @@ export function stepped() {
 
 /** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
 export function judge(s: Sim) {
-  const result = guard('step', () => s.check_goal() as Check | undefined);
-  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps() });
+  const result = guard('step', () => s.check_goal() as Verdict | undefined);
+  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps(), credit: result.credit ?? [] });
 }
 
 export function setPlaying(on: boolean) {

@@ -24,7 +24,7 @@ import {
   touched,
   untold,
 } from './pace';
-import type { Proposed, ToWorker } from './protocol';
+import type { ClickState, Proposed, ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -127,9 +127,25 @@ function handle(msg: ToWorker) {
       post({ type: 'answer', id: msg.id, value });
       return;
     }
+    case 'handin': {
+      let value: unknown;
+      try {
+        value = needDraft().handin(msg.name, msg.record);
+      } catch (e) {
+        value = { error: e instanceof Error ? e.message : String(e) };
+      }
+      post({ type: 'answer', id: msg.id, value });
+      return;
+    }
     case 'goal-problem':
       post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
       return;
+    case 'clicks': {
+      const d = needDraft();
+      const value: ClickState[] = msg.tools.map((t) => ({ problem: d.click_problem(t.kind, t.label) ?? null, left: d.clicks_left(t.kind) ?? null }));
+      post({ type: 'answer', id: msg.id, value });
+      return;
+    }
     case 'play':
       return play();
     case 'pause':
