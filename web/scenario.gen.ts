@@ -302,6 +302,8 @@ export interface Cubes3dScenario {
   random_stays?: boolean;
   /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
   rules?: {
+    /** 3-D units: the selection rule (step iii, equations 7 and 8). Each unit asked in a control step (in a random order, until one chooses to move, or `movers` with footnote 2) chooses among its options: "no motion" and its reachable positions, each with the difference D_i it would have there (equation 4), after the light's priority on positions. The paper's three rules are the built-in, the one the scenario's `selection` names: the MRF's stochastic relaxation (option i with probability exp(-D_i / T) / Z), steepest descent (the least difference, ties at random) and random selection (every option alike). The script defines fn select(input), which answers the index of the chosen option in options (an integer from 0); choosing the option with stay true is "no motion". null: the paper's rule. */
+    select?: string | null;
   };
   /** The seed of every random choice of the run. */
   seed: number;
@@ -445,6 +447,10 @@ export interface FractaScenario {
   priorities: Priorities;
   /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
   rules?: {
+    /** Fracta: which units move (equation 3 and condition 5). Each working movable unit, in every step's diffusion phase (after equation 2 and the irritation of equations 4 and 5), decides whether it is activated to roll. An active unit then plans a roll (the slot roll, or the paper's choice of direction). Units that are not movable never move. The script defines fn activation(input), which answers true (the unit is active and plans a roll) or false. null: the paper's rule. */
+    activation?: string | null;
+    /** Fracta: which way an active unit rolls (section 3.2.4). Each active unit (the slot activation) that has a legal roll chooses one, or stays, in every step's planning phase. The rolls chosen are then carried out one at a time in a random order, one that the earlier ones made impossible cancelled (a conflict). The paper's rule: a unit activated by equation 3 moves only when a roll lowers the difference around it (section 3.2 (iii): "it moves towards the direction to make it smaller"), one whose irritation fired moves whatever the change; with two rolls, the first with probability 1 / (1 + exp((change_0 - change_1) / T)). The script defines fn roll(input), which answers () (it stays) or the index of the chosen roll in options (0 or 1). null: the paper's rule. */
+    roll?: string | null;
   };
   /** The seed of every random choice of the run. */
   seed: number;

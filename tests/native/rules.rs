@@ -20,6 +20,64 @@ fn scripted_scenario(preset: &str, slot: &str, source: &str) -> Scenario {
         .unwrap()
 }
 
+/// The equivalence runs are held to their first steps, as the golden hashes are: a script
+/// asked of hundreds of units a step is slow in a debug build. Every CHOBIE II preset ends
+/// sooner.
+const MAX_STEPS: u64 = 300;
+
+/// Settings a slot's paper script is also held to, beside its model's presets as they are: the
+/// two selection rules of cubes3d that no preset uses (every one uses the MRF), with "no motion"
+/// among random selection's options and without it (model version 4 and before), on one target
+/// and two, with the light's priority on positions and on units.
+const VARIANTS: [(&str, &str); 7] = [
+    ("cubes-cube8-zigzag", r#"{"selection": "random"}"#),
+    (
+        "cubes-cube8-zigzag",
+        r#"{"selection": "random", "random_stays": false}"#,
+    ),
+    ("cubes-cube8-zigzag", r#"{"selection": "steepest"}"#),
+    ("cubes-box12-ladder", r#"{"selection": "steepest"}"#),
+    ("cubes-box16-movers", r#"{"selection": "random"}"#),
+    ("cubes-light", r#"{"selection": "steepest"}"#),
+    (
+        "cubes-light",
+        r#"{"selection": "random", "priority": "units"}"#,
+    ),
+];
+
+/// Every (preset, settings) of `entry`'s model whose run asks `slot`: its presets, then its
+/// variants, each held to [`MAX_STEPS`].
+fn cases(model: &str, slot: &str) -> Vec<(&'static str, Value)> {
+    let held = |preset: &str, mut set: Value| {
+        let max = presets::scenario(preset).unwrap().max_steps;
+        set["max_steps"] = json!(max.min(MAX_STEPS));
+        set
+    };
+    let plain = presets::names().map(|p| (p, held(p, json!({}))));
+    let varied = VARIANTS
+        .iter()
+        .map(|&(p, set)| (p, held(p, serde_json::from_str(set).unwrap())));
+    plain
+        .chain(varied)
+        .filter(|(p, _)| presets::scenario(p).unwrap().model() == model)
+        .filter(|(p, set)| asks(p, set, slot))
+        .collect()
+}
+
+/// The scenario `preset` with the settings `set`.
+fn with_settings(preset: &str, set: &Value) -> Scenario {
+    let overrides: Vec<(String, Value)> = set
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(k, v)| (k.clone(), v.clone()))
+        .collect();
+    presets::scenario(preset)
+        .unwrap()
+        .with_overrides(&overrides)
+        .unwrap()
+}
+
 /// Steps both runs together, comparing their state hashes after every step; the steps taken.
 fn same_hashes_step_by_step(mut builtin: Run, mut script: Run, what: &str) -> u64 {
     assert_eq!(
@@ -49,14 +107,14 @@ fn same_hashes_step_by_step(mut builtin: Run, mut script: Run, what: &str) -> u6
     }
 }
 
-/// Whether `preset` asks slot `slot` in its run: a script that throws stops it if so.
-fn asks(preset: &str, slot: &str) -> bool {
-    let mut run = Run::new(scripted_scenario(
-        preset,
-        slot,
-        &format!("fn {slot}(x) {{ throw \"asked\" }}"),
-    ))
-    .unwrap();
+/// Whether `preset` with the settings `set` asks slot `slot` in its run: a script that throws
+/// stops it if so.
+fn asks(preset: &str, set: &Value, slot: &str) -> bool {
+    let source = format!("fn {slot}(x) {{ throw \"asked\" }}");
+    let scenario = with_settings(preset, set)
+        .with_override(&format!("rules.{slot}"), source.into())
+        .unwrap();
+    let mut run = Run::new(scenario).unwrap();
     run.run_to_end();
     run.stopped().is_some()
 }
@@ -103,15 +161,13 @@ fn fixture() -> Value {
     let mut scripted = Vec::new();
     for entry in MODELS {
         for slot in entry.slots {
-            for preset in presets::names() {
-                if presets::scenario(preset).unwrap().model() != entry.name
-                    || !asks(preset, slot.name)
-                {
-                    continue;
-                }
-                let mut run = Run::new(scripted_scenario(preset, slot.name, slot.paper)).unwrap();
+            for (preset, set) in cases(entry.name, slot.name) {
+                let scenario = with_settings(preset, &set)
+                    .with_override(&format!("rules.{}", slot.name), slot.paper.into())
+                    .unwrap();
+                let mut run = Run::new(scenario).unwrap();
                 run.run_to_end();
-                scripted.push(json!({"preset": preset, "slot": slot.name, "steps": run.steps(), "hash": run.outcome().hash}));
+                scripted.push(json!({"preset": preset, "set": set, "slot": slot.name, "steps": run.steps(), "hash": run.outcome().hash}));
             }
         }
     }
@@ -147,34 +203,40 @@ fn every_slots_paper_script_gives_the_built_in_rules_hashes_on_every_preset_that
     let mut checked = Vec::new();
     for entry in MODELS {
         for slot in entry.slots {
-            let presets: Vec<&str> = presets::names()
-                .filter(|p| presets::scenario(p).unwrap().model() == entry.name)
-                .filter(|p| asks(p, slot.name))
-                .collect();
+            let cases = cases(entry.name, slot.name);
             assert!(
-                !presets.is_empty(),
+                !cases.is_empty(),
                 "{}.{}: no preset asks it",
                 entry.name,
                 slot.name
             );
-            for preset in presets {
-                let script = scripted_scenario(preset, slot.name, slot.paper);
+            for (preset, set) in cases {
+                let builtin = with_settings(preset, &set);
+                let script = builtin
+                    .with_override(&format!("rules.{}", slot.name), slot.paper.into())
+                    .unwrap();
                 let steps = same_hashes_step_by_step(
-                    Run::new(presets::scenario(preset).unwrap()).unwrap(),
+                    Run::new(builtin).unwrap(),
                     Run::new(script).unwrap(),
-                    &format!("{preset} with the paper's {} script", slot.name),
+                    &format!("{preset} {set} with the paper's {} script", slot.name),
                 );
-                checked.push(format!("{preset}:{steps}"));
+                checked.push(format!("{preset}:{}:{steps}", slot.name));
             }
         }
     }
     // CHOBIE II's election asks `leader` in every preset but the one whose robots only adapt
     // (figure 14: construction off, so the three rules never elect).
-    let chobie: Vec<&str> = checked
-        .iter()
-        .filter_map(|c| c.strip_prefix("chobie-"))
-        .map(|c| c.split(':').next().unwrap())
-        .collect();
+    let of = |prefix: &str| -> Vec<String> {
+        let mut names: Vec<String> = checked
+            .iter()
+            .filter_map(|c| c.strip_prefix(prefix))
+            .map(|c| c.split(':').next().unwrap().to_string())
+            .collect();
+        names.sort();
+        names.dedup();
+        names
+    };
+    let chobie = of("chobie-");
     assert_eq!(
         chobie,
         [
@@ -183,7 +245,23 @@ fn every_slots_paper_script_gives_the_built_in_rules_hashes_on_every_preset_that
         ],
         "{checked:?}"
     );
-    assert!(!asks("chobie-load5", "leader"));
+    assert!(!asks("chobie-load5", &json!({}), "leader"));
+    // Every cubes3d and fracta preset asks its model's slots, and the cubes3d variants too.
+    let count = |model: &str| {
+        presets::names()
+            .filter(|p| presets::scenario(p).unwrap().model() == model)
+            .count()
+    };
+    assert_eq!(of("cubes-").len(), count("cubes3d"), "{checked:?}");
+    let select = checked.iter().filter(|c| c.contains(":select:")).count();
+    assert_eq!(select, count("cubes3d") + VARIANTS.len(), "{checked:?}");
+    for slot in ["activation", "roll"] {
+        let asked = checked
+            .iter()
+            .filter(|c| c.contains(&format!(":{slot}:")))
+            .count();
+        assert_eq!(asked, count("fracta"), "{slot}: {checked:?}");
+    }
 }
 
 /// Rule 3 for robots that heard from top only: the robots on the lower tier never lead, and the
@@ -345,4 +423,97 @@ fn an_experiment_sweeps_rules_and_a_comparison_sets_one_to_the_papers() {
         second.to_json(),
         presets::scenario("chobie-crawl5").unwrap().to_json()
     );
+}
+
+/// The paper's script of `model`'s slot `slot`.
+fn paper_of(model: &str, slot: &str) -> &'static str {
+    let entry = models::entry(model).unwrap();
+    entry.slots.iter().find(|s| s.name == slot).unwrap().paper
+}
+
+#[test]
+fn one_of_the_papers_three_selection_rules_taken_whatever_the_scenario_names() {
+    // The paper's script with its own `select` renamed, and one that always descends steepest:
+    // on a scenario that names the MRF, the run of the built-in steepest descent.
+    let paper = paper_of("cubes3d", "select");
+    let steepest = paper.replace("fn select(unit)", "fn named(unit)")
+        + "\nfn select(unit) { steepest_descent(unit) }\n";
+    let held = |s: Scenario| s.with_override("max_steps", json!(300)).unwrap();
+    let mut mine = Run::new(held(scripted_scenario(
+        "cubes-cube8-zigzag",
+        "select",
+        &steepest,
+    )))
+    .unwrap();
+    let builtin = presets::scenario("cubes-cube8-zigzag")
+        .unwrap()
+        .with_override("selection", json!("steepest"))
+        .unwrap();
+    let mut theirs = Run::new(held(builtin)).unwrap();
+    mine.run_to_end();
+    theirs.run_to_end();
+    assert_eq!(mine.outcome().hash, theirs.outcome().hash);
+    // Steepest descent is stuck in the zigzag; the MRF forms the cube.
+    assert_eq!(mine.outcome().metrics["completed"], json!(0));
+    let mut mrf = Run::new(presets::scenario("cubes-cube8-zigzag").unwrap()).unwrap();
+    mrf.run_to_end();
+    assert_eq!(mrf.outcome().metrics["completed"], json!(1));
+}
+
+#[test]
+fn an_answer_outside_the_slots_choices_stops_the_run_naming_them() {
+    let stopped = |preset: &str, slot: &str, source: &str| {
+        let mut run = Run::new(scripted_scenario(preset, slot, source)).unwrap();
+        run.run_to_end();
+        run.stopped().expect("stopped").to_string()
+    };
+    let select = stopped(
+        "cubes-cube8-zigzag",
+        "select",
+        "fn select(unit) { unit.options.len() }",
+    );
+    assert!(
+        select.starts_with("rule 'select' answered ")
+            && select.contains("; it must answer an index of its "),
+        "{select}"
+    );
+    assert_eq!(
+        stopped("cubes-cube8-zigzag", "select", "fn select(unit) { -1 }"),
+        "rule 'select' answered -1; it must answer the index of the chosen option in options (an integer from 0); choosing the option with stay true is \"no motion\""
+    );
+    let roll = stopped("fracta-triangle10", "roll", "fn roll(unit) { 2 }");
+    assert!(
+        roll.starts_with("rule 'roll' answered 2; it must answer () or an index of its "),
+        "{roll}"
+    );
+    assert_eq!(
+        stopped("fracta-triangle10", "activation", "fn activation(unit) { 1 }"),
+        "rule 'activation' answered 1; it must answer true (the unit is active and plans a roll) or false"
+    );
+    // Fracta's activation decides without chance: a draw stops the run.
+    let draw = stopped(
+        "fracta-triangle10",
+        "activation",
+        "fn activation(unit) { random() < 0.5 }",
+    );
+    assert!(draw.contains("draws no random numbers"), "{draw}");
+}
+
+#[test]
+fn an_activation_without_irritation_leaves_the_deadlock_irritation_dissolves() {
+    // Equation 3 alone: in the text's deadlock (figure 4) no unit moves, where the paper's rule
+    // with condition 5 moves units out of it (section 3.2.5).
+    let eq3 = "fn activation(unit) { unit.threshold * unit.x < to_float(unit.difference) }";
+    let held = |s: Scenario| s.with_override("max_steps", json!(500)).unwrap();
+    let mut paper = Run::new(held(presets::scenario("fracta-deadlock").unwrap())).unwrap();
+    let mut mine = Run::new(held(scripted_scenario(
+        "fracta-deadlock",
+        "activation",
+        eq3,
+    )))
+    .unwrap();
+    paper.run_to_end();
+    mine.run_to_end();
+    assert_eq!(mine.outcome().metrics["moves"], json!(0));
+    assert!(paper.outcome().metrics["moves"].as_u64().unwrap() > 0);
 }

@@ -22,6 +22,25 @@ fn scripted(preset: &str, slot: &str, source: &str) -> Scenario {
         .unwrap()
 }
 
+/// The scenario of a fixture's scripted case: its preset with its settings (`set`, its first
+/// steps at least), and the script `source` in its slot when one is given.
+fn case_scenario(case: &Value, source: Option<&str>) -> Scenario {
+    let mut overrides: Vec<(String, Value)> = case["set"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(k, v)| (k.clone(), v.clone()))
+        .collect();
+    if let Some(source) = source {
+        let slot = case["slot"].as_str().unwrap();
+        overrides.push((format!("rules.{slot}"), source.into()));
+    }
+    presets::scenario(case["preset"].as_str().unwrap())
+        .unwrap()
+        .with_overrides(&overrides)
+        .unwrap()
+}
+
 fn paper(slot: &str) -> &'static str {
     MODELS
         .iter()
@@ -40,8 +59,8 @@ fn paper_scripts_give_the_built_in_hashes_step_by_step_in_wasm() {
             case["preset"].as_str().unwrap(),
             case["slot"].as_str().unwrap(),
         );
-        let mut builtin = Run::new(presets::scenario(preset).unwrap()).unwrap();
-        let mut script = Run::new(scripted(preset, slot, paper(slot))).unwrap();
+        let mut builtin = Run::new(case_scenario(&case, None)).unwrap();
+        let mut script = Run::new(case_scenario(&case, Some(paper(slot)))).unwrap();
         while builtin.step() {
             assert!(script.step(), "{preset}");
             assert_eq!(
@@ -83,11 +102,8 @@ fn hostile_scripts_stop_where_and_as_they_do_natively() {
 fn the_pages_handle_runs_a_scenario_with_rules() {
     assert!(kumiki_wasm::rules_engine());
     let case = &fixture()["scripted"][0];
-    let (preset, slot) = (
-        case["preset"].as_str().unwrap(),
-        case["slot"].as_str().unwrap(),
-    );
-    let mut sim = kumiki_wasm::Sim::new(&scripted(preset, slot, paper(slot)).to_json()).unwrap();
+    let slot = case["slot"].as_str().unwrap();
+    let mut sim = kumiki_wasm::Sim::new(&case_scenario(case, Some(paper(slot))).to_json()).unwrap();
     while sim.advance(50) > 0 {}
     assert_eq!(sim.hash(), case["hash"].as_str().unwrap());
     assert_eq!(sim.stopped(), None);

@@ -3,10 +3,11 @@
 //! (or few, far apart) that move.
 
 use super::connect::Scratch;
-use super::select::{select, Choice, Position, UnitState};
+use super::select::{Position, Select};
 use super::spec::{Clock, Log, Priority, Selection};
 use super::Cubes;
 use kumiki_model::math;
+use kumiki_model::slot::{Slot, Stop};
 
 impl Cubes {
     /// Is `c` at least `mover_distance` (Manhattan) from every unit that moved this step?
@@ -25,14 +26,32 @@ impl Cubes {
     /// first that chooses to move go gives each of them the same chance as drawing among all
     /// that chose to move, and asks only as many as needed. With a light and the priority on
     /// units (model version 4 and before), a unit whose choice approaches the source goes
-    /// before one whose choice does not.
-    pub(super) fn move_units(&mut self, s: &mut Scratch) {
+    /// before one whose choice does not. A script in the slot `select` that stops ends the
+    /// step's moves where it stopped.
+    pub(super) fn move_units(&mut self, s: &mut Scratch) -> Result<(), Stop> {
         let mut order = std::mem::take(&mut self.order);
         order.clear();
         order.extend_from_slice(&self.movable);
         self.arrived.clear();
         self.deferred.clear();
         let on_units = self.light.is_some() && self.priority == Priority::Units;
+        let chosen = self.choose_moves(&mut order, on_units, s);
+        self.order = order;
+        chosen?;
+        if on_units {
+            self.move_deferred(s);
+        }
+        Ok(())
+    }
+
+    /// The units of `order` asked in a random order, each moving where it chooses, until
+    /// `movers` have moved.
+    fn choose_moves(
+        &mut self,
+        order: &mut [u32],
+        on_units: bool,
+        s: &mut Scratch,
+    ) -> Result<(), Stop> {
         let want = self.movers as usize;
         let n = order.len();
         for k in 0..n {
@@ -45,7 +64,7 @@ impl Cubes {
             if !self.eligible(p) || !self.far_from_movers(p) {
                 continue;
             }
-            let Some(dest) = self.decide(p, s) else {
+            let Some(dest) = self.decide(p, s)? else {
                 continue;
             };
             if on_units && self.along_light(dest) <= self.along_light(p) {
@@ -55,10 +74,7 @@ impl Cubes {
             self.do_move(p, dest);
             self.arrived.push(dest as u32);
         }
-        if on_units {
-            self.move_deferred(s);
-        }
-        self.order = order;
+        Ok(())
     }
 
     /// The priority on units (model version 4 and before): the moves chosen this step that do
@@ -113,28 +129,24 @@ impl Cubes {
     }
 
     /// Steps (i) to (iii) of section 4 for the unit at `p`: its reachable positions, their
-    /// differences, and its choice by the selection rule (`select.rs`), `None` for staying
-    /// where it is. Its options are "no motion" (i = 0, D_0) and its reachable positions; with
-    /// a light and the priority on positions, only the reachable positions that approach the
-    /// light when it has any (section 6). Random selection leaves "no motion" out when
-    /// `random_stays` is false (model version 4 and before).
-    pub(super) fn decide(&mut self, p: usize, s: &mut Scratch) -> Option<usize> {
+    /// differences, and its choice by the selection rule (the slot `select`, `select.rs`),
+    /// `None` for staying where it is. Its options are "no motion" (i = 0, D_0) and its
+    /// reachable positions; with a light and the priority on positions, only the reachable
+    /// positions that approach the light when it has any (section 6). Random selection leaves
+    /// "no motion" out when `random_stays` is false (model version 4 and before).
+    pub(super) fn decide(&mut self, p: usize, s: &mut Scratch) -> Result<Option<usize>, Stop> {
         self.st.reachable(p, s);
         if s.moves.is_empty() {
-            return None;
+            return Ok(None);
         }
-        let unit = UnitState {
-            cell: p as u32,
-            difference: self.d0(p),
-            target: self.target[p],
-            steps_on_target: self.steps_on_target(p),
-        };
-        let mut options = std::mem::take(&mut self.options);
-        options.clear();
+        self.senses.options.clear();
+        let target = self.target[p];
         if self.selection != Selection::Random || self.random_stays {
-            options.push(Position {
+            let difference = self.d0(p);
+            self.senses.options.push(Position {
                 cell: p as u32,
-                difference: unit.difference,
+                difference,
+                stay: true,
             });
         }
         let here = self.along_light(p);
@@ -148,24 +160,32 @@ impl Cubes {
                 continue;
             }
             let profile = self.st.profile_after(p, m.dest as usize);
-            options.push(Position {
+            let difference = self.difference(target, &profile);
+            self.senses.options.push(Position {
                 cell: m.dest,
-                difference: self.difference(unit.target, &profile),
+                difference,
+                stay: false,
             });
         }
-        let temperature = self.temperature(p);
-        let choice = select(
-            self.selection,
-            &options,
-            temperature,
-            &unit,
-            &mut self.rng,
-            &mut self.weights,
-        );
-        self.options = options;
-        match choice {
-            Choice::Stay => None,
-            Choice::Move(c) => Some(c as usize),
+        let (temperature, t) = (self.temperature(p), self.steps_on_target(p));
+        let unit = &mut self.senses;
+        unit.selection = self.selection;
+        unit.temperature = temperature;
+        unit.t = t;
+        let pick = self.select.decide(unit, Some(&mut self.rng));
+        let options = &self.senses.options;
+        let cell = pick.and_then(|i| match options.get(i) {
+            Some(o) => Ok(o.cell),
+            None => Err(Stop(format!(
+                "rule '{}' answered {i}; it must answer an index of its {} options (0 to {})",
+                Select::INFO.name,
+                options.len(),
+                options.len() - 1
+            ))),
+        });
+        match cell? {
+            c if c == p as u32 => Ok(None),
+            c => Ok(Some(c as usize)),
         }
     }
 }

@@ -119,8 +119,9 @@ impl Cubes {
             order: Vec::new(),
             deferred: Vec::new(),
             arrived: Vec::new(),
-            options: Vec::new(),
-            weights: Vec::new(),
+            senses: Default::default(),
+            select: Default::default(),
+            stopped: None,
             events: Vec::new(),
             st,
         };

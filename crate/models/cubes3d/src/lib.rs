@@ -9,13 +9,15 @@
 //! - [`motion`]: the structure and the pairwise motion; `connect`: its connectivity rule;
 //! - `spec`: the scenario keys, their defaults and checks; `init`: building the model; `state`:
 //!   the per-cell books every phase reads; `light`: positions along the light;
-//! - one file per step phase, in order: `choose` (the units choose and one moves), `switch`
+//! - one file per step phase, in order: `choose` (the units choose and one moves, each by the
+//!   selection rule of `select`, the rule slot `select` a scenario's script may take), `switch`
 //!   (each unit switches its own target);
 //! - `view` and this module's [`Model`] implementation: the outputs; `actions`: disturbances and
 //!   clicks; [`queries`]: helper calls for the editors; [`paper`]: the claims for the
 //!   reproduction report.
 
 use std::borrow::Cow;
+use std::rc::Rc;
 
 use serde_json::{Map, Value};
 
@@ -24,6 +26,7 @@ use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model, Scene};
 use kumiki_model::rng::Rng;
+use kumiki_model::slot::Script;
 
 mod actions;
 mod choose;
@@ -61,7 +64,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::ActionSpec>(),
-    slots: &[],
+    slots: &[<select::Select as kumiki_model::slot::Slot>::INFO],
     queries: &[
         Query {
             name: "derive",
@@ -189,8 +192,12 @@ pub struct Cubes {
     deferred: Vec<(u32, u32)>,
     /// Cells the units that moved this step arrived at.
     arrived: Vec<u32>,
-    options: Vec<select::Position>,
-    weights: Vec<f64>,
+    /// What the unit choosing senses, kept from one choice to the next.
+    senses: select::Senses,
+    /// The selection rule: the paper's, or a scenario's script (the slot `select`).
+    select: kumiki_model::slot::Rule<select::Select>,
+    /// Why a script stopped the run, once one did.
+    stopped: Option<String>,
     events: Vec<Event>,
 }
 
@@ -212,14 +219,35 @@ impl Model for Cubes {
         self.events.clear();
         self.run_temperature = self.temperature_at(self.steps + 1);
         let mut s = std::mem::take(&mut self.scratch);
-        self.move_units(&mut s);
+        let moved = self.move_units(&mut s);
         self.scratch = s;
         self.steps += 1;
+        if let Err(stop) = moved {
+            self.stopped = Some(stop.0);
+            return;
+        }
         if self.targets.len() > 1 {
             self.switch_targets();
         } else if self.reached.is_none() && self.zero == self.units.len() {
             self.reached = Some(self.steps);
         }
+    }
+
+    fn install(&mut self, slot: &str, script: Rc<dyn Script>) -> Result<()> {
+        match slot {
+            "select" => {
+                self.select.install(script);
+                Ok(())
+            }
+            _ => Err(kumiki_model::Error::field(
+                format!("rules.{slot}"),
+                "cubes3d has one rule slot: select",
+            )),
+        }
+    }
+
+    fn stopped(&self) -> Option<&str> {
+        self.stopped.as_deref()
     }
 
     fn steps(&self) -> u64 {

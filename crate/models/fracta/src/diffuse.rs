@@ -1,12 +1,16 @@
 //! Step phase 2: diffusion, irritation and activation (equations 2 to 5).
 
+use kumiki_model::slot::Stop;
+
+use super::activation::Senses;
 use super::*;
 
 impl Fracta {
     /// Equations 2, 4 and 5 for every working unit at once, then the activation rule
-    /// (equation 3, or irritation for movable units). Fills `active`, noting which units
-    /// irritation activated.
-    pub(super) fn diffuse(&mut self) {
+    /// (equation 3, or irritation for movable units: the slot `activation`). Fills `active`,
+    /// noting which units irritation activated. A script in the slot that stops ends the phase
+    /// where it stopped.
+    pub(super) fn diffuse(&mut self) -> Result<(), Stop> {
         let t = types();
         let p = self.p;
         self.active.clear();
@@ -49,13 +53,23 @@ impl Fracta {
             }
             self.units[u].irr = irr;
             self.new_x[u] = x;
-            if movable && (p.g * unit.x < diff || fired) {
-                self.active.push((u as u32, fired));
+            if movable {
+                let senses = Senses {
+                    x: unit.x,
+                    difference: self.diff[u],
+                    flux,
+                    threshold: p.g,
+                    irritated: fired,
+                };
+                if self.activation.decide(&senses, None)? {
+                    self.active.push((u as u32, fired));
+                }
             }
         }
         for k in 0..self.working.len() {
             let u = self.working[k] as usize;
             self.units[u].x = self.new_x[u];
         }
+        Ok(())
     }
 }

@@ -11,13 +11,15 @@
 //!   per-unit data every phase reads;
 //! - one file per step phase, in order: `faults` (OK signals and cut-off), `diffuse`
 //!   (equations 2 to 5), `plan` (legal motions and the choice of direction), `commit` (rolls
-//!   carried out, conflicts cancelled);
+//!   carried out, conflicts cancelled); `activation` and `roll`: the rule slots a scenario's
+//!   script may take, equation 3 with condition 5 and the choice of direction;
 //! - `view` and this module's [`Model`] implementation: the outputs; `actions`: faults;
 //!   [`queries`]: helper calls for the editors; [`paper`]: the claims for the reproduction
 //!   report; [`search`]: the fewest motions a repair needs, beside them.
 
 use std::borrow::Cow;
 use std::collections::VecDeque;
+use std::rc::Rc;
 
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
@@ -26,14 +28,15 @@ use kumiki_model::entry::{self, ModelEntry};
 use kumiki_model::error::{Error, Result};
 use kumiki_model::hash::StateHasher;
 use kumiki_model::lattice::{Hex, Lattice, LatticeKind};
-use kumiki_model::math;
 use kumiki_model::model::{
     self, Action, Agent, Event, FieldInfo, Layout, LegendEntry, Metric, Model, ToolInfo,
 };
 use kumiki_model::rng::Rng;
 use kumiki_model::shape;
+use kumiki_model::slot::{Rule, Script, Stop};
 
 mod actions;
+mod activation;
 mod commit;
 mod derive;
 mod diffuse;
@@ -47,6 +50,7 @@ pub mod paper;
 mod pattern;
 mod plan;
 pub mod queries;
+mod roll;
 pub mod search;
 mod spec;
 pub mod types;
@@ -69,7 +73,10 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::FaultAction>(),
-    slots: &[],
+    slots: &[
+        <activation::Activation as kumiki_model::slot::Slot>::INFO,
+        <roll::Roll as kumiki_model::slot::Slot>::INFO,
+    ],
     queries: &[
         entry::Query {
             name: "derive",
@@ -176,6 +183,12 @@ pub struct Fracta {
     /// Scratch for the units a motion touches.
     touched: Vec<u32>,
     plans: Vec<Plan>,
+    /// Equation 3 and condition 5: the paper's, or a scenario's script (the slot `activation`).
+    activation: Rule<activation::Activation>,
+    /// The choice of roll: the paper's, or a scenario's script (the slot `roll`).
+    roll: Rule<roll::Roll>,
+    /// Why a script stopped the run, once one did.
+    stopped: Option<String>,
     busy: Vec<u64>,
     // Counters.
     moves: u64,
@@ -189,12 +202,13 @@ pub struct Fracta {
 }
 
 impl Fracta {
-    /// A step's first half: faults are cut off, x diffuses, units are activated and plan.
-    fn decide(&mut self) {
+    /// A step's first half: faults are cut off, x diffuses, units are activated and plan. A
+    /// script in a rule slot that stops ends it where it stopped.
+    fn decide(&mut self) -> std::result::Result<(), Stop> {
         self.events.clear();
         self.cut_off_faulty();
-        self.diffuse();
-        self.plan();
+        self.diffuse()?;
+        self.plan()
     }
 
     /// A step's second half: the plans are carried out and the statements refreshed.
@@ -261,8 +275,31 @@ impl Model for Fracta {
     }
 
     fn step(&mut self) {
-        self.decide();
-        self.act();
+        match self.decide() {
+            Ok(()) => self.act(),
+            Err(stop) => {
+                self.stopped = Some(stop.0);
+                self.steps += 1;
+            }
+        }
+    }
+
+    fn install(&mut self, slot: &str, script: Rc<dyn Script>) -> Result<()> {
+        match slot {
+            "activation" => self.activation.install(script),
+            "roll" => self.roll.install(script),
+            _ => {
+                return Err(Error::field(
+                    format!("rules.{slot}"),
+                    "fracta has two rule slots: activation and roll",
+                ))
+            }
+        }
+        Ok(())
+    }
+
+    fn stopped(&self) -> Option<&str> {
+        self.stopped.as_deref()
     }
 
     fn steps(&self) -> u64 {

@@ -1,6 +1,9 @@
 //! Step phase 3: which motions are legal (section 3.1 and section 4's no-e rule) and which
 //! one each active unit plans (section 3.2.4).
 
+use kumiki_model::slot::{Slot, Stop};
+
+use super::roll::{Candidate, Roll, Rolls, Senses};
 use super::*;
 
 /// The largest empty region, in cells, a motion is checked not to enclose.
@@ -185,65 +188,70 @@ impl Fracta {
         change
     }
 
-    /// Section 3.2.4: each active unit picks clockwise or counter-clockwise, the direction that
+    /// Section 3.2.4: each active unit that has a legal roll picks one, or stays, by the slot
+    /// `roll` (`roll.rs`). The paper's rule: clockwise or counter-clockwise, the direction that
     /// leaves the smaller difference around it being the likelier (Boltzmann weights at
-    /// `temperature` of the change [`Self::change_after`]). A unit that equation 3 activated
+    /// `temperature` of the change [`Self::change_after`]); a unit that equation 3 activated
     /// moves only when one of its directions lowers that difference (section 3.2 (iii): "it
     /// moves towards the direction to make it smaller"); a unit whose irritation fired moves
-    /// whatever the change (condition 5 dissolves deadlocks, where no motion lowers it).
-    pub(super) fn plan(&mut self) {
+    /// whatever the change (condition 5 dissolves deadlocks, where no motion lowers it). A
+    /// script in the slot that stops ends the phase where it stopped.
+    pub(super) fn plan(&mut self) -> Result<(), Stop> {
         self.plans.clear();
         for k in 0..self.active.len() {
             let (u, irritated) = self.active[k];
             let cell = self.units[u as usize].cell;
             let mask = self.mask[u as usize];
-            let mut options: [(Plan, i64); 2] = [(
-                Plan {
-                    unit: u,
-                    pivot: 0,
-                    pivot_slot: 0,
-                    turn: Turn::Ccw,
-                },
-                0,
-            ); 2];
-            let mut n = 0;
+            let mut plans = [Plan {
+                unit: u,
+                pivot: 0,
+                pivot_slot: 0,
+                turn: Turn::Ccw,
+            }; 2];
+            let mut options = Rolls::NONE;
             for pivot in 0..6 {
                 for turn in Turn::BOTH {
                     if let Some(target) = self.legal(cell, mask, pivot, turn) {
-                        let d = self.change_after(u, cell, target);
+                        let change = self.change_after(u, cell, target);
+                        let n = options.as_slice().len();
                         if n < 2 {
                             let pivot_cell = self.nbr[cell as usize][pivot];
-                            options[n] = (
-                                Plan {
-                                    unit: u,
-                                    pivot: self.occ[pivot_cell as usize],
-                                    pivot_slot: pivot as u8,
-                                    turn,
-                                },
-                                d,
-                            );
-                            n += 1;
+                            plans[n] = Plan {
+                                unit: u,
+                                pivot: self.occ[pivot_cell as usize],
+                                pivot_slot: pivot as u8,
+                                turn,
+                            };
+                            options.push(Candidate {
+                                turn,
+                                pivot: pivot as u8,
+                                change,
+                            });
                         }
                     }
                 }
             }
-            if n == 0 || (!irritated && options[..n].iter().all(|o| o.1 >= 0)) {
+            let n = options.as_slice().len();
+            if n == 0 {
                 continue;
             }
-            let chosen = match n {
-                1 => options[0].0,
-                _ => {
-                    let (d0, d1) = (options[0].1 as f64, options[1].1 as f64);
-                    // P(first) = e^(-d0/T) / (e^(-d0/T) + e^(-d1/T)).
-                    let p0 = 1.0 / (1.0 + math::exp((d0 - d1) / self.p.temperature));
-                    if self.rng.unit() < p0 {
-                        options[0].0
-                    } else {
-                        options[1].0
-                    }
-                }
+            let unit = Senses {
+                options,
+                irritated,
+                temperature: self.p.temperature,
             };
-            self.plans.push(chosen);
+            match self.roll.decide(&unit, Some(&mut self.rng))? {
+                None => {}
+                Some(i) if i < n => self.plans.push(plans[i]),
+                Some(i) => {
+                    return Err(Stop(format!(
+                        "rule '{}' answered {i}; it must answer () or an index of its {n} rolls (0 to {})",
+                        Roll::INFO.name,
+                        n - 1
+                    )))
+                }
+            }
         }
+        Ok(())
     }
 }

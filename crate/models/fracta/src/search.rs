@@ -192,7 +192,8 @@ fn first_motion(mut m: Fracta, limit: u64) -> Option<FirstMotion> {
     let mean_difference = m.mean_difference();
     let mut improving_activated = false;
     for wait in 0..limit {
-        m.decide();
+        // A script in a rule slot that stops ends the search where it stopped.
+        m.decide().ok()?;
         improving_activated |= m
             .active
             .iter()
@@ -305,7 +306,9 @@ fn trace_run(mut m: Fracta, limit: u64) -> Trace {
         if deadlocked(&m) {
             run.deadlocked_steps += 1;
         }
-        m.decide();
+        if m.decide().is_err() {
+            break;
+        }
         if improving.is_empty() {
             run.stuck += 1;
         } else if !m.active.iter().any(|a| improving.contains(&a.0)) {

@@ -1,47 +1,36 @@
 //! The selection rule (step iii): its three built-in forms over the same options, and what each
 //! does from the figures' starts.
 
-use super::super::select::{select, Choice, Position, UnitState};
+use super::super::select::{Position, Select, Senses};
 use super::*;
+use kumiki_model::slot::Slot;
 
 const HERE: u32 = 100;
 
-fn unit() -> UnitState {
-    UnitState {
-        cell: HERE,
-        difference: 5.0,
-        target: 0,
-        steps_on_target: 0,
-    }
-}
-
 /// "No motion" at D = 5 and two reachable positions at D = 4 and 7.
 fn options() -> Vec<Position> {
-    vec![
-        Position {
-            cell: HERE,
-            difference: 5.0,
-        },
-        Position {
-            cell: 1,
-            difference: 4.0,
-        },
-        Position {
-            cell: 2,
-            difference: 7.0,
-        },
-    ]
+    let at = |cell, difference| Position {
+        cell,
+        difference,
+        stay: cell == HERE,
+    };
+    vec![at(HERE, 5.0), at(1, 4.0), at(2, 7.0)]
 }
 
 /// How often each option is chosen in `n` draws.
 fn shares(rule: Selection, options: &[Position], temperature: f64, n: usize) -> [f64; 3] {
     let mut rng = Rng::new(9);
-    let mut weights = Vec::new();
+    let unit = Senses {
+        selection: rule,
+        temperature,
+        t: 0,
+        options: options.to_vec(),
+    };
     let mut count = [0usize; 3];
     for _ in 0..n {
-        let k = match select(rule, options, temperature, &unit(), &mut rng, &mut weights) {
-            Choice::Stay => 0,
-            Choice::Move(c) => c as usize,
+        let k = match options[Select::paper(&unit, Some(&mut rng))].cell {
+            HERE => 0,
+            c => c as usize,
         };
         count[k] += 1;
     }

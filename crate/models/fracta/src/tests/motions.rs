@@ -82,8 +82,8 @@ fn only_irritation_moves_a_unit_that_no_direction_improves() {
         while m.steps < 300 && !m.completed() {
             m.events.clear();
             m.cut_off_faulty();
-            m.diffuse();
-            m.plan();
+            m.diffuse().unwrap();
+            m.plan().unwrap();
             for plan in &m.plans {
                 let (_, irritated) = *m.active.iter().find(|a| a.0 == plan.unit).unwrap();
                 let cell = m.units[plan.unit as usize].cell;
@@ -132,9 +132,9 @@ fn after_a_corner_fault_the_spare_moves_at_once() {
     m.cut_off_faulty();
     let improving = search::improving_units(&m);
     assert_eq!(improving, vec![0]);
-    m.diffuse();
+    m.diffuse().unwrap();
     assert!(m.active.contains(&(0, false)), "{:?}", m.active);
-    m.plan();
+    m.plan().unwrap();
     assert_eq!(m.plans.iter().map(|p| p.unit).collect::<Vec<_>>(), vec![0]);
     m.commit();
     m.refresh();
@@ -157,12 +157,12 @@ fn irritation_grows_only_while_a_units_difference_stays() {
     s.disturbances[0].action.insert("unit".into(), json!(4));
     let mut m = Fracta::of_scenario(&s).unwrap();
     m.apply(&s.disturbances[0].action).unwrap();
-    m.decide();
+    m.decide().unwrap();
     assert!(m.working.iter().any(|&u| m.diff[u as usize] > 0));
     assert!(m.working.iter().all(|&u| m.units[u as usize].irr == 0.0));
     m.act();
     let before: Vec<u32> = m.diff.clone();
-    m.decide();
+    m.decide().unwrap();
     let grew: Vec<u32> = m
         .working
         .iter()
