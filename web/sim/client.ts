@@ -7,6 +7,7 @@ import type { Drawn, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
 import type { CameraMove, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
 import { type Progress, type Recorded, type RecordSettings, Recordings } from './record';
+import { type RuleQueries, ruleQueries } from './rules';
 
 export interface SimEvents {
   /** A run started: of the request `id` (0: a reset, a restart, a follower's scenario). */
@@ -45,6 +46,8 @@ export class SimClient implements ScenarioOwner {
   private answers = new Map<number, (value: unknown) => void>();
   private askId = 0;
   private readonly recordings = new Recordings();
+  /** The Rules tab's questions, answered by the worker's rules module (fetched the first time). */
+  readonly rules: RuleQueries = ruleQueries((message) => this.ask(message));
   private canvases: ViewCanvases | null = null;
   private viewState: { size: { width: number; height: number; dpr: number } | null; marks: ViewMarks | null } = { size: null, marks: null };
   private speed = 30;
