@@ -3,8 +3,9 @@
 // simulation with the rule scripts' engine, fetched only for a scenario with rules or when the Rules
 // tab opens), the lab module (when a panel needs it; neither has a budget, docs/benchmarks.md says
 // why), and the JavaScript loaded later (the rule editor's CodeMirror chunk, the lab's code). The
-// first load's JavaScript is what index.html's scripts import statically, with the workers they
-// start (`new URL(…, import.meta.url)`); a dynamic import() starts a chunk loaded later.
+// first load's JavaScript is what index.html's scripts import statically, with every worker they
+// name (`new URL(…, import.meta.url)`: counted as first load, whether it starts at once or on
+// demand); a dynamic import() starts a chunk loaded later.
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -26,8 +27,8 @@ function firstLoad() {
     // Static imports (`import{a}from"./x.js"`, `import"./x.js"`, `export{a}from"./x.js"`) and workers
     // (`new URL("x.js", import.meta.url)`); never `import("./x.js")`.
     const found = [
-      ...[...code.matchAll(/(?:\bfrom|\bimport)\s*["']\.\/([\w.-]+\.js)["']/g)].map((m) => m[1]),
-      ...[...code.matchAll(/new URL\(\s*["'](?:\.\/)?([\w.-]+\.js)["']\s*,\s*import\.meta\.url/g)].map((m) => m[1]),
+      ...[...code.matchAll(/(?:\bfrom|\bimport)\s*["'`]\.\/([\w.-]+\.js)["'`]/g)].map((m) => m[1]),
+      ...[...code.matchAll(/new URL\(\s*["'`](?:\.\/)?([\w.-]+\.js)["'`]\s*,\s*import\.meta\.url/g)].map((m) => m[1]),
     ];
     todo.push(...found);
   }

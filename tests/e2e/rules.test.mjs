@@ -10,7 +10,10 @@ import { audit, kumiki, loadWasm, openPage, session, stepCount } from './harness
 const wasm = loadWasm();
 const s = session();
 
-/** The paper's leader rule with left and right swapped: it runs, and leads other forms. */
+/**
+ * The paper's leader rule, changed: a robot that heard from top or bottom but from neither side
+ * leads too, as a row's end. On chobie-form-a it changes the run within 12 steps.
+ */
 const MINE = `fn leader(robot) {
   let first = robot.first;
   let second = robot.second;
@@ -18,19 +21,28 @@ const MINE = `fn leader(robot) {
     return ();
   }
   let vertical = if first.up { "top" } else { "bottom" };
-  let horizontal = if second.left { "left" } else if second.right { "right" } else { return (); };
-  vertical + "_" + horizontal
+  if second.right {
+    vertical + "_right"
+  } else if second.left {
+    vertical + "_left"
+  } else {
+    "row_end"
+  }
 }`;
 /** The same with line 3 broken. */
 const BROKEN = MINE.replace('let second = robot.second;', 'let second = ;');
 
 const linkOf = (name) => `#${wasm.encode_link(wasm.preset_json(name))}`;
 
-/** Replaces the editor's text as a person pastes it (one input event), from the keyboard. */
+/**
+ * Replaces the editor's text as a person types it, key by key (Enter indents the next line, so
+ * the lines start with more spaces than `text`'s: its lines stay where they are).
+ */
 async function replaceText(page, text) {
   await page.click('#rules-editor .cm-content');
   await page.keyboard.press('Control+A');
-  await page.keyboard.insertText(text);
+  await page.keyboard.press('Delete');
+  await page.keyboard.type(text);
 }
 
 async function stepTo(page, steps) {
@@ -74,6 +86,11 @@ describe('rules you can write', () => {
     assert.deepEqual(marked, [3]);
     assert.equal(await page.isDisabled('#rules-run'), true);
     assert.deepEqual(await audit(page, 'the Rules tab with an error marked'), []);
+    // Tab indents in the editor; Escape, then Tab, leaves it for the tab's next control.
+    await page.click('#rules-editor .cm-content');
+    await page.keyboard.press('Escape');
+    await page.keyboard.press('Tab');
+    assert.equal(await page.evaluate(() => document.activeElement?.id), 'rules-reset');
 
     // Fixed, and run with it: the scenario carries it.
     await replaceText(page, MINE);
@@ -92,6 +109,11 @@ describe('rules you can write', () => {
     const row = JSON.parse(kumiki(['run', link, '--max-steps', '12']).trim().split('\n')[0]);
     assert.equal(row.steps, 12);
     assert.equal(row.hash, mineHash, 'kumiki run on the link prints the page state hash');
+    // Opened in a fresh page, the link runs its rule at once: the worker switches as it opens it.
+    const second = await openPage(s.browser, link, { serviceWorkers: 'block' });
+    assert.equal(await stepTo(second.page, 12), mineHash);
+    assert.deepEqual(second.problems, []);
+    await second.context.close();
     assert.deepEqual(problems, []);
     await context.close();
   });

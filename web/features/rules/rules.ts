@@ -57,7 +57,7 @@ export function setupRules(page: PageContext, load: RulesLoad = { editor: () => 
       try {
         const [code, slots] = await Promise.all([load.editor(), sim.rules.slots()]);
         all = slots;
-        editor = code.ruleEditor(byId('rules-editor'), '', scheduleCheck, 'rules-editor-label', 'rules-doc');
+        editor = code.ruleEditor(byId('rules-editor'), '', scheduleCheck, "The rule's script (Rhai)");
         follow();
       } catch (e) {
         opened = null;
