@@ -114,6 +114,15 @@ describe('rules you can write', () => {
     assert.equal(await stepTo(second.page, 12), mineHash);
     assert.deepEqual(second.problems, []);
     await second.context.close();
+
+    // The paper's rule beside mine: the second run (the paper's, on the page's module) follows the first.
+    await page.click('#tab-rules');
+    await page.click('#rules-compare');
+    await page.waitForSelector('body.comparing #compare-wrap:not([hidden])');
+    assert.equal(await page.textContent('#run-label-second'), "the paper's rule");
+    assert.equal(await stepTo(page, 12), mineHash);
+    await page.waitForFunction(() => document.querySelector('#compare-wrap').dataset.steps === '12' && document.querySelector('#compare-wrap').dataset.hash);
+    assert.equal(await page.getAttribute('#compare-wrap', 'data-hash'), paperHash);
     assert.deepEqual(problems, []);
     await context.close();
   });
