@@ -18,12 +18,7 @@ export const CHECK_AFTER_MS = 250;
 /** The second run's and the first's names when the paper's rule is compared with the script. */
 export const COMPARE_LABELS = { label: "the paper's rule", base_label: 'my rule' } as const;
 
-/** What the tab loads when it first opens: the editor's code (its own chunk) and every slot. */
-export interface RulesLoad {
-  editor: () => Promise<typeof import('./editor')>;
-}
-
-export function setupRules(page: PageContext, load: RulesLoad = { editor: () => import('./editor') }) {
+export function setupRules(page: PageContext) {
   const { session, sim, events } = page;
   page.tabs.section('rules', panelHtml, 10);
   const status = byId('rules-status');
@@ -50,12 +45,12 @@ export function setupRules(page: PageContext, load: RulesLoad = { editor: () => 
   /** The text the editor starts with for a slot: the scenario's script, else the paper's rule. */
   const starting = (slot: SlotInfo) => scriptIn(session.doc(), slot.name) ?? slot.paper;
 
-  /** Loads the editor and the slots, once; the tab shows them when both have come. */
+  /** Loads the editor (its own chunk) and every slot, once; the tab shows them when both have come. */
   function open(): Promise<void> {
     opened ??= (async () => {
       status.textContent = 'Loading the rule editor…';
       try {
-        const [code, slots] = await Promise.all([load.editor(), sim.rules.slots()]);
+        const [code, slots] = await Promise.all([import('./editor'), sim.rules.slots()]);
         all = slots;
         editor = code.ruleEditor(byId('rules-editor'), '', scheduleCheck, "The rule's script (Rhai)");
         follow();
