@@ -72,6 +72,8 @@ export interface AmasScenario {
   place_duration: number;
   /** Steps handing a module over to another robot takes (collision `relay`). */
   relay_duration: number;
+  /** Whether a robot waiting out a collision penalty may relay (4.6.1). */
+  relay_with: RelayWith;
   /**
    * Assembler robots, placed at random on distinct supply modules; at most one per supply
    * module.
@@ -504,6 +506,12 @@ export type Priorities = "pooled" | "guided" | "penalty";
  * reachable positions approaching the light source").
  */
 export type Priority = "positions" | "units" | "none";
+
+/**
+ * Sections 4.6.1 and 5.1: which robots a loaded robot and an unloaded one may relay with when
+ * one wants the other's module.
+ */
+export type RelayWith = "waiting" | "idle";
 
 export type Selection = "mrf" | "random" | "steepest";
 

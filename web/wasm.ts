@@ -39,6 +39,8 @@ export function message(e: unknown): string {
   return e instanceof Error ? e.message : String(e);
 }
 
+/** A number as every figure, table and export shows it: the core's one rule (crate/core/src/plot/number.rs). */
+export const formatNumber = (v: number): string => core.format_number(v);
 export const presets = (): PresetInfo[] => core.presets() as PresetInfo[];
 export const presetJson = (name: string): string => core.preset_json(name);
 export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];

@@ -394,7 +394,10 @@ fn check(
     let teacher = match exercise {
         Some(e) => grading::Teacher::given(&open_source(&e, &Limits::PAGE).map_err(err)?.0),
         None => grading::Teacher::from_handins(
-            opened.iter().filter_map(|s| s.as_ref().ok()).map(Scenario::to_value),
+            opened
+                .iter()
+                .filter_map(|s| s.as_ref().ok())
+                .map(Scenario::to_value),
         ),
     }
     .map_err(|e| err(format!("exercise: {e}")))?;

@@ -165,6 +165,10 @@ describe('an exercise', () => {
     assert.equal(await page.textContent('#ex-goal-problem'), '');
     await page.check('#ex-locked input[value="robots"]');
     await page.fill('#ex-hints', 'Read section 5.\n\nPress Play.');
+    // One tool allowed twice, the others locked; points for two parts; a question.
+    await page.fill('#ex-allow input[data-kind="remove"]', '2');
+    await page.fill('#ex-credit', '5: completed\n3: steps < 3000');
+    await page.fill('#ex-question', 'Why five?');
     await page.click('#ex-apply');
     await page.waitForSelector('#exercise:not([hidden])');
     assert.equal(await page.textContent('#exercise-title'), 'Five robots');
@@ -172,10 +176,22 @@ describe('an exercise', () => {
     assert.deepEqual(doc.exercise, {
       title: 'Five robots',
       instructions: 'Finish with **five** robots.',
-      locked: { robots: doc.robots },
+      // The scenario's own disturbances (none) are the teacher's, kept as the core reads an exercise.
+      locked: { robots: doc.robots, disturbances: [] },
       goal: 'completed and steps < 5000',
       hints: ['Read section 5.', 'Press Play.'],
+      disturbances: { remove: 2 },
+      credit: [
+        { goal: 'completed', points: 5 },
+        { goal: 'steps < 3000', points: 3 },
+      ],
+      question: 'Why five?',
     });
+    await page.click('#tab-run');
+    await page.waitForFunction(() => document.querySelector('#tools button[data-tool="remove"]').textContent.endsWith('(2 left)'));
+    assert.equal(await page.getAttribute('#tools button[data-tool="break"]', 'aria-disabled'), 'true');
+    assert.equal(await page.textContent('#exercise-points-head'), 'Points: up to 8');
+    assert.equal(await page.isVisible('#exercise-answer'), true);
     assert.deepEqual(problems, []);
     await context.close();
   });

@@ -91,6 +91,9 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   assert.equal(png.name, 'e2e-small-1.png');
   assert.equal(png.bytes.subarray(1, 4).toString('latin1'), 'PNG');
   assert.equal(png.bytes.readUInt32BE(16), 1440, 'twice the SVG width');
+  const pdf = await downloaded(page, '#experiment-plots figure[data-kind="lines"] button:has-text("Save PDF")');
+  assert.equal(pdf.name, 'e2e-small-1.pdf');
+  assert.equal(pdf.bytes.subarray(0, 5).toString('latin1'), '%PDF-');
 
   // CSV, JSON lines and traces: the CLI writes the same bytes for the same experiment and time.
   const dir = mkdtempSync(join(tmpdir(), 'kumiki-e2e-'));
@@ -108,6 +111,9 @@ test('an experiment runs on a worker pool, is drawn as it says, and exports what
   assert.equal(JSON.parse(jsonl.split('\n')[0]).provenance.experiment.name, 'e2e-small');
   const traces = (await downloaded(page, '#export-traces')).bytes.toString('utf8');
   cli('--traces', join(dir, 'traces.csv'));
+  // The PDF is the figure `kumiki sweep --plot pdf` writes, byte for byte.
+  cli('--plot', 'pdf', '--plot-dir', dir);
+  assert.ok(pdf.bytes.equals(readFileSync(join(dir, 'e2e-small-1.pdf'))), 'the page saves the PDF the CLI writes');
   assert.equal(traces, readFileSync(join(dir, 'traces.csv'), 'utf8'));
   assert.match(traces, /\nscenario,seed,params\.robots,step \[steps\],metric,unit,value\namas-L,1,1,0,built,fraction,/);
   assert.deepEqual(problems, []);

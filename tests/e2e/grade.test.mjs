@@ -1,14 +1,21 @@
 // The Grade view: a class of 30 hand-ins (fair ones, ones that miss the goal, ones that changed a
 // locked field, ones that edited the exercise, broken links and a row with no link) pasted as a
 // form's CSV export, graded against a lesson in wasm workers, the same as `kumiki check` grades
-// them, and exported as CSV.
+// them, and exported as CSV; a form's export with answers over several lines and the same class
+// as an .xlsx workbook, graded by the exercise the links carry, with points per part, the answers
+// and an over-budget row, the same verdicts and points as `kumiki check` on the same files; a file
+// that is neither refused with one message, the previous table gone.
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
+import { createRequire } from 'node:module';
 import { kumiki, loadWasm, openPage, session } from './harness.mjs';
+import { xlsx } from './xlsx.mjs';
 
+const require = createRequire(import.meta.url);
+const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
 const wasm = loadWasm();
 const s = session();
 const LESSON = 'lesson-amas-robots';
@@ -53,6 +60,81 @@ function classExport(base) {
   return { csv: `${rows.join('\n')}\n`, links };
 }
 
+/** The lesson with points for each part, a question, and a budget of 500 steps. */
+function creditExercise() {
+  const doc = JSON.parse(wasm.lesson_json(LESSON));
+  doc.exercise.credit = [
+    { goal: 'completed', points: 5 },
+    { goal: 'steps <= 300', points: 3 },
+    { goal: 'scenario.robots <= 6', points: 2 },
+  ];
+  doc.exercise.question = 'Why do more robots not always help?';
+  doc.exercise.budget = { steps: 500 };
+  return doc;
+}
+
+/** A student's hand-in of the exercise with `robots`, their name and answer, made by the page's Draft. */
+function handIn(base, teacher, robots, name, answer) {
+  const doc = structuredClone(teacher);
+  doc.robots = robots;
+  const draft = new wasm.Draft(2 ** 18);
+  assert.equal(draft.open(JSON.stringify(doc), false).problem ?? null, null);
+  return `${base}#${draft.handin(name, JSON.stringify({ made: '2026-11-28T10:15:00Z', checks: 2, hints: 1, answer }))}`;
+}
+
+/** A form's class: five rows, their answers over several lines, one row without a link. */
+function formClass(base) {
+  const teacher = creditExercise();
+  const students = [
+    [5, 'Ada', 'They collide at the corner.\nSix was best, "really".'],
+    [3, 'Grace', 'Three is slow.\n\nFour is enough.'],
+    [2, 'Linus', 'Two robots, so\nmany steps.'],
+    [8, 'Alan', "More is faster,\nisn't it?"],
+  ];
+  const rows = [['Timestamp', 'Full name', 'Kumiki link', teacher.exercise.question]];
+  for (const [i, [robots, name, answer]] of students.entries())
+    rows.push([`2026-11-28 10:1${i}:00`, name, handIn(base, teacher, robots, name, answer), answer]);
+  rows.push(['2026-11-28 10:19:00', 'Bob', 'I lost it', 'No idea,\nsorry.']);
+  const cell = (c) => (/[",\n]/.test(c) ? `"${c.replace(/"/g, '""')}"` : c);
+  return { rows, csv: `${rows.map((r) => r.map(cell).join(',')).join('\r\n')}\r\n` };
+}
+
+/** Serious and critical axe violations on the page as it stands. */
+async function audit(page) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
+  return page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
+      rules: { 'label-content-name-mismatch': { enabled: true } },
+      resultTypes: ['violations'],
+    });
+    return result.violations
+      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+      .map((v) => `${v.id} at ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+  });
+}
+
+/** Opens `file` in the Grade view, grades it by the exercise the links carry, and returns the table's cells. */
+async function gradeFile(page, file, rows) {
+  await page.setInputFiles('#grade-file', file);
+  if (file.endsWith('.xlsx')) await page.waitForFunction(() => /hand-ins?, read as it is/.test(document.querySelector('#grade-file-note').textContent));
+  else await page.waitForFunction(() => document.querySelector('#grade-input').value.includes('Full name'));
+  await page.fill('#grade-exercise', '');
+  await page.click('#grade-start');
+  await page.waitForFunction((n) => new RegExp(`^${n} hand-ins:`).test(document.querySelector('#grade-status').textContent), rows, { timeout: 120000 });
+  return page.$$eval('#grade-rows tr', (trs) => trs.map((tr) => ({ cells: [...tr.cells].map((c) => c.textContent), over: tr.classList.contains('over') })));
+}
+
+/** kumiki check on the same file, by the exercise the links carry: one record a row. */
+function checked(file) {
+  return kumiki(['check', '--file', file])
+    .trim()
+    .split('\n')
+    .map((l) => JSON.parse(l));
+}
+
+const verdictOf = (r) => (r.error !== undefined ? 'could not be graded' : r.over_budget ? 'over budget' : r.met ? 'met' : 'not met');
+
 describe('the Grade view', () => {
   test('grades a class of 30 in one go, the same as kumiki check, and exports CSV', async () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url);
@@ -83,7 +165,7 @@ describe('the Grade view', () => {
       .trim()
       .split('\n');
     assert.equal(exported.length, 31);
-    assert.match(exported[0], /^handin,student,name,met,because,completed,steps,hash,locked_edited,changed,exercise_edited,/);
+    assert.match(exported[0], /^handin,student,name,met,points,max_points,because,completed,steps,over_budget,hash,/);
 
     // kumiki check on the same links, graded against the same lesson.
     const list = join(tmpdir(), `kumiki-class-${process.pid}.txt`);
@@ -96,7 +178,7 @@ describe('the Grade view', () => {
     assert.equal(cli.length, 30);
     const verdict = (r) => (r.error !== undefined ? 'could not be graded' : r.met ? 'met' : 'not met');
     for (const [i, row] of cli.entries()) {
-      const [, , goal, steps, , why, hash] = shown[i];
+      const [, , goal, , steps, , why, , hash] = shown[i];
       assert.equal(goal, verdict(row), `hand-in ${i + 1}: the verdict`);
       if (row.error !== undefined) continue;
       assert.equal(steps, row.steps.toLocaleString('en-US'), `hand-in ${i + 1}: steps`);
@@ -109,8 +191,83 @@ describe('the Grade view', () => {
     // Every kind of hand-in is in the class: the fair ones meet the goal, and only they.
     assert.equal(counts.met, 5);
     assert.equal(counts['could not be graded'], 5);
-    assert.ok(shown[4][5].startsWith("not replayed: its exercise is not the class's (locked.collision differs)"), shown[4][5]);
-    assert.match(shown[3][5], /seed: 1 → 2/);
+    assert.ok(shown[4][6].startsWith("not replayed: its exercise is not the class's (locked.collision differs)"), shown[4][6]);
+    assert.match(shown[3][6], /seed: 1 → 2/);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test("a form's export with answers over several lines, and the same class as .xlsx, grade as kumiki check grades them", async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    const { rows, csv } = formClass(s.server.url);
+    const csvFile = join(tmpdir(), `kumiki-form-${process.pid}.csv`);
+    const xlsxFile = join(tmpdir(), `kumiki-form-${process.pid}.xlsx`);
+    writeFileSync(csvFile, csv);
+    writeFileSync(xlsxFile, xlsx(rows));
+    await page.click('#open-gallery');
+    await page.click('#open-grade');
+    await page.waitForSelector('#grade[open]');
+
+    for (const file of [csvFile, xlsxFile]) {
+      const shown = await gradeFile(page, file, 5);
+      const cli = checked(file);
+      assert.equal(shown.length, 5, `${file}: one row a hand-in, however many lines its answer takes`);
+      assert.equal(cli.length, 5);
+      assert.deepEqual(
+        shown.map((r) => r.cells[1]),
+        ['Ada', 'Grace', 'Linus', 'Alan', 'Bob'],
+      );
+      for (const [i, row] of cli.entries()) {
+        const [number, , goal, points] = shown[i].cells;
+        assert.equal(number, String(i + 1));
+        assert.equal(goal, verdictOf(row), `${file}, row ${i + 1}: the verdict`);
+        assert.equal(shown[i].over, row.over_budget === true, `${file}, row ${i + 1}: marked over budget`);
+        if (row.error !== undefined) continue;
+        assert.ok(points.startsWith(`${row.points} of ${row.max_points}`), `${file}, row ${i + 1}: ${points} / ${row.points} of ${row.max_points}`);
+      }
+      // Every kind of row is there: met with every point, parts earned, over budget, no link.
+      assert.deepEqual(
+        shown.map((r) => r.cells[2]),
+        ['met', 'not met', 'over budget', 'not met', 'could not be graded'],
+      );
+      assert.ok(shown[0].cells[3].startsWith('10 of 10'));
+      assert.match(shown[1].cells[3], /^7 of 10.*0 of 3: steps <= 300/);
+      // Named by the line it starts on: after answers over several lines in the CSV, a workbook's row.
+      assert.ok(shown[4].cells[6].startsWith(`holds no Kumiki link (line ${file.endsWith('.xlsx') ? 6 : 11} of the file)`), shown[4].cells[6]);
+      // The answer, as the hand-in carries it, and its record.
+      assert.equal(
+        await page.$eval('#grade-rows tr:first-child .grade-answer bdi', (b) => b.textContent),
+        'They collide at the corner.\nSix was best, "really".',
+      );
+      assert.match(shown[0].cells[7], /handed in 2026-11-28T10:15:00Z, 2 checks, 1 hint$/);
+      // No exercise was given: the one the links carry, named, with its question.
+      assert.match(
+        await page.textContent('#grade-exercise-note'),
+        /^Graded by “How many robots build the L quickly\?”, which 4 of the 4 hand-ins with an exercise carry \(none was given\)\. It asks: Why do more robots not always help\?/,
+      );
+      assert.equal(await page.textContent('#grade-status'), '5 hand-ins: 1 met, 3 not met (1 over budget), 1 could not be graded.');
+      // The export is the CSV kumiki check writes for the same file, byte for byte.
+      const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-export')]);
+      assert.equal(readFileSync(await download.path(), 'utf8'), kumiki(['check', '--file', file, '--format', 'csv']), `${file}: the export`);
+    }
+    assert.deepEqual(await audit(page), [], 'axe, with the graded table');
+
+    // A file that is neither text nor a workbook: one message, and the previous table and tally go.
+    const junk = join(tmpdir(), `kumiki-junk-${process.pid}.png`);
+    writeFileSync(junk, Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13, 0xff, 0xfe, 0]));
+    await page.setInputFiles('#grade-file', junk);
+    await page.waitForFunction(() => /neither text/.test(document.querySelector('#grade-status').textContent));
+    assert.match(await page.textContent('#grade-status'), /^kumiki-junk-\d+\.png: this file is neither text .* nor a workbook/);
+    assert.equal(await page.locator('#grade-rows tr').count(), 0);
+    assert.equal(await page.isDisabled('#grade-export'), true);
+    assert.equal(await page.getAttribute('#grade-progress', 'aria-valuenow'), '0');
+    // A mistyped exercise: refused by its name, the table empty again.
+    await page.fill('#grade-input', csv);
+    await page.fill('#grade-exercise', 'lesson-amas-robotz');
+    await page.click('#grade-start');
+    await page.waitForFunction(() => /^Not graded: /.test(document.querySelector('#grade-status').textContent));
+    assert.equal(await page.locator('#grade-rows tr').count(), 0);
+    assert.equal(await page.getAttribute('#grade-exercise', 'aria-invalid'), 'true');
     assert.deepEqual(problems, []);
     await context.close();
   });

@@ -91,7 +91,7 @@ describe('the run recorded and told', () => {
     assert.ok(Number(chart.max) > 0, `the fault's rise in the difference is recorded: ${JSON.stringify(chart)}`);
     assert.equal(Number(chart.min), 0, 'and the repaired, complete shape');
     const text = await heard(page);
-    assert.match(text, /Step 10: fault, unit 3\./);
+    assert.match(text, /Step 10: fault, unit 1\./);
     assert.match(text, new RegExp(`Completed in ${steps} steps\\.`));
     assert.match(await page.textContent('#run-live'), /Completed in/);
     assert.deepEqual(problems, []);

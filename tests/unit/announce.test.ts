@@ -1,6 +1,11 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { beforeAll, afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+
 import { Announcer, CALM_MS } from '../../web/features/announce/announcer';
 import type { Frame } from '../../web/contract.gen';
+import { startCore } from './page';
+
+// Numbers are written by the core's one rule (web/wasm.ts's formatNumber).
+beforeAll(startCore);
 
 /** A live region stand-in that keeps every text it is given. */
 function region() {

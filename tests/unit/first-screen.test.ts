@@ -1,7 +1,8 @@
 // @vitest-environment happy-dom
 // The first screen's logic, without a browser: which metrics show first, where the tour's box and
 // the metric tooltips go, and how the tabs gather the features' sections.
-import { describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
+
 import type { MetricInfo } from '../../web/contract.gen';
 import { arrangeMetrics, metricCard, metricText } from '../../web/features/run/cards';
 import { MIN_WIDTH, placeBeside, type Rect } from '../../web/features/welcome/place';
@@ -9,6 +10,10 @@ import { Events } from '../../web/page/events';
 import type { PageEvents } from '../../web/page/context';
 import { Tabs } from '../../web/page/tabs';
 import { tipPlace } from '../../web/widgets/tooltip';
+import { startCore } from './page';
+
+// Numbers are written by the core's one rule (web/wasm.ts's formatNumber).
+beforeAll(startCore);
 
 const info = (name: string, shown: MetricInfo['shown']): MetricInfo => ({ name, unit: 'count', about: `About ${name}.`, shown });
 

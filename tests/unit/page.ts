@@ -5,7 +5,7 @@
 // its frames come back. Only the drawing is left out: the view is a stand-in that keeps its marks.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import type { Comparison, Frame, Proposal, SlotDoc } from '../../web/contract.gen';
+import type { Comparison, Frame, Proposal, SlotDoc, Verdict } from '../../web/contract.gen';
 import type { Feature, PageContext, PageEvents } from '../../web/page/context';
 import { Events } from '../../web/page/events';
 import { Session } from '../../web/page/session';
@@ -16,8 +16,7 @@ import * as wasm from '../../web/pkg/kumiki_wasm.js';
 import * as rulesWasm from '../../web/pkg/kumiki_wasm_rules.js';
 import type { View } from '../../web/render/view';
 import type { SimClient, SimEvents } from '../../web/sim/client';
-import type { Proposed } from '../../web/sim/protocol';
-import type { RuleQueries } from '../../web/sim/rules';
+import type { ClickState, Proposed, ToWorker } from '../../web/sim/protocol';
 import { Banner } from '../../web/widgets/banner';
 
 const root = (path: string) => resolve(__dirname, '../..', path);
@@ -94,18 +93,15 @@ class Worker {
     this.draft = new this.module.Draft(1 << 18);
   }
 
-  /** The rules module's answers, as the worker gives them ('rule-slots', 'check-rule'). */
-  readonly rules: RuleQueries = {
-    slots: async () => {
-      await later();
-      return startRules().rule_slots() as SlotDoc[];
-    },
-    check: async (model, slot, source) => {
-      this.sent.push(`check-rule ${model}.${slot}`);
-      await later();
-      return startRules().check_rule(model, slot, source) ?? null;
-    },
-  };
+  /** The worker's answers to the questions only its rules module answers ('rule-slots', 'check-rule'). */
+  async ask(message: (id: number) => ToWorker): Promise<unknown> {
+    const msg = message(0);
+    await later();
+    if (msg.type === 'rule-slots') return startRules().rule_slots() as SlotDoc[];
+    if (msg.type !== 'check-rule') throw new Error(`the test's worker answers no '${msg.type}'`);
+    this.sent.push(`check-rule ${msg.model}.${msg.slot}`);
+    return { problem: startRules().check_rule(msg.model, msg.slot, msg.source) ?? null };
+  }
 
   private answer(id: number, proposal: Proposal, ask: boolean): Proposed {
     const large = proposal.large_cells > 0;
@@ -161,12 +157,48 @@ class Worker {
     void later().then(() => this.start(0, () => this.module.Sim.start(this.draft)));
   }
 
-  async link(name?: string): Promise<string> {
-    return this.draft.link(name);
+  async link(name?: string, record?: Record<string, unknown>): Promise<string> {
+    if (!record) return this.draft.link(name);
+    this.sent.push(`handin ${name}`);
+    await later();
+    return this.draft.handin(name ?? '', JSON.stringify(record));
+  }
+
+  /** The exercise's verdict on the run as it stands, as the worker's 'check' answers it. */
+  check() {
+    void later().then(() => {
+      const sim = this.sim;
+      const verdict = sim?.check_goal() as Verdict | undefined;
+      if (sim && verdict) this.on().goal(verdict.met, verdict.because, sim.steps(), verdict.credit ?? []);
+    });
   }
 
   async goalProblem(goal: string, metrics: string[]): Promise<string | null> {
     return this.draft.goal_problem(goal, metrics) ?? null;
+  }
+
+  async clicks(tools: { kind: string; label: string }[]): Promise<ClickState[]> {
+    this.sent.push(`clicks ${tools.map((t) => t.kind).join(',')}`);
+    await later();
+    return tools.map((t) => ({ problem: this.draft.click_problem(t.kind, t.label) ?? null, left: this.draft.clicks_left(t.kind) ?? null }));
+  }
+
+  /** A click tool's action, applied now and recorded in the scenario in view, as the worker does. */
+  apply(action: Record<string, unknown>) {
+    this.sent.push(`apply ${JSON.stringify(action)}`);
+    void later().then(() => {
+      const sim = this.sim;
+      if (!sim) return;
+      try {
+        sim.apply(JSON.stringify(action));
+      } catch (e) {
+        this.on().error(e instanceof Error ? e.message : String(e), 'apply');
+        return;
+      }
+      this.draft.ran(sim);
+      this.on().scenario(sim.scenario_json(), this.draft.comparison() as Comparison);
+      this.frame();
+    });
   }
 
   step(count: number) {

@@ -82,11 +82,18 @@ describe('the click tools', () => {
     expect(p.session.doc().disturbances ?? []).toEqual([]);
   });
 
-  it('are not offered when the exercise locks the disturbances', async () => {
+  it('are offered locked, each with the reason, when the exercise allows no disturbance', async () => {
     const doc = { ...JSON.parse(preset('amas-L')), disturbances: [{ at: 5, kind: 'remove', count: 2 }] };
     doc.exercise = { title: 'Locked', instructions: 'Watch.', locked: { disturbances: doc.disturbances }, goal: 'completed', hints: [] };
-    await page(JSON.stringify(doc));
-    expect(all('#tools button').map((b) => b.dataset.tool)).toEqual(['inspect']);
+    const { page: p, until } = await page(JSON.stringify(doc));
+    const tools = p.session.layout?.tools ?? [];
+    expect(all('#tools button').map((b) => b.dataset.tool)).toEqual(['inspect', ...tools.map((t) => t.name)]);
+    await until(() => all('#tools button[aria-disabled="true"]').length === tools.length, 'the locks');
+    for (const t of tools) {
+      const b = $(`#tools button[data-tool="${t.name}"]`);
+      const why = document.getElementById(b.getAttribute('aria-describedby') ?? '')?.textContent;
+      expect(why).toBe(`${t.label} is locked by the exercise: it allows no '${t.action.kind}' disturbance`);
+    }
     // Nor is a way to clear those it carries.
     expect(document.querySelector('.recorded')).toBeNull();
   });

@@ -4,7 +4,7 @@
 // handed, compiled, to the experiment and grading workers. Call `loadLab` before the rest.
 import labUrl from '../pkg/kumiki_lab_bg.wasm?url';
 import type * as Lab from '../pkg/kumiki_lab.js';
-import type { ExperimentInfo, Figure, Finding, Section } from '../contract.gen';
+import type { ClassExercise, ExperimentInfo, Figure, Finding, Handin2, Section } from '../contract.gen';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 let loading: Promise<void> | null = null;
@@ -51,6 +51,9 @@ export const experimentInfo = (json: string): ExperimentInfo => {
 /** Each figure of an experiment's plots from its rows (a JSON array), and its SVG. */
 export const experimentFigures = (experiment: string, rowsJson: string): { figure: Figure; svg: string }[] =>
   loaded().experiment_figures(experiment, rowsJson) as { figure: Figure; svg: string }[];
+/** Figure `index` of an experiment's plots from its rows, as a one-page PDF (the bytes `kumiki sweep --plot pdf` writes). */
+export const experimentFigurePdf = (experiment: string, rowsJson: string, index: number): Uint8Array<ArrayBuffer> =>
+  loaded().experiment_figure_pdf(experiment, rowsJson, index) as Uint8Array<ArrayBuffer>;
 /** The rows exported with their provenance, the bytes `kumiki sweep` writes (`csv`, `json` lines, `traces`). */
 export const experimentExport = (experiment: string, rowsJson: string, format: 'csv' | 'json' | 'traces', time: string): string =>
   loaded().experiment_export(experiment, rowsJson, format, time);
@@ -68,5 +71,12 @@ export const reproduceClaim = (model: string, id: string, rows: Record<string, s
   ) as Finding;
 /** The title of the teacher's exercise (a link or a lesson's name) the Grade view grades by; throws why it cannot. */
 export const exerciseTitle = (text: string): string => loaded().exercise_title(text);
+/** The hand-ins in a class's file (links, a form's CSV or text export, or a workbook), numbered as the grade table numbers them; throws one message for any other file. */
+export const readHandins = (bytes: Uint8Array): Handin2[] => loaded().read_handins(bytes) as Handin2[];
+/** The class's exercise: the teacher's (a link or a lesson's name) or, when none is given, the one most of the `links` carry; throws why it cannot grade. */
+export const classExercise = (exercise: string | null, links: string[]): ClassExercise =>
+  loaded().class_exercise(exercise ?? undefined, links) as ClassExercise;
+/** The grade table's CSV (`rowsJson`: its rows as JSON), as `kumiki check --format csv` writes it. */
+export const gradeTableCsv = (rowsJson: string, teacher: string): string => loaded().grades_csv(rowsJson, teacher);
 /** The reproduction report's section of each model (docs/reproduction.json, as `kumiki reproduce` wrote it). */
 export const reproductionReport = (): Record<string, Section> => loaded().reproduction_report() as Record<string, Section>;

@@ -2,7 +2,7 @@
 // features). A feature reads and changes the scenario through the session, drives the run through
 // the simulation client, and tells the other features what happened through the page's events:
 // no feature imports another.
-import type { Frame } from '../contract.gen';
+import type { Credit, Frame } from '../contract.gen';
 import type { Hit, RendererKind, View } from '../render/view';
 import type { RendererChoice } from '../sim/protocol';
 import type { SimClient } from '../sim/client';
@@ -34,7 +34,7 @@ export interface PageEvents {
   /** Something to say in the run's live region for screen readers. */
   say: string;
   /** The exercise's verdict on the run: when it ends, or when asked. */
-  goal: { met: boolean; because: string; steps: number };
+  goal: { met: boolean; because: string; steps: number; credit: Credit[] };
   /** A student handed in their exercise: the link and their name. */
   handin: { link: string; name: string };
   /** The view draws with this renderer (it started, or the choice changed). */

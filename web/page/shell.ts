@@ -59,7 +59,7 @@ export function workerEvents(page: () => PageContext, large: Pick<LargeOpening, 
       else if (context === 'load') banner.report(`This scenario cannot run: ${message}`);
       else banner.report(message);
     },
-    goal: (met, because, steps) => page().events.emit('goal', { met, because, steps }),
+    goal: (met, because, steps, credit) => page().events.emit('goal', { met, because, steps, credit }),
     stalled(ms) {
       const { banner, sim } = page();
       // The opening notice says what the worker is busy with and offers its own way to stop.

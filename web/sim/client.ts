@@ -1,13 +1,12 @@
 // The page's side of the simulation worker. It restarts the worker after a panic, with the last
 // scenario that loaded, so the page stays usable. The worker holds the scenario in view (its
 // Draft) beside the run: this client is the session's way to it (web/page/session.ts).
-import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
+import type { Comparison, Credit, Facts, Frame, Layout } from '../contract.gen';
 import type { ScenarioOwner } from '../page/session';
 import type { Drawn, WorkerTiming } from '../types';
 import { wasmModule } from '../wasm';
-import type { CameraMove, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
+import type { CameraMove, ClickState, FromWorker, Picked, Proposed, RendererChoice, ToWorker, ViewMarks } from './protocol';
 import { type Progress, type Recorded, type RecordSettings, Recordings } from './record';
-import { type RuleQueries, ruleQueries } from './rules';
 
 export interface SimEvents {
   /** A run started: of the request `id` (0: a reset, a restart, a follower's scenario). */
@@ -19,7 +18,7 @@ export interface SimEvents {
   error(message: string, context: 'load' | 'apply' | 'step'): void;
   panic(message: string): void;
   /** The exercise's goal judged on the run: when it ends, or when asked with `check`. */
-  goal(met: boolean, because: string, steps: number): void;
+  goal(met: boolean, because: string, steps: number, credit: Credit[]): void;
   /** The worker has not answered for `ms` milliseconds (`ms` is 0 once it answers again). */
   stalled(ms: number): void;
   /** The worker's view started drawing with this renderer. */
@@ -46,8 +45,6 @@ export class SimClient implements ScenarioOwner {
   private answers = new Map<number, (value: unknown) => void>();
   private askId = 0;
   private readonly recordings = new Recordings();
-  /** The Rules tab's questions, answered by the worker's rules module (fetched the first time). */
-  readonly rules: RuleQueries = ruleQueries((message) => this.ask(message));
   private canvases: ViewCanvases | null = null;
   private viewState: { size: { width: number; height: number; dpr: number } | null; marks: ViewMarks | null } = { size: null, marks: null };
   private speed = 30;
@@ -195,8 +192,8 @@ export class SimClient implements ScenarioOwner {
   record(settings: RecordSettings, signal: AbortSignal, progress: Progress): Promise<Recorded> {
     return this.recordings.start(settings, signal, progress, (msg) => this.send(msg));
   }
-
-  private ask(message: (id: number) => ToWorker): Promise<unknown> {
+  /** Asks the worker `message` (given its id) and resolves to its 'answer' (null if it restarted first). */
+  ask(message: (id: number) => ToWorker): Promise<unknown> {
     const id = ++this.askId;
     return new Promise((resolve) => {
       this.answers.set(id, resolve);
@@ -214,7 +211,7 @@ export class SimClient implements ScenarioOwner {
       case 'ready':
         return;
       case 'goal':
-        this.on.goal(msg.met, msg.because, msg.steps);
+        this.on.goal(msg.met, msg.because, msg.steps, msg.credit);
         return;
       case 'pong':
         this.unanswered = null;
@@ -329,15 +326,20 @@ export class SimClient implements ScenarioOwner {
     this.last = null;
     this.send({ type: 'reset' });
   }
-  link(name?: string): Promise<string> {
-    return this.ask((id) => ({ type: 'link', id, name: name ?? null })).then((value) => {
+  /** The share-link payload of the scenario in view; named `name` with a `record` (when, checks, hints, the answer), its hand-in link. */
+  link(name?: string, record?: { made: string; checks: number; hints: number; answer?: string }): Promise<string> {
+    const handin = record && JSON.stringify(record);
+    return this.ask((id) => (handin ? { type: 'handin', id, name: name ?? '', record: handin } : { type: 'link', id, name: name ?? null })).then((value) => {
       if (typeof value === 'string') return value;
-      const problem = value as { error?: string } | null;
-      throw new Error(problem?.error ?? 'the simulation stopped before it made the link');
+      throw new Error((value as { error?: string } | null)?.error ?? 'the simulation stopped before it made the link');
     });
   }
   goalProblem(goal: string, metrics: string[]): Promise<string | null> {
     return this.ask((id) => ({ type: 'goal-problem', id, goal, metrics })) as Promise<string | null>;
+  }
+  /** Whether the exercise in view lets each of `tools` (its action's kind and its label) be clicked. */
+  clicks(tools: { kind: string; label: string }[]): Promise<ClickState[]> {
+    return this.ask((id) => ({ type: 'clicks', id, tools })) as Promise<ClickState[]>;
   }
   play() {
     if (this.followerAlone) this.follower?.play();

@@ -4,7 +4,7 @@
 // only after the page has taken the last, so a fast simulation never floods the page. Timing here
 // paces the run; it never enters the model.
 import { panic_message, type Sim, type Viewer } from '../pkg/kumiki_wasm.js';
-import type { Check, Frame } from '../contract.gen';
+import type { Frame, Verdict } from '../contract.gen';
 import type { Drawn, WorkerTiming } from '../types';
 import type { RenderStats } from '../view.gen';
 import type { FromWorker } from './protocol';
@@ -228,8 +228,8 @@ export function stepped() {
 
 /** Posts the exercise's verdict on the run as it stands, and why a rule's script stopped it (the rule, the line, the cap). */
 export function judge(s: Sim) {
-  const result = guard('step', () => s.check_goal() as Check | undefined);
-  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps() });
+  const result = guard('step', () => s.check_goal() as Verdict | undefined);
+  if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps(), credit: result.credit ?? [] });
   if (s.stopped()) post({ type: 'error', message: `The run stopped: ${s.stopped()}`, context: 'step' });
 }
 

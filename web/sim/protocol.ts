@@ -4,7 +4,7 @@
 // the worker too: only its progress and the finished file come back. While it runs, the worker
 // takes only 'ack' and 'record-cancel' (and answers pings); every other message waits, in order,
 // until the recording ends, so nothing moves the run or the view under the recording.
-import type { Comparison, Facts, Frame, Layout } from '../contract.gen';
+import type { Comparison, Credit, Facts, Frame, Layout } from '../contract.gen';
 import type { Marks as ViewMarks } from '../view.gen';
 import type { Drawn, WorkerTiming } from '../types';
 import type { RecordSettings } from './record';
@@ -33,6 +33,14 @@ export interface Proposed {
   text: string | null;
 }
 
+/** What the exercise in view says of one click tool (its Draft's `click_problem` and `clicks_left`). */
+export interface ClickState {
+  /** Why a click of it may not be made, in words to show where the click is made; null when it may. */
+  problem: string | null;
+  /** How many more of its kind the exercise lets a student add; null when no exercise counts them. */
+  left: number | null;
+}
+
 export type ToWorker =
   /** The wasm module the page compiled: the worker starts with it, without compiling its own. */
   | { type: 'module'; module: WebAssembly.Module }
@@ -50,8 +58,12 @@ export type ToWorker =
   | { type: 'reset' }
   /** The share-link payload of the scenario in view (named `name`, a hand-in), as an 'answer'. */
   | { type: 'link'; id: number; name: string | null }
+  /** The hand-in link of the exercise in view, named `name`, with its record (`record`: JSON), as an 'answer' (or `{ error }`). */
+  | { type: 'handin'; id: number; name: string; record: string }
   /** What is wrong with an exercise goal for the scenario in view, as an 'answer' (null: nothing). */
   | { type: 'goal-problem'; id: number; goal: string; metrics: string[] }
+  /** Whether the exercise in view lets each click tool be used, as an 'answer': a `ClickState` each. */
+  | { type: 'clicks'; id: number; tools: { kind: string; label: string }[] }
   | { type: 'play' }
   | { type: 'pause' }
   | { type: 'step'; count: number }
@@ -105,7 +117,8 @@ export type FromWorker =
   | { type: 'error'; message: string; context: 'load' | 'apply' | 'step' }
   | { type: 'panic'; message: string }
   | { type: 'pong'; id: number }
-  | { type: 'goal'; met: boolean; because: string; steps: number }
+  /** The exercise's verdict on the run: met, why, and the points of each credit part (`Credit`) when it gives some. */
+  | { type: 'goal'; met: boolean; because: string; steps: number; credit: Credit[] }
   | { type: 'viewer'; kind: 'webgl2' | 'canvas2d' }
   /** The view was drawn again with nothing new for the panels (a camera move). */
   | { type: 'drew'; work: WorkerTiming }

@@ -26,7 +26,7 @@ import {
   touched,
   untold,
 } from './pace';
-import type { Proposed, ToWorker } from './protocol';
+import type { ClickState, Proposed, ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
 import { carriesRules, editsRules } from './rules';
 
@@ -42,11 +42,8 @@ let rulesMemory: WebAssembly.Memory | null = null;
 /** The scenario in view's text, to open it again in the rules module's Draft when the worker switches. */
 let inView: string | null = null;
 /** The page's canvases and what it last asked of the view, to draw again with the rules module's Viewer. */
-let viewAsked: { view: Extract<ToWorker, { type: 'view' }> | null; resize: ToWorker | null; marks: ToWorker | null } = {
-  view: null,
-  resize: null,
-  marks: null,
-};
+type ViewAsked = { view: Extract<ToWorker, { type: 'view' }> | null; resize: ToWorker | null; marks: ToWorker | null };
+let viewAsked: ViewAsked = { view: null, resize: null, marks: null };
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
@@ -149,9 +146,25 @@ function handle(msg: ToWorker) {
       post({ type: 'answer', id: msg.id, value });
       return;
     }
+    case 'handin': {
+      let value: unknown;
+      try {
+        value = needDraft().handin(msg.name, msg.record);
+      } catch (e) {
+        value = { error: e instanceof Error ? e.message : String(e) };
+      }
+      post({ type: 'answer', id: msg.id, value });
+      return;
+    }
     case 'goal-problem':
       post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
       return;
+    case 'clicks': {
+      const d = needDraft();
+      const value: ClickState[] = msg.tools.map((t) => ({ problem: d.click_problem(t.kind, t.label) ?? null, left: d.clicks_left(t.kind) ?? null }));
+      post({ type: 'answer', id: msg.id, value });
+      return;
+    }
     case 'play':
       return play();
     case 'pause':

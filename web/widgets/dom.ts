@@ -1,5 +1,6 @@
 // Small DOM helpers. Text is always set through textContent: names and descriptions can come
 // from a link and are never parsed as HTML.
+import * as core from '../wasm';
 
 export function byId<T extends HTMLElement = HTMLElement>(id: string): T {
   const el = document.getElementById(id);
@@ -26,7 +27,7 @@ export function clear(node: Element) {
 }
 
 /** A file name for figure `index` (from 1) of an experiment: `amas-fig23-1.svg`. */
-export function figureFileName(experiment: string, index: number, ext: 'svg' | 'png'): string {
+export function figureFileName(experiment: string, index: number, ext: 'svg' | 'png' | 'pdf'): string {
   const base = experiment.replace(/[^A-Za-z0-9._-]+/g, '-').replace(/^-+|-+$/g, '') || 'experiment';
   return `${base}-${index}.${ext}`;
 }
@@ -44,9 +45,7 @@ export function download(name: string, data: BlobPart, type: string) {
 export function formatNumber(v: unknown): string {
   if (typeof v === 'boolean') return v ? 'yes' : 'no';
   if (typeof v !== 'number') return v === null || v === undefined ? '–' : String(v);
-  if (Number.isInteger(v)) return v.toLocaleString('en-US');
-  if (Math.abs(v) >= 1000) return v.toLocaleString('en-US', { maximumFractionDigits: 1 });
-  return Number(v.toPrecision(4)).toString();
+  return core.formatNumber(v);
 }
 
 /** True when a key press is meant for a text field rather than the page's shortcuts. */

@@ -159,6 +159,17 @@ impl Draft {
         exercise.click_problem(kind, label, crate::exercise::listed(&doc))
     }
 
+    /// How many more disturbances of `kind` the exercise in view lets a student add (its
+    /// allowance less those the scenario already adds), for the page to count down beside the
+    /// tool; `None` when no exercise is in view (clicks are not counted).
+    pub fn clicks_left(&self, kind: &str) -> Option<u32> {
+        let doc = self.document().ok()?;
+        let exercise: crate::exercise::Exercise =
+            serde_json::from_value(doc.get("exercise")?.clone()).ok()?;
+        let added = exercise.added(kind, crate::exercise::listed(&doc));
+        Some(exercise.allowed(kind).saturating_sub(added))
+    }
+
     /// The scenario in view's comparison. Its `compare` section was checked with the scenario, so
     /// nothing is checked again here: the second run's worker checks the second scenario as it
     /// opens it. A scenario too large to check at once is not run twice.
@@ -331,6 +342,7 @@ mod tests {
             draft.click_problem("dismantle", "Mark to be removed (6.2)").unwrap(),
             "Mark to be removed (6.2) is locked by the exercise: it allows no 'dismantle' disturbance"
         );
+        assert_eq!(draft.clicks_left("dismantle"), Some(0));
         let record =
             json!({"made": "2026-11-28T10:15:00Z", "checks": 2, "hints": 1, "answer": "A T."});
         let link = draft.handin("Ada", record).unwrap();
@@ -344,6 +356,11 @@ mod tests {
             .starts_with("handin.made:"));
         draft = opened("amas-L");
         assert_eq!(draft.click_problem("remove", "Remove module"), None);
+        assert_eq!(
+            draft.clicks_left("remove"),
+            None,
+            "no exercise: not counted"
+        );
         assert!(
             draft.handin("Ada", json!({})).is_err(),
             "no exercise in view"

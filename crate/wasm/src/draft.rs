@@ -68,6 +68,12 @@ impl Draft {
         self.draft.click_problem(kind, label)
     }
 
+    /// How many more disturbances of `kind` the exercise in view lets a student add; undefined
+    /// when no exercise is in view.
+    pub fn clicks_left(&self, kind: &str) -> Option<u32> {
+        self.draft.clicks_left(kind)
+    }
+
     /// The scenario in view's `Comparison`.
     pub fn comparison(&self) -> Result<JsValue, JsError> {
         to_js(&self.draft.comparison().map_err(js_err)?)

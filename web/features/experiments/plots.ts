@@ -1,8 +1,9 @@
 // Draws an experiment's plots: the core computes each figure from the rows and draws it as SVG
 // (crate/core/src/plot), the same figure `kumiki sweep --plot svg` writes; the page shows it,
-// writes a summary as a table, and saves each figure as SVG or PNG (twice the size).
+// writes a summary as a table with its tests, and saves each figure as SVG, PNG (twice the size)
+// or PDF (the core's own layout, `kumiki sweep --plot pdf`).
 import type { Figure } from '../../contract.gen';
-import { experimentFigures } from '../../lab';
+import { experimentFigurePdf, experimentFigures } from '../../lab';
 import { clear, download, el, figureFileName, formatNumber } from '../../widgets/dom';
 
 /** The SVG as a PNG of twice its size, drawn on a white background. */
@@ -64,17 +65,32 @@ function summaryTable(f: Figure): HTMLElement {
   }
   table.append(body);
   const box = el('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `${f.title || 'Summary'}: statistics per condition` }, table);
-  if (f.comparisons.length) {
+  if (f.omnibus.length) {
     const list = el('ul', { class: 'comparisons' });
-    for (const c of f.comparisons) {
-      const k = c.comparison;
+    for (const o of f.omnibus) {
+      const t = o.test;
       list.append(
         el('li', {
-          text: `${words(c.value)}, ${c.conditions[0]} against ${c.conditions[1]}: difference of means ${formatNumber(k.difference)}, Cohen's d ${formatNumber(k.cohens_d)}, rank-biserial correlation ${formatNumber(k.rank_biserial)}, Mann-Whitney U = ${formatNumber(k.u)}, p = ${formatNumber(k.p)} (${k.method})`,
+          text: `${words(o.value)}, ${o.conditions.length} conditions: Kruskal-Wallis H = ${formatNumber(t.h)}, df = ${t.df}, n = ${t.n}, p = ${formatNumber(t.p)}`,
         }),
       );
     }
-    box.append(el('p', { class: 'hint', text: 'Two conditions compared:' }), list);
+    box.append(el('p', { class: 'hint', text: 'All conditions at once:' }), list);
+  }
+  if (f.comparisons.length) {
+    const list = el('ul', { class: 'comparisons' });
+    const corrected = f.comparisons.some((c) => c.p_holm !== undefined && c.p_holm !== null);
+    for (const c of f.comparisons) {
+      const k = c.comparison;
+      const holm = c.p_holm === undefined || c.p_holm === null ? '' : `, Holm-corrected p = ${formatNumber(c.p_holm)}`;
+      list.append(
+        el('li', {
+          text: `${words(c.value)}, ${c.conditions[0]} against ${c.conditions[1]}: difference of means ${formatNumber(k.difference)}, Cohen's d ${formatNumber(k.cohens_d)}, rank-biserial correlation ${formatNumber(k.rank_biserial)}, Mann-Whitney U = ${formatNumber(k.u)}, p = ${formatNumber(k.p)} (${k.method})${holm}`,
+        }),
+      );
+    }
+    const lead = corrected ? 'Each pair of conditions compared (p corrected for the number of pairs by Holm’s method).' : 'Two conditions compared.';
+    box.append(el('p', { class: 'hint', text: `${lead} ${f.direction}` }), list);
   }
   return box;
 }
@@ -82,7 +98,8 @@ function summaryTable(f: Figure): HTMLElement {
 /** Draws every figure of `experiment` (its JSON text or built-in name) from the rows' JSON texts. */
 export function renderPlots(root: HTMLElement, experiment: string, name: string, rowTexts: string[]) {
   clear(root);
-  const drawn = experimentFigures(experiment, `[${rowTexts.join(',')}]`);
+  const rowsJson = `[${rowTexts.join(',')}]`;
+  const drawn = experimentFigures(experiment, rowsJson);
   drawn.forEach(({ figure, svg }, i) => {
     const box = el('figure', { class: 'plot', 'data-kind': figure.kind });
     const heading = figure.title || `Figure ${i + 1}`;
@@ -101,7 +118,9 @@ export function renderPlots(root: HTMLElement, experiment: string, name: string,
     const asPng = el('button', { type: 'button', text: 'Save PNG (2×)', 'aria-label': `Save PNG (2×) of “${heading}”, twice its size` });
     asSvg.addEventListener('click', () => download(figureFileName(name, i + 1, 'svg'), svg, 'image/svg+xml'));
     asPng.addEventListener('click', async () => download(figureFileName(name, i + 1, 'png'), await svgToPng(svg), 'image/png'));
-    save.append(asSvg, asPng);
+    const asPdf = el('button', { type: 'button', text: 'Save PDF', 'aria-label': `Save PDF of “${heading}”` });
+    asPdf.addEventListener('click', () => download(figureFileName(name, i + 1, 'pdf'), experimentFigurePdf(experiment, rowsJson, i), 'application/pdf'));
+    save.append(asSvg, asPng, asPdf);
     box.append(save);
     root.append(box);
   });

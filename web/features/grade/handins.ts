@@ -1,139 +1,92 @@
-// Reading a class's hand-ins from what a teacher has: links pasted one a line (as `kumiki check
-// --file` reads them), or the CSV or text export of a form or a learning platform, one hand-in a
-// row with the student's name in another column. Nothing here leaves the page.
-import type { Graded } from '../../contract.gen';
+// What the Grade view shows of a graded row: its verdict in words (over budget marked), its points
+// and each credit part's, why, the student's answer and record, and the student's name cut to fit
+// with the whole of it kept for hovering. The rows themselves are the lab's (`grade_row`, the
+// core's grading::table::Row): read, graded and exported as `kumiki check` does.
+import type { Graded, Row } from '../../contract.gen';
+import { displayText } from '../../widgets/dom';
 
-/** One hand-in: its row in the input, the student's name from the export (if any), its link. */
-export interface Handin {
-  row: number;
-  /** The name in the export's other columns; empty when the row has only the link. */
-  student: string;
-  /** The Kumiki link, or null when the row has none (graded as an error, like kumiki check). */
-  link: string | null;
-  /** The row as it was, for a row with no link. */
-  text: string;
+/** One row of the grade table: the hand-in's number, the student and link, and its grade or error. */
+export type GradeRow = Row & Graded;
+/** A row that was graded (not one that could not be). */
+export type GradedRow = Row & Extract<Graded, { met: boolean }>;
+
+/** The longest name shown in a row, in characters; the whole name is its title. */
+export const NAME_CHARS = 40;
+/** The longest answer shown in a row, in characters. */
+export const ANSWER_CHARS = 200;
+/** The most of a name or an answer kept for hovering. */
+const TITLE_CHARS = 2000;
+
+export const isGraded = (r: GradeRow): r is GradedRow => !('error' in r);
+
+/** The verdict in words: met, not met, over budget (stopped at the exercise's budget), or could not be graded. */
+export function verdict(r: GradeRow): 'met' | 'not met' | 'over budget' | 'could not be graded' {
+  if (!isGraded(r)) return 'could not be graded';
+  if (r.over_budget) return 'over budget';
+  return r.met ? 'met' : 'not met';
 }
 
-/** A Kumiki link in a cell: a URL with `#k1.…`, or the bare `#k1.…` / `k1.…` part. */
-const LINK = /(?:https?:\/\/[^\s"',;]*)?#?k1\.[A-Za-z0-9_-]+/;
-
-/** The cells of one CSV, TSV or semicolon-separated row; quoted cells may hold separators. */
-export function cells(line: string): string[] {
-  const sep = line.includes('\t') ? '\t' : line.split(';').length > line.split(',').length ? ';' : ',';
-  const out: string[] = [];
-  let cell = '';
-  let quoted = false;
-  for (let i = 0; i < line.length; i++) {
-    const c = line[i];
-    if (quoted) {
-      if (c === '"' && line[i + 1] === '"') {
-        cell += '"';
-        i++;
-      } else if (c === '"') quoted = false;
-      else cell += c;
-    } else if (c === '"' && cell.trim() === '') {
-      quoted = true;
-      cell = '';
-    } else if (c === sep) {
-      out.push(cell.trim());
-      cell = '';
-    } else cell += c;
-  }
-  out.push(cell.trim());
-  return out;
+/** The points earned of the most, "7 of 10"; empty when the exercise gives none. */
+export function pointsText(r: GradeRow): string {
+  if (!isGraded(r) || r.max_points === undefined || r.max_points === null) return '';
+  return `${r.points ?? 0} of ${r.max_points}`;
 }
 
-/**
- * The hand-ins in `text`. Blank lines and lines starting with `#` that hold no link are skipped
- * (as `kumiki check --file` does); a first row with no link is a header. The student's name is
- * the first other cell that is not a number or a date, read from a header column named like
- * "name" or "student" when there is one.
- */
-export function parseHandins(text: string): Handin[] {
-  const lines = text.split(/\r?\n/);
-  const out: Handin[] = [];
-  let nameColumn = -1;
-  let first = true;
-  for (const [i, raw] of lines.entries()) {
-    const line = raw.trim();
-    if (!line) continue;
-    const found = LINK.exec(line);
-    if (!found && line.startsWith('#')) continue;
-    const row = cells(line);
-    if (first && !found) {
-      // A header: remember which column names the student.
-      nameColumn = row.findIndex((h) => /name|student|learner|user/i.test(h));
-      first = false;
-      continue;
-    }
-    first = false;
-    const link = found ? found[0] : null;
-    const others = row.filter((c) => c && !LINK.test(c));
-    const named = nameColumn >= 0 && nameColumn < row.length && !LINK.test(row[nameColumn]) ? row[nameColumn] : '';
-    const student = named || (others.find((c) => !/^[\d\s:./+-]+(T[\d:.]+Z?)?$/.test(c)) ?? '');
-    out.push({ row: i + 1, student, link, text: line });
-  }
-  return out;
+/** Each credit part as judged: "5 of 5: completed". */
+export function partsText(r: GradeRow): string[] {
+  if (!isGraded(r)) return [];
+  return (r.credit ?? []).map((c) => `${c.earned} of ${c.points}: ${c.goal}`);
 }
 
-/** A value as one CSV cell. */
-function csvCell(v: unknown): string {
-  const raw = v === undefined || v === null ? '' : String(v);
-  // Text a spreadsheet would read as a formula (a student's name can be anything) gets a leading
-  // `'`, as the core's CSV does (export::csv_text); numbers are written as they are.
-  const s = typeof v === 'string' && /^[=+\-@\t\r]/.test(raw) ? `'${raw}` : raw;
-  return /[",\n\r]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
+/** Why: the error, or the verdict's reason with what the hand-in changed and the disturbances it added. */
+export function reasonText(r: GradeRow): string {
+  if (!isGraded(r)) return r.error;
+  return [r.because, r.changed.length ? `changed: ${r.changed.join(', ')}` : '', ...r.disturbances].filter(Boolean).join('. ');
 }
 
-/**
- * One row of the Grade view: the hand-in's number, its student and link, and the core's `Graded`
- * answer for it, a grade or an error, read field by field (each field absent in the other case).
- */
-export type GradedRow = { handin: number; student: string; link: string | null } & Partial<Extract<Graded, { met: boolean }>> &
-  Partial<Extract<Graded, { error: string }>>;
+/** The student's answer to the exercise's question, as they wrote it (cut), and its whole. */
+export function answerText(r: GradeRow): { shown: string; full: string } {
+  const answer = isGraded(r) ? (r.record?.answer ?? '') : '';
+  return { shown: displayText(answer, ANSWER_CHARS, true), full: displayText(answer, TITLE_CHARS, true) };
+}
 
-/** The Grade view's table as CSV: kumiki check's columns, with the student and the link first. */
-export function gradesCsv(rows: GradedRow[]): string {
-  const metrics = [...new Set(rows.flatMap((r) => Object.keys(r.goal_metrics ?? {})))].sort();
-  const head = [
-    'handin',
-    'student',
-    'name',
-    'met',
-    'because',
-    'completed',
-    'steps',
-    'hash',
-    'locked_edited',
-    'changed',
-    'exercise_edited',
-    ...metrics.map((m) => `metrics.${m}`),
-    'error',
-    'link',
-  ];
-  const lines = [head.join(',')];
-  for (const r of rows) {
-    const graded = r.error === undefined;
-    lines.push(
-      [
-        r.handin,
-        r.student,
-        r.name ?? '',
-        graded ? r.met : false,
-        r.because ?? '',
-        r.completed ?? '',
-        r.steps ?? '',
-        r.hash ?? '',
-        (r.locked_edited ?? []).join('; '),
-        (r.changed ?? []).join('; '),
-        r.exercise_edited ?? '',
-        ...metrics.map((m) => r.goal_metrics?.[m] ?? ''),
-        r.error ?? '',
-        r.link ?? '',
-      ]
-        .map(csvCell)
-        .join(','),
-    );
-  }
-  return `${lines.join('\n')}\n`;
+/** The hand-in's record of itself in words: "handed in 2026-11-28T10:15:00Z, 3 checks, 1 hint". */
+export function recordText(r: GradeRow): string {
+  const record = isGraded(r) ? r.record : null;
+  if (!record) return '';
+  const plural = (n: number, word: string) => `${n} ${word}${n === 1 ? '' : 's'}`;
+  return [record.made ? `handed in ${record.made}` : '', plural(record.checks, 'check'), plural(record.hints, 'hint')].filter(Boolean).join(', ');
+}
+
+/** A name as the row shows it (hidden and direction-changing characters left out, cut to fit) and its whole for hovering. */
+export function nameText(name: string): { shown: string; full: string } {
+  return { shown: displayText(name, NAME_CHARS) || '(no name)', full: displayText(name, TITLE_CHARS) };
+}
+
+/** The student's name in a row: the class's file's, else the one the hand-in carries. */
+export const studentOf = (r: GradeRow): string => r.student || (isGraded(r) ? r.name : '');
+
+/** How a class graded so far. */
+export interface Tally {
+  met: number;
+  unmet: number;
+  over: number;
+  errors: number;
+}
+
+export const emptyTally = (): Tally => ({ met: 0, unmet: 0, over: 0, errors: 0 });
+
+/** Counts a row in the tally. */
+export function count(tally: Tally, r: GradeRow) {
+  const v = verdict(r);
+  if (v === 'met') tally.met++;
+  else if (v === 'not met') tally.unmet++;
+  else if (v === 'over budget') tally.over++;
+  else tally.errors++;
+}
+
+/** The tally in words, as `kumiki check` says it: "1 met, 3 not met (1 over budget), 1 could not be graded". */
+export function tallyText(t: Tally): string {
+  const over = t.over ? ` (${t.over} over budget)` : '';
+  return `${t.met} met, ${t.unmet + t.over} not met${over}, ${t.errors} could not be graded`;
 }

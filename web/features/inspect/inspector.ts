@@ -41,7 +41,14 @@ export function setupInspector(page: PageContext, tools: Tools) {
     if (t) {
       // In 3-D an added unit goes on the clicked face, in the empty cell in front of it.
       const target = t.action.kind === 'add' && hit && hit.front >= 0 ? hit.front : cell;
-      sim.apply({ ...t.action, ...tools.values(t.name), cells: [target] });
+      const why = await tools.click(t.name, { ...t.action, ...tools.values(t.name), cells: [target] });
+      // Refused by the exercise: the reason where the click was made, and said.
+      if (why) {
+        shown = -1;
+        inspector.hidden = false;
+        inspector.replaceChildren(el('p', { class: 'refused', text: why }));
+        events.emit('say', why);
+      }
       return;
     }
     const facts = await sim.inspect(cell);

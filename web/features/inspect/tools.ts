@@ -1,7 +1,12 @@
 // The click tools: what a click on the lattice does (inspect, or inject one of the model's
 // disturbances), the numbers typed beside a tool, and the note of the disturbances the scenario
-// carries, with a way to clear them.
+// carries, with a way to clear them. In an exercise each tool asks the scenario in view (its
+// Draft, in the simulation worker) whether a click of it may be made: a refused tool stays in the
+// list, reachable by the keyboard, shown as locked with the exercise's reason, and a click of it on
+// the lattice is refused with that reason; an allowance ("remove at most 3 modules") counts down.
+import type { ToolInfo } from '../../contract.gen';
 import type { PageContext } from '../../page/context';
+import type { ClickState } from '../../sim/protocol';
 import { byId, clear, el } from '../../widgets/dom';
 import toolsHtml from './tools.html?raw';
 
@@ -15,38 +20,97 @@ export interface Tools {
   label(): string;
   /** The numbers typed next to a tool, by action key. */
   values(name: string): Record<string, number>;
+  /**
+   * Applies a click of the tool `name` (its `action`, with the cells clicked) unless the exercise
+   * in view refuses it; resolves to the refusal's reason (also shown beside the tools), or null
+   * once the click was sent.
+   */
+  click(name: string, action: Record<string, unknown>): Promise<string | null>;
 }
 
+/** A tool's text in the list: its label, and what the exercise says of it. */
+export function toolText(label: string, state: ClickState | undefined): string {
+  if (state?.problem) return `${label} (locked)`;
+  if (state && state.left !== null) return `${label} (${state.left} left)`;
+  return label;
+}
+
+/** The id of the hidden text that gives a locked tool's reason (its description). */
+const whyId = (name: string) => `tool-why-${name}`;
+
 export function setupTools(page: PageContext): Tools {
-  const { session, tabs } = page;
+  const { session, sim, tabs } = page;
   tabs.section('run', toolsHtml, ORDER);
   let tool = 'inspect';
+  /** What the exercise in view says of each tool, by name; empty when no exercise is in view. */
+  let states = new Map<string, ClickState>();
+  /** The latest question to the worker: answers to earlier ones are dropped. */
+  let asked: Promise<void> = Promise.resolve();
 
   /** The scenario's locked fields, when it is an exercise. */
   const lockedFields = () => Object.keys((session.doc().exercise as { locked?: Record<string, unknown> } | undefined)?.locked ?? {});
+  const status = () => byId('tool-problem');
+
+  /** Asks the worker what the exercise in view says of each tool, then shows it. */
+  function refresh() {
+    const tools = session.layout?.tools ?? [];
+    if (!session.doc().exercise || !tools.length) {
+      states = new Map();
+      asked = Promise.resolve();
+      show();
+      return;
+    }
+    const asking: Promise<void> = sim.clicks(tools.map((t) => ({ kind: String(t.action.kind ?? ''), label: t.label }))).then((answer) => {
+      if (asked !== asking) return;
+      states = new Map(tools.map((t, i) => [t.name, answer[i]]));
+      show();
+    });
+    asked = asking;
+  }
+
+  /** Waits for the answer to the latest question, however many were asked meanwhile. */
+  async function answered() {
+    let waited: Promise<void>;
+    do {
+      waited = asked;
+      await waited;
+    } while (waited !== asked);
+  }
+
+  function select(name: string) {
+    tool = name;
+    for (const other of byId('tools').querySelectorAll('button')) other.setAttribute('aria-checked', String(other.dataset.tool === tool));
+  }
+
+  function button(t: Pick<ToolInfo, 'name' | 'label'>) {
+    const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(t.name === tool), 'data-tool': t.name, text: t.label });
+    b.addEventListener('click', () => {
+      const why = states.get(t.name)?.problem;
+      // A locked tool is not taken up (unless it is the one in hand): its reason is said instead.
+      if (why && t.name !== tool) {
+        status().textContent = why;
+        return;
+      }
+      status().textContent = why ?? '';
+      select(t.name);
+    });
+    return b;
+  }
 
   function render() {
     const layout = session.layout;
     if (!layout) return;
     const tools = byId('tools');
     clear(tools);
-    // Clicked disturbances are recorded in the scenario: not when the exercise locks them.
-    const clickable = lockedFields().includes('disturbances') ? [] : layout.tools;
-    const all = [{ name: 'inspect', label: 'Inspect' }, ...clickable];
+    status().textContent = '';
+    const all = [{ name: 'inspect', label: 'Inspect' }, ...layout.tools];
     if (!all.some((t) => t.name === tool)) tool = 'inspect';
-    for (const t of all) {
-      const b = el('button', { type: 'button', role: 'radio', 'aria-checked': String(t.name === tool), 'data-tool': t.name, text: t.label });
-      b.addEventListener('click', () => {
-        tool = t.name;
-        for (const other of tools.querySelectorAll('button')) other.setAttribute('aria-checked', String(other.dataset.tool === tool));
-      });
-      tools.append(b);
-    }
+    for (const t of all) tools.append(button(t));
     // A number in a tool's action (a load's force, say) can be set before clicking; the value
     // typed is what the recorded action carries.
     const values = byId('tool-values');
     clear(values);
-    for (const t of clickable) {
+    for (const t of layout.tools) {
       for (const [key, value] of Object.entries(t.action)) {
         if (typeof value !== 'number') continue;
         const input = el('input', {
@@ -61,7 +125,32 @@ export function setupTools(page: PageContext): Tools {
         values.append(el('label', { class: 'row' }, `${t.label}: ${key} `, input));
       }
     }
+    refresh();
     renderDisturbanceNote();
+  }
+
+  /** Shows each tool as the exercise in view has it: locked with its reason, or what is left of its allowance. */
+  function show() {
+    const layout = session.layout;
+    const reasons = byId('tool-reasons');
+    clear(reasons);
+    for (const b of byId('tools').querySelectorAll<HTMLButtonElement>('button')) {
+      const t = layout?.tools.find((x) => x.name === b.dataset.tool);
+      if (!t) continue;
+      const state = states.get(t.name);
+      b.textContent = toolText(t.label, state);
+      b.classList.toggle('locked', Boolean(state?.problem));
+      if (state?.problem) {
+        b.setAttribute('aria-disabled', 'true');
+        b.setAttribute('aria-describedby', whyId(t.name));
+        b.title = state.problem;
+        reasons.append(el('span', { id: whyId(t.name), text: state.problem }));
+      } else {
+        b.removeAttribute('aria-disabled');
+        b.removeAttribute('aria-describedby');
+        b.removeAttribute('title');
+      }
+    }
   }
 
   /** Shows how many disturbances the scenario carries, with a way to clear them. */
@@ -76,7 +165,10 @@ export function setupTools(page: PageContext): Tools {
   }
 
   session.on('loaded', render);
-  session.on('recorded', renderDisturbanceNote);
+  session.on('recorded', () => {
+    refresh();
+    renderDisturbanceNote();
+  });
 
   return {
     get tool() {
@@ -89,6 +181,18 @@ export function setupTools(page: PageContext): Tools {
         if (input.dataset.tool === name && input.dataset.key && input.value !== '') out[input.dataset.key] = Number(input.value);
       }
       return out;
+    },
+    async click(name, action) {
+      await answered();
+      const why = states.get(name)?.problem ?? null;
+      if (why) {
+        status().textContent = why;
+        return why;
+      }
+      sim.apply(action);
+      // Asked after the click, so answered once the worker has recorded it: the count is current.
+      refresh();
+      return null;
     },
   };
 }

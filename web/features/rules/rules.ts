@@ -7,6 +7,7 @@
 // first opens, never before.
 import type { SlotDoc, SlotInfo } from '../../contract.gen';
 import type { PageContext } from '../../page/context';
+import { ruleQueries } from '../../sim/rules';
 import { byId, clear, el } from '../../widgets/dom';
 import type { RuleEditor } from './editor';
 import panelHtml from './panel.html?raw';
@@ -20,6 +21,8 @@ export const COMPARE_LABELS = { label: "the paper's rule", base_label: 'my rule'
 
 export function setupRules(page: PageContext) {
   const { session, sim, events } = page;
+  // Answered by the worker's rules module, which it fetches for the first question.
+  const rules = ruleQueries((message) => sim.ask(message));
   page.tabs.section('rules', panelHtml, 10);
   const status = byId('rules-status');
   const room = byId('rules-room');
@@ -50,7 +53,7 @@ export function setupRules(page: PageContext) {
     opened ??= (async () => {
       status.textContent = 'Loading the rule editor…';
       try {
-        const [code, slots] = await Promise.all([import('./editor'), sim.rules.slots()]);
+        const [code, slots] = await Promise.all([import('./editor'), rules.slots()]);
         all = slots;
         editor = code.ruleEditor(byId('rules-editor'), '', scheduleCheck, "The rule's script (Rhai)");
         follow();
@@ -113,7 +116,7 @@ export function setupRules(page: PageContext) {
     const text = editor.text();
     let problem: string | null;
     try {
-      problem = await sim.rules.check(shown.model, shown.slot.name, text);
+      problem = await rules.check(shown.model, shown.slot.name, text);
     } catch (e) {
       problem = e instanceof Error ? e.message : String(e);
     }

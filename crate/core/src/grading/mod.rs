@@ -139,16 +139,19 @@ pub fn verdict(run: &crate::Run) -> Option<Verdict> {
     let exercise = run.scenario().exercise.as_ref()?;
     let outcome = run.outcome();
     let doc = run.scenario().to_value();
-    Some(exercise.verdict(
-        &Outcome {
-            completed: outcome.completed,
-            steps: outcome.steps,
-            metrics: &outcome.metrics,
-            scenario: &doc,
-        },
-        &rules_broken(exercise, &doc),
+    Some(
+        exercise
+            .verdict(
+                &Outcome {
+                    completed: outcome.completed,
+                    steps: outcome.steps,
+                    metrics: &outcome.metrics,
+                    scenario: &doc,
+                },
+                &rules_broken(exercise, &doc),
+            )
+            .with_stop(outcome.stopped.as_deref()),
     )
-    .with_stop(outcome.stopped.as_deref()))
 }
 
 /// Why `next` may not replace `current` by an edit (a form field, an editor, the seed, the JSON

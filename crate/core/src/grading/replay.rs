@@ -151,16 +151,17 @@ impl Replay {
             ));
             return with_verdict(grade, verdict);
         }
-        let verdict = exercise.verdict(
-            &Outcome {
-                completed: outcome.completed,
-                steps: outcome.steps,
-                metrics: &outcome.metrics,
-                scenario: &doc,
-            },
-            &[],
-        )
-        .with_stop(outcome.stopped.as_deref());
+        let verdict = exercise
+            .verdict(
+                &Outcome {
+                    completed: outcome.completed,
+                    steps: outcome.steps,
+                    metrics: &outcome.metrics,
+                    scenario: &doc,
+                },
+                &[],
+            )
+            .with_stop(outcome.stopped.as_deref());
         with_verdict(grade, verdict)
     }
 }

@@ -3,9 +3,35 @@
 //! collision is resolved", and "the penalty for collision" takes one time step (5.1, by default).
 //! One pure function of typed inputs ([`outcome`]); the step's conflict phase (`conflicts.rs`)
 //! finds the [`Conflict`] and applies the [`Outcome`]. Module relay (4.6.1) is settled before it:
-//! a loaded and an unloaded robot that meet swap loads instead of colliding.
+//! a loaded and an unloaded robot that meet swap loads instead of colliding, where the robot in
+//! the way can take part ([`relays`], another pure function).
 
-use super::spec::GiveWay;
+use super::spec::{GiveWay, RelayWith};
+
+/// What the robot on the module another wants is doing, for module relay (4.6.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Partner {
+    /// It stays this step: it planned to wait, or could not do what it planned.
+    Stays,
+    /// It is still waiting out the penalty of a collision: "Other robots cannot move until the
+    /// collision is resolved" (4.6).
+    Penalised,
+    /// It moves away, or is busy with an action (a pick, a placement, a relay, a move of several
+    /// steps).
+    Busy,
+}
+
+/// Whether a loaded and an unloaded robot relay when one wants the other's module and the other
+/// is `partner`: "When two robots collide with each other, the one carrying the module hands it
+/// off to the other" (4.6.1). A robot waiting out a penalty is still in its collision, so it may
+/// relay, unless only robots that planned this step may ([`RelayWith::Idle`]).
+pub fn relays(partner: Partner, rule: RelayWith) -> bool {
+    match (partner, rule) {
+        (Partner::Stays, _) => true,
+        (Partner::Penalised, RelayWith::Waiting) => true,
+        (Partner::Penalised, RelayWith::Idle) | (Partner::Busy, _) => false,
+    }
+}
 
 /// Why a robot could not do what it planned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,5 +109,15 @@ mod tests {
         assert_eq!(outcome(occupied(false), GiveWay::Locked), Waits);
         assert_eq!(outcome(Claimed, GiveWay::EveryLoser), GivesWay);
         assert_eq!(outcome(occupied(false), GiveWay::EveryLoser), GivesWay);
+    }
+
+    #[test]
+    fn a_robot_waiting_out_a_penalty_may_relay() {
+        for rule in [RelayWith::Waiting, RelayWith::Idle] {
+            assert!(relays(Partner::Stays, rule));
+            assert!(!relays(Partner::Busy, rule));
+        }
+        assert!(relays(Partner::Penalised, RelayWith::Waiting));
+        assert!(!relays(Partner::Penalised, RelayWith::Idle));
     }
 }

@@ -1,7 +1,7 @@
 //! Step phase 2, conflicts (4.6): which moves go ahead, module relay (4.6.1), and the
 //! collision penalty of the robots that must wait.
 
-use super::collision::{self, Conflict, Outcome};
+use super::collision::{self, Conflict, Outcome, Partner};
 use super::spec::GiveWay;
 use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
@@ -201,19 +201,26 @@ impl Amas {
                     continue;
                 }
                 let o = o as usize;
-                let o_idle = match self.plans[o] {
-                    Plan::Wait | Plan::Blocked(_) => true,
-                    Plan::Move(_) => self.status[o] == STAYS,
-                    _ => false,
+                let partner = match self.plans[o] {
+                    Plan::Wait | Plan::Blocked(_) => Partner::Stays,
+                    Plan::Move(_) if self.status[o] == STAYS => Partner::Stays,
+                    Plan::Busy if self.robots[o].waiting_for != NONE => Partner::Penalised,
+                    _ => Partner::Busy,
                 };
-                if o_idle && !self.relaying[o] && self.robots[r].loaded != self.robots[o].loaded {
+                if collision::relays(partner, self.p.relay_with)
+                    && !self.relaying[o]
+                    && self.robots[r].loaded != self.robots[o].loaded
+                {
                     // 4.6.1: the robot carrying the module hands it to the other.
                     self.relaying[r] = true;
                     self.relaying[o] = true;
                     self.robots[r].loaded = !self.robots[r].loaded;
                     self.robots[o].loaded = !self.robots[o].loaded;
                     self.robots[r].busy = self.p.relay_d - 1;
+                    // The relay resolves the collision a penalised robot was waiting on.
                     self.robots[o].busy = self.p.relay_d - 1;
+                    self.robots[o].waiting_for = NONE;
+                    self.robots[o].give_way = false;
                     self.relays += 1;
                     // At the corner: the handing robot stands on the corner row or the row
                     // below it.

@@ -29,7 +29,7 @@ mod spec;
 mod state;
 mod view;
 
-pub use spec::{Collision, Communication, Direction, FieldKind, GiveWay, Spec};
+pub use spec::{Collision, Communication, Direction, FieldKind, GiveWay, RelayWith, Spec};
 
 use field::Field;
 use spec::Params;
@@ -39,7 +39,8 @@ pub const ENTRY: ModelEntry = ModelEntry {
     title: "AMAS: assembler robots on a gradient field",
     default_max_steps: 100_000,
     // 3: the module displays one direction (footnote 3) and only a locked loser gives way (4.6).
-    model_version: 3,
+    // 4: a robot waiting out a collision penalty may relay (4.6.1).
+    model_version: 4,
     metrics: metrics::METRICS,
     limits: &limits::LIMITS,
     parse: entry::parse::<Spec>,
@@ -47,7 +48,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     disturbance: entry::schema_of::<actions::Raw>(),
     slots: &[],
     queries: &[],
-    // Links made before version 3 replay with the readings they were made with.
+    // Links made before a version replay with the readings they were made with.
     pins: &[
         Pin {
             before: 3,
@@ -58,6 +59,11 @@ pub const ENTRY: ModelEntry = ModelEntry {
             before: 3,
             key: "give_way",
             value: PinValue::Choice("every_loser"),
+        },
+        Pin {
+            before: 4,
+            key: "relay_with",
+            value: PinValue::Choice("idle"),
         },
     ],
 };

@@ -81,6 +81,20 @@ pub enum GiveWay {
     EveryLoser,
 }
 
+/// Sections 4.6.1 and 5.1: which robots a loaded robot and an unloaded one may relay with when
+/// one wants the other's module.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize, Default, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RelayWith {
+    /// A robot that waits: one that could not move, or one still waiting out a collision
+    /// penalty, which is still in its collision until it is resolved.
+    #[default]
+    Waiting,
+    /// Only a robot that planned this step: one waiting out a penalty of several steps takes no
+    /// part (Kumiki's reading before model version 4).
+    Idle,
+}
+
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[schemars(rename = "AmasSpec", transform = bounds::in_schema::<Spec>)]
@@ -142,6 +156,9 @@ pub struct Spec {
     /// Which robots that lost a collision step aside at their next plan (4.6).
     #[serde(default)]
     pub give_way: GiveWay,
+    /// Whether a robot waiting out a collision penalty may relay (4.6.1).
+    #[serde(default)]
+    pub relay_with: RelayWith,
 }
 
 impl Bounded for Spec {
@@ -243,6 +260,7 @@ pub struct Params {
     pub communication: Communication,
     pub direction: Direction,
     pub give_way: GiveWay,
+    pub relay_with: RelayWith,
 }
 
 /// Everything the model needs to start: the lattice size, the stage targets and the initial
@@ -491,6 +509,7 @@ fn read(spec: &Spec, limits: &Limits) -> Result<Plan> {
         communication: spec.communication,
         direction: spec.direction,
         give_way: spec.give_way,
+        relay_with: spec.relay_with,
     };
     Ok(Plan {
         w,

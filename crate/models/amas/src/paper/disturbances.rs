@@ -30,12 +30,39 @@ fn fig27_counts(r: &Results) -> Vec<u32> {
     counts
 }
 
+/// The runs of a disturbance that did not finish, as the numbers of disturbed modules they had
+/// (one entry a run, in order), and how many runs it had.
+fn unfinished(r: &Results, scenario: &str) -> (Vec<u32>, usize) {
+    let mut counts = Vec::new();
+    let mut runs = 0;
+    for c in fig27_counts(r) {
+        let filter = [
+            ("scenario", json!(scenario)),
+            ("disturbances.0.count", json!(c)),
+        ];
+        let done = r.values("amas-fig27", &filter, "completed");
+        runs += done.len();
+        counts.extend(done.iter().filter(|&&v| v != 1.0).map(|_| c));
+    }
+    (counts, runs)
+}
+
+/// "n of N runs of <what> finish (those that do not had c1, c2 disturbed modules)".
+fn finished(r: &Results, scenario: &str, what: &str) -> (String, usize) {
+    let (left, runs) = unfinished(r, scenario);
+    let mut text = format!("{} of {runs} runs of {what} finish", runs - left.len());
+    if !left.is_empty() {
+        let counts: Vec<String> = left.iter().map(u32::to_string).collect();
+        text += &format!(
+            " (those that do not had {} disturbed modules)",
+            counts.join(", ")
+        );
+    }
+    (text, runs)
+}
+
 pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
     let base = fig27_steps(r, REMOVE, 0);
-    let done: Vec<f64> = [REMOVE, BREAK]
-        .iter()
-        .flat_map(|s| r.values("amas-fig27", &[("scenario", json!(s))], "completed"))
-        .collect();
     out.push(Finding::new(
         "§5.3",
         "28 robots assemble a square of 28×28 modules; under normal conditions the task was \
@@ -65,15 +92,16 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
             ));
         }
     }
-    let runs = done.len();
-    let finished = done.iter().filter(|&&v| v == 1.0).count();
+    let (removal_done, removal_runs) = finished(r, REMOVE, "removal");
+    let (breakdown_done, breakdown_runs) = finished(r, BREAK, "breakdown");
+    let runs = removal_runs + breakdown_runs;
     out.push(Finding::new(
         "§5.5, fig. 27",
         "Communication breakdown is more serious than module removal, because the robots cannot \
          restore the broken gradient field.",
         format!(
             "median steps (IQR) by disturbed modules — {}; breakdown takes longer at {worse} of \
-             {} counts; {finished} of {runs} runs finish",
+             {} counts; {removal_done}; {breakdown_done}",
             text.join("; "),
             disturbed.len()
         ),
@@ -81,9 +109,12 @@ pub(super) fn fig27_findings(r: &Results, out: &mut Vec<Finding>) {
         Verdict::of_all(worse, disturbed.len()),
         "Disturbance at step 360, modules drawn at random among those built. Medians, because \
          breakdown has a long tail: robots carrying modules climb to the stale high values \
-         broken modules keep and wander there. A run that does not finish (with the most \
-         removals, every robot left on a part cut off from the supply) counts at its cap of \
-         50 000 steps.",
+         broken modules keep and wander there. A run that does not finish counts at its cap of \
+         50 000 steps: with the most removals, every robot is left on a part cut off from the \
+         supply; with the most broken modules, every robot is loaded and held at the stale \
+         maxima of modules that broke at the growth front, which keep the front's value, the \
+         field the robots 'cannot restore' (traced, interpretation 33). The text gives no \
+         number of disturbed modules, so it does not say whether its runs met either.",
     ));
     threshold(r, &disturbed, base.median, out);
     // Section 5.4's mechanism: robots among growth-front modules lose their way and wander.
@@ -287,8 +318,8 @@ fn threshold(r: &Results, disturbed: &[u32], undisturbed: f64, out: &mut Vec<Fin
          alike, a further module costs at least three times as much past the knee as before \
          it (in part where it costs more, but less than three times as much). Past the knee \
          robots lose their way among growth-front modules or stale values \
-         (5.4, the wandering row), and with the most removals a run may never finish, every \
-         robot left on a part cut off from the supply. Before the knee the cost per module is \
+         (5.4, the wandering row), and with the most disturbed modules a run may never \
+         finish (the row above says which). Before the knee the cost per module is \
          small but the first module is not free: undisturbed, each of the 28 robots starts \
          under its own column of a conveyor as wide as the square and builds it in lockstep, \
          one step above the footnote-2 bound, and any hole ends that order, whatever the field \

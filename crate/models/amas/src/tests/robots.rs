@@ -119,20 +119,24 @@ fn same_seed_same_run_other_seed_other_run() {
     assert_ne!(out(9).hash, out(10).hash);
 }
 
-/// Links made before model version 3 pin the per-robot draw and every loser giving way
-/// (`ENTRY.pins`), so every AMAS link of the fixture replays to the state it reached when it
-/// was made.
+/// Links made before model version 3 pin the per-robot draw and every loser giving way, and
+/// links made before version 4 relaying only with robots that planned this step (`ENTRY.pins`),
+/// so every AMAS link of the fixture replays to the state it reached when it was made.
 #[test]
 fn links_of_earlier_versions_replay_as_they_did() {
     let text = include_str!("../../../../../tests/fixtures/links.json");
     let links: Vec<Value> = serde_json::from_str(text).unwrap();
     let mut checked = 0;
-    let older = |e: &&Value| e["model"] == "amas" && e["model_version"].as_u64() < Some(3);
+    let older = |e: &&Value| e["model"] == "amas" && e["model_version"].as_u64() < Some(4);
     for entry in links.iter().filter(older) {
         let opened = kumiki_core::link::open(entry["link"].as_str().unwrap()).unwrap();
-        assert!(opened.made_with < 3, "{}", entry["preset"]);
-        assert_eq!(opened.scenario.body()["direction"], json!("robot"));
-        assert_eq!(opened.scenario.body()["give_way"], json!("every_loser"));
+        let body = opened.scenario.body();
+        assert!(opened.made_with < 4, "{}", entry["preset"]);
+        if opened.made_with < 3 {
+            assert_eq!(body["direction"], json!("robot"));
+            assert_eq!(body["give_way"], json!("every_loser"));
+        }
+        assert_eq!(body["relay_with"], json!("idle"));
         let mut run = Run::new(opened.scenario).unwrap();
         run.advance(entry["steps"].as_u64().unwrap());
         assert_eq!(
@@ -143,12 +147,13 @@ fn links_of_earlier_versions_replay_as_they_did() {
         );
         checked += 1;
     }
-    assert!(checked >= 12, "{checked} AMAS links");
+    assert!(checked >= 13, "{checked} AMAS links");
     // A link made now opens with this version's readings.
     let now = kumiki_core::link::encode(&kumiki_core::presets::scenario("amas-L").unwrap());
-    let opened = kumiki_core::link::open(&now).unwrap();
-    assert_eq!(opened.scenario.body()["direction"], json!("module"));
-    assert_eq!(opened.scenario.body()["give_way"], json!("locked"));
+    let body = kumiki_core::link::open(&now).unwrap().scenario.body();
+    assert_eq!(body["direction"], json!("module"));
+    assert_eq!(body["give_way"], json!("locked"));
+    assert_eq!(body["relay_with"], json!("waiting"));
 }
 
 /// The L of figure 23 standing on its stem.
@@ -219,4 +224,37 @@ fn locks_are_resolved_and_other_losers_wait() {
         );
     }
     assert!(waited > 0, "no loser waited");
+}
+
+/// 4.6.1: "When two robots collide with each other, the one carrying the module hands it off to
+/// the other", a robot still waiting out the penalty of an earlier collision too. Appendix B's
+/// L with ten robots, the discrete field, a relay of five steps and a penalty of five: every run
+/// finishes. When only robots that planned this step may relay (the reading before model
+/// version 4), a loaded robot and an unloaded one each meet the other's penalty or relay in
+/// turn and never plan together, and some runs hand the same module back and forth for good.
+#[test]
+fn a_robot_waiting_out_a_penalty_relays() {
+    let unfinished = |relay_with: &str| {
+        let mut n = 0;
+        for seed in 1..=10 {
+            let mut doc = kumiki_core::presets::scenario("amas-L").unwrap().to_value();
+            for (k, v) in [
+                ("seed", json!(seed)),
+                ("robots", json!(10)),
+                ("field", json!("discrete")),
+                ("collision", json!("relay")),
+                ("collision_penalty", json!(5)),
+                ("relay_duration", json!(5)),
+                ("relay_with", json!(relay_with)),
+            ] {
+                doc[k] = v;
+            }
+            let mut m = Amas::new(&Scenario::from_value(doc).unwrap()).unwrap();
+            run_to_end(&mut m, 20000);
+            n += usize::from(!m.completed());
+        }
+        n
+    };
+    assert_eq!(unfinished("waiting"), 0);
+    assert!(unfinished("idle") > 0);
 }
