@@ -3,33 +3,11 @@
 // no serious or critical violation. axe is evaluated in the page by the test driver (the page's
 // CSP allows no injected script, and needs not to).
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session } from './harness.mjs';
+import { audit, loadWasm, openPage, session } from './harness.mjs';
 
-const require = createRequire(import.meta.url);
-const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
 const wasm = loadWasm();
 const s = session();
-
-/** Serious and critical violations on the page as it stands, one line each. */
-async function audit(page, where) {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
-  const violations = await page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
-      // WCAG 2.5.3 (label in name): a control's accessible name holds its visible text. axe marks
-      // the rule experimental and leaves it out unless asked.
-      rules: { 'label-content-name-mismatch': { enabled: true } },
-      resultTypes: ['violations'],
-    });
-    return result.violations
-      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-      .map((v) => ({ id: v.id, impact: v.impact, targets: v.nodes.map((n) => n.target.join(' ')).slice(0, 5) }));
-  });
-  return violations.map((v) => `${where}: ${v.id} (${v.impact}) at ${v.targets.join(', ')}`);
-}
 
 describe('accessibility audit (axe-core)', () => {
   test('no serious or critical violation on the first screen, the tour, every tab and every dialog', async () => {

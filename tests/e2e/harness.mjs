@@ -2,6 +2,7 @@
 // prove the build uses relative URLs) and Debian's Chromium driven by playwright-core.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
@@ -92,10 +93,15 @@ export function launch() {
  * A page that records console errors, page errors and CSP violations. A shared link opens with
  * its introduction, and a first visit with the welcome; each is closed unless `keepIntro` (or
  * `keepWelcome`) is set. `init`, if given, runs in the page before its own scripts (to watch what
- * they do).
+ * they do). `serviceWorkers: 'block'` keeps the offline worker out (it fetches every file of the
+ * build to keep them), so that every request seen is the page's own.
  */
-export async function openPage(browser, url, { width = 1280, height = 800, keepIntro = false, keepWelcome = false, init = null } = {}) {
-  const context = await browser.newContext({ viewport: { width, height } });
+export async function openPage(
+  browser,
+  url,
+  { width = 1280, height = 800, keepIntro = false, keepWelcome = false, init = null, serviceWorkers = 'allow' } = {},
+) {
+  const context = await browser.newContext({ viewport: { width, height }, serviceWorkers });
   const page = await context.newPage();
   const problems = [];
   page.on('console', (m) => {
@@ -179,4 +185,27 @@ export function kumiki(args, { env = {} } = {}) {
     encoding: 'utf8',
     env: { ...process.env, ...env },
   });
+}
+
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+/**
+ * The accessibility audit's check: axe-core (WCAG 2.1 A and AA, and its best practices) on the page
+ * as it stands; its serious and critical violations, one line each, named `where`.
+ */
+export async function audit(page, where) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
+  const violations = await page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
+      // WCAG 2.5.3 (label in name): a control's accessible name holds its visible text. axe marks
+      // the rule experimental and leaves it out unless asked.
+      rules: { 'label-content-name-mismatch': { enabled: true } },
+      resultTypes: ['violations'],
+    });
+    return result.violations
+      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+      .map((v) => ({ id: v.id, impact: v.impact, targets: v.nodes.map((n) => n.target.join(' ')).slice(0, 5) }));
+  });
+  return violations.map((v) => `${where}: ${v.id} (${v.impact}) at ${v.targets.join(', ')}`);
 }

@@ -5,7 +5,7 @@
 // its frames come back. Only the drawing is left out: the view is a stand-in that keeps its marks.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import type { Comparison, Frame, Proposal, Verdict } from '../../web/contract.gen';
+import type { Comparison, Frame, Proposal, SlotDoc, Verdict } from '../../web/contract.gen';
 import type { Feature, PageContext, PageEvents } from '../../web/page/context';
 import { Events } from '../../web/page/events';
 import { Session } from '../../web/page/session';
@@ -13,9 +13,10 @@ import { sessionHost, workerEvents } from '../../web/page/shell';
 import { loadPrefs } from '../../web/page/store';
 import { Tabs } from '../../web/page/tabs';
 import * as wasm from '../../web/pkg/kumiki_wasm.js';
+import * as rulesWasm from '../../web/pkg/kumiki_wasm_rules.js';
 import type { View } from '../../web/render/view';
 import type { SimClient, SimEvents } from '../../web/sim/client';
-import type { ClickState, Proposed } from '../../web/sim/protocol';
+import type { ClickState, Proposed, ToWorker } from '../../web/sim/protocol';
 import { Banner } from '../../web/widgets/banner';
 
 const root = (path: string) => resolve(__dirname, '../..', path);
@@ -26,6 +27,14 @@ export function startCore() {
   if (started) return;
   wasm.initSync({ module: readFileSync(root('web/pkg/kumiki_wasm_bg.wasm')) });
   started = true;
+}
+
+let rulesStarted = false;
+/** The page's rules module (the simulation with the script engine), started once in this thread. */
+export function startRules(): typeof rulesWasm {
+  if (!rulesStarted) rulesWasm.initSync({ module: readFileSync(root('web/pkg/kumiki_wasm_rules_bg.wasm')) });
+  rulesStarted = true;
+  return rulesWasm;
 }
 
 /**
@@ -61,9 +70,14 @@ function shell() {
 /** A tick of the event loop: the worker's next message. */
 const later = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
-/** The simulation worker's side, in this thread: its Draft and its run. */
+/**
+ * The simulation worker's side, in this thread: its Draft and its run, in the page's module, or in
+ * its rules module for a test of scenarios with rule scripts (`rules`; the worker itself switches
+ * to it when such a scenario opens, which the browser tests check).
+ */
 class Worker {
-  readonly draft = new wasm.Draft(1 << 18);
+  private readonly module: typeof wasm;
+  readonly draft: wasm.Draft;
   sim: wasm.Sim | null = null;
   /** Messages the page sent that a test may look at: 'edit' with its changes, 'open' with its text. */
   readonly sent: string[] = [];
@@ -71,12 +85,28 @@ class Worker {
   private waiting: { id: number; text: string } | null = null;
   private id = 0;
 
-  constructor(private readonly on: () => SimEvents) {}
+  constructor(
+    private readonly on: () => SimEvents,
+    rules: boolean,
+  ) {
+    this.module = rules ? (startRules() as unknown as typeof wasm) : wasm;
+    this.draft = new this.module.Draft(1 << 18);
+  }
+
+  /** The worker's answers to the questions only its rules module answers ('rule-slots', 'check-rule'). */
+  async ask(message: (id: number) => ToWorker): Promise<unknown> {
+    const msg = message(0);
+    await later();
+    if (msg.type === 'rule-slots') return startRules().rule_slots() as SlotDoc[];
+    if (msg.type !== 'check-rule') throw new Error(`the test's worker answers no '${msg.type}'`);
+    this.sent.push(`check-rule ${msg.model}.${msg.slot}`);
+    return { problem: startRules().check_rule(msg.model, msg.slot, msg.source) ?? null };
+  }
 
   private answer(id: number, proposal: Proposal, ask: boolean): Proposed {
     const large = proposal.large_cells > 0;
     if (!proposal.problem) {
-      if (!large) void later().then(() => this.start(id, () => wasm.Sim.start(this.draft), proposal.text));
+      if (!large) void later().then(() => this.start(id, () => this.module.Sim.start(this.draft), proposal.text));
       else if (ask) this.waiting = { id, text: proposal.text };
       else void later().then(() => this.buildLarge(id, proposal.text));
     }
@@ -85,7 +115,7 @@ class Worker {
 
   private buildLarge(id: number, text: string) {
     this.start(id, () => {
-      const sim = new wasm.Sim(text);
+      const sim = new this.module.Sim(text);
       this.draft.ran(sim);
       return sim;
     });
@@ -124,7 +154,7 @@ class Worker {
   }
 
   reset() {
-    void later().then(() => this.start(0, () => wasm.Sim.start(this.draft)));
+    void later().then(() => this.start(0, () => this.module.Sim.start(this.draft)));
   }
 
   async link(name?: string, record?: Record<string, unknown>): Promise<string> {
@@ -214,8 +244,11 @@ export interface TestPage {
   until(ready: () => boolean, what?: string): Promise<void>;
 }
 
-/** The page with `features` mounted, the shell's markup and the real core; nothing opened yet. */
-export function testPage(features: Feature[]): TestPage {
+/**
+ * The page with `features` mounted, the shell's markup and the real core; nothing opened yet. With
+ * `rules`, the worker's side runs the rules module (scenarios with scripts run).
+ */
+export function testPage(features: Feature[], { rules = false }: { rules?: boolean } = {}): TestPage {
   startCore();
   noCanvas();
   localStorage.clear();
@@ -225,7 +258,7 @@ export function testPage(features: Feature[]): TestPage {
   const banner = new Banner();
   // Large scenarios open at once: their notice and question are the browser tests'.
   const large = { active: false, loaded() {}, failed() {}, begin: (_cells: number, build: () => void) => build() };
-  const worker = new Worker(() => on);
+  const worker = new Worker(() => on, rules);
   const sim = new Proxy(worker, {
     get: (target, key) => (key in target ? Reflect.get(target, key) : () => undefined),
   }) as unknown as SimClient;

@@ -14,6 +14,7 @@ import { inspect } from './inspect';
 import { offline } from './offline';
 import { record } from './record';
 import { reproduction } from './reproduction';
+import { rules } from './rules';
 import { run } from './run';
 import { scenario } from './scenario';
 import { share } from './share';
@@ -23,6 +24,7 @@ export const FEATURES: readonly Feature[] = [
   run,
   inspect,
   scenario,
+  rules,
   exercise,
   compare,
   share,

@@ -192,8 +192,8 @@ export class SimClient implements ScenarioOwner {
   record(settings: RecordSettings, signal: AbortSignal, progress: Progress): Promise<Recorded> {
     return this.recordings.start(settings, signal, progress, (msg) => this.send(msg));
   }
-
-  private ask(message: (id: number) => ToWorker): Promise<unknown> {
+  /** Asks the worker `message` (given its id) and resolves to its 'answer' (null if it restarted first). */
+  ask(message: (id: number) => ToWorker): Promise<unknown> {
     const id = ++this.askId;
     return new Promise((resolve) => {
       this.answers.set(id, resolve);

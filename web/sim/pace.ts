@@ -3,8 +3,7 @@
 // in place, and sends the page a frame of what its panels show, flow-controlled: the next is sent
 // only after the page has taken the last, so a fast simulation never floods the page. Timing here
 // paces the run; it never enters the model.
-import type { Sim, Viewer } from '../pkg/kumiki_wasm.js';
-import { panic_message } from '../pkg/kumiki_wasm.js';
+import { panic_message, type Sim, type Viewer } from '../pkg/kumiki_wasm.js';
 import type { Frame, Verdict } from '../contract.gen';
 import type { Drawn, WorkerTiming } from '../types';
 import type { RenderStats } from '../view.gen';
@@ -95,7 +94,7 @@ export function guard<T>(context: 'load' | 'apply' | 'step', f: () => T): T | un
   try {
     return f();
   } catch (e) {
-    const panic = panic_message();
+    const panic = memory.panicMessage();
     if (panic) {
       run.sim = null;
       playing = false;
@@ -143,8 +142,8 @@ export function sendFrame(force = false) {
 
 /** Milliseconds spent in the model's steps since the worker started. */
 let stepMs = 0;
-/** The wasm instance's memory, once started. */
-export const memory = { wasm: null as WebAssembly.Memory | null };
+/** The wasm instance in use (the page's module, or its rules module: worker.ts switches): its memory and panic. */
+export const memory = { wasm: null as WebAssembly.Memory | null, panicMessage: panic_message as () => string | undefined };
 
 function work(): WorkerTiming {
   const [frames, uploadMs, drawMs] = run.viewer ? run.viewer.timing() : [0, 0, 0];
@@ -227,10 +226,11 @@ export function stepped() {
   dirty = true;
 }
 
-/** Posts the exercise's verdict on the run as it stands; nothing for a scenario with no exercise. */
+/** Posts the exercise's verdict on the run as it stands, and why a rule's script stopped it (the rule, the line, the cap). */
 export function judge(s: Sim) {
   const result = guard('step', () => s.check_goal() as Verdict | undefined);
   if (result) post({ type: 'goal', met: result.met, because: result.because, steps: s.steps(), credit: result.credit ?? [] });
+  if (s.stopped()) post({ type: 'error', message: `The run stopped: ${s.stopped()}`, context: 'step' });
 }
 
 export function setPlaying(on: boolean) {

@@ -93,6 +93,13 @@ export type ToWorker =
   | { type: 'code'; id: number; cell: number }
   | { type: 'middle'; id: number }
   | { type: 'record'; id: number; settings: RecordSettings }
+  /**
+   * Every model's rule slots (`SlotDoc[]`, the rules module's `rule_slots`), as an 'answer'. The
+   * worker fetches and starts its rules module for it, and keeps the run in view where it is.
+   */
+  | { type: 'rule-slots'; id: number }
+  /** Why `source` cannot be slot `slot` of `model`'s script, as an 'answer' `{problem}` (null: it can); the rules module checks it. */
+  | { type: 'check-rule'; id: number; model: string; slot: string; source: string }
   /** Stops the recording `id`, or drops it if it has not started; it ends with 'record-failed'. */
   | { type: 'record-cancel'; id: number };
 

@@ -2,8 +2,10 @@
 // and the lattice view (a wasm Viewer drawing on the page's transferred OffscreenCanvas). An
 // opening or an edit is checked once by the Draft, and the run is built from the checked scenario
 // it holds: nothing is read or checked again. The play loop and the frames are web/sim/pace.ts's;
-// recordings are web/sim/recorder.ts's.
-import init, { Draft, Sim, Viewer, simulate_panic } from '../pkg/kumiki_wasm.js';
+// recordings are web/sim/recorder.ts's. It starts with the page's module (kumiki_wasm); a scenario
+// that carries rule scripts switches it, for good, to the rules module (kumiki_wasm_rules, the same
+// calls with the script engine), fetched then and never for a scenario without scripts.
+import * as pageModule from '../pkg/kumiki_wasm.js';
 import type { Comparison, Facts, Proposal } from '../contract.gen';
 import {
   acknowledged,
@@ -26,6 +28,22 @@ import {
 } from './pace';
 import type { ClickState, Proposed, ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
+import { carriesRules, editsRules } from './rules';
+
+/** The calls the worker makes of its wasm module: the page's module's, which the rules module has too. */
+type Wasm = typeof pageModule;
+type RulesWasm = typeof import('../pkg/kumiki_wasm_rules.js');
+/** The module in use. */
+let wasm: Wasm = pageModule;
+/** The rules module, once asked for: fetched and started once. */
+let rulesWasm: Promise<RulesWasm> | null = null;
+/** The rules module's memory, once started. */
+let rulesMemory: WebAssembly.Memory | null = null;
+/** The scenario in view's text, to open it again in the rules module's Draft when the worker switches. */
+let inView: string | null = null;
+/** The page's canvases and what it last asked of the view, to draw again with the rules module's Viewer. */
+type ViewAsked = { view: Extract<ToWorker, { type: 'view' }> | null; resize: ToWorker | null; marks: ToWorker | null };
+let viewAsked: ViewAsked = { view: null, resize: null, marks: null };
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
@@ -39,7 +57,7 @@ const scope = self as unknown as DedicatedWorkerGlobalScope;
 const LARGE_CELLS = 1 << 18;
 
 /** The scenario in view, made once the module has started. */
-let draft: Draft | null = null;
+let draft: pageModule.Draft | null = null;
 /** A large scenario proposed and waiting for the page to agree to it: its request and text. */
 let waiting: { id: number; text: string } | null = null;
 
@@ -57,7 +75,7 @@ function proposed(id: number, proposal: Proposal | undefined, ask: boolean) {
   };
   post({ type: 'proposed', proposal: answer });
   if (proposal.problem) return;
-  if (!large) startRun(id, () => Sim.start(needDraft()), proposal.text);
+  if (!large) startRun(id, () => wasm.Sim.start(needDraft()), proposal.text);
   else if (ask) waiting = { id, text: proposal.text };
   else buildLarge(id, proposal.text);
 }
@@ -65,26 +83,27 @@ function proposed(id: number, proposal: Proposal | undefined, ask: boolean) {
 /** Checks and builds a large scenario (this takes a while), which then becomes the one in view. */
 function buildLarge(id: number, text: string) {
   startRun(id, () => {
-    const sim = new Sim(text);
+    const sim = new wasm.Sim(text);
     needDraft().ran(sim);
     return sim;
   });
 }
 
 /** Replaces the run with `make()`'s and tells the page: its layout, its text and its comparison. */
-function startRun(id: number, make: () => Sim, text?: string) {
+function startRun(id: number, make: () => pageModule.Sim, text?: string) {
   const created = guard('load', make);
   if (!created) return;
   run.sim?.free();
   run.sim = created;
+  inView = text ?? created.scenario_json();
   const comparison = guard('load', () => needDraft().comparison() as Comparison) ?? { kind: 'none' };
-  post({ type: 'loaded', id, layout: created.layout(), scenario: text ?? created.scenario_json(), comparison });
+  post({ type: 'loaded', id, layout: created.layout(), scenario: inView, comparison });
   attachLayout();
   started();
 }
 
-function needDraft(): Draft {
-  draft ??= new Draft(LARGE_CELLS);
+function needDraft(): pageModule.Draft {
+  draft ??= new wasm.Draft(LARGE_CELLS);
   return draft;
 }
 
@@ -114,7 +133,7 @@ function handle(msg: ToWorker) {
       waiting = null;
       return;
     case 'reset':
-      if (run.sim) startRun(0, () => Sim.start(needDraft()));
+      if (run.sim) startRun(0, () => wasm.Sim.start(needDraft()));
       return;
     case 'link': {
       // A name too long for a hand-in is the caller's to show, not the banner's.
@@ -182,7 +201,13 @@ function handle(msg: ToWorker) {
     case 'ack':
       return acknowledged();
     case 'crash':
-      guard('step', () => simulate_panic());
+      guard('step', () => wasm.simulate_panic());
+      return;
+    case 'rule-slots':
+      void answerWithRules(msg.id, (rules) => rules.rule_slots());
+      return;
+    case 'check-rule':
+      void answerWithRules(msg.id, (rules) => ({ problem: rules.check_rule(msg.model, msg.slot, msg.source) ?? null }));
       return;
     case 'ping':
     case 'module':
@@ -190,8 +215,10 @@ function handle(msg: ToWorker) {
     case 'visible':
       return setVisible(msg.visible);
     case 'view':
+      viewAsked = { view: msg, resize: null, marks: null };
       return attachView(msg);
     case 'resize':
+      viewAsked.resize = msg;
       run.viewer?.resize(msg.width, msg.height, msg.dpr);
       return redraw();
     case 'camera': {
@@ -204,6 +231,7 @@ function handle(msg: ToWorker) {
       return redraw();
     }
     case 'marks':
+      viewAsked.marks = msg;
       run.viewer?.set_marks(msg.marks);
       return redraw();
     case 'pick': {
@@ -239,7 +267,8 @@ function apply(action: string) {
   const d = needDraft();
   d.ran(s);
   const comparison = guard('step', () => d.comparison() as Comparison) ?? { kind: 'none' };
-  post({ type: 'scenario', scenario: s.scenario_json(), comparison });
+  inView = s.scenario_json();
+  post({ type: 'scenario', scenario: inView, comparison });
   touched();
 }
 
@@ -247,7 +276,7 @@ function apply(action: string) {
 function attachView(msg: Extract<ToWorker, { type: 'view' }>) {
   run.viewer?.free();
   run.viewer = null;
-  const created = guard('load', () => new Viewer(msg.canvas, msg.annotations, msg.prefer));
+  const created = guard('load', () => new wasm.Viewer(msg.canvas, msg.annotations, msg.prefer));
   if (!created) return;
   run.viewer = created;
   post({ type: 'viewer', kind: created.kind() as 'webgl2' | 'canvas2d' });
@@ -259,7 +288,83 @@ const queue: ToWorker[] = [];
 let ready = false;
 /** Handles a message now, or holds it until the recording under way ends. */
 function take(msg: ToWorker) {
-  if (!holdsBack(msg)) handleReporting(msg);
+  if (holdsBack(msg)) return;
+  if (wasm === pageModule && needsRules(msg)) {
+    // Held, with every message after it, until the rules module has started and holds the scenario.
+    ready = false;
+    queue.unshift(msg);
+    void switchToRules();
+    return;
+  }
+  handleReporting(msg);
+}
+
+/** An opening or an edit that puts rule scripts in the scenario: only the rules module runs it. */
+function needsRules(msg: ToWorker): boolean {
+  if (msg.type === 'open') return carriesRules(msg.text);
+  if (msg.type === 'edit') return editsRules(msg.changes);
+  return false;
+}
+
+/** The rules module, fetched and started the first time it is asked for. */
+function loadRules(): Promise<RulesWasm> {
+  rulesWasm ??= import('../pkg/kumiki_wasm_rules.js').then(async (rules) => {
+    rulesMemory = (await rules.default()).memory;
+    return rules;
+  });
+  return rulesWasm;
+}
+
+/** Answers a Rules room's question with the rules module's free functions (the run is not moved). */
+async function answerWithRules(id: number, ask: (rules: RulesWasm) => unknown) {
+  let value: unknown;
+  try {
+    value = ask(await loadRules());
+  } catch (e) {
+    value = { error: e instanceof Error ? e.message : String(e) };
+  }
+  post({ type: 'answer', id, value });
+}
+
+/**
+ * Moves the scenario in view, its view and the messages held since to the rules module: its Draft
+ * opens the scenario in view again (its text carries its exercise and its locks), its Viewer draws
+ * on the page's canvases. The run in view is dropped: the message held (an opening or an edit)
+ * starts the next one.
+ */
+async function switchToRules() {
+  let rules: RulesWasm;
+  try {
+    rules = await loadRules();
+  } catch (e) {
+    queue.shift();
+    post({ type: 'error', message: `the rule scripts' engine could not load: ${String(e)}`, context: 'load' });
+    return drain();
+  }
+  run.sim?.free();
+  run.sim = null;
+  run.viewer?.free();
+  run.viewer = null;
+  draft?.free();
+  draft = null;
+  wasm = rules as unknown as Wasm;
+  memory.wasm = rulesMemory;
+  memory.panicMessage = rules.panic_message;
+  if (inView) guard('load', () => needDraft().open(inView ?? '', false));
+  const { view, resize, marks } = viewAsked;
+  if (view) {
+    attachView(view);
+    if (resize) handle(resize);
+    if (marks) handle(marks);
+  }
+  drain();
+}
+
+/** Handles the messages held while the module started. */
+function drain() {
+  ready = true;
+  // One at a time: a message may switch the module, and those after it wait again.
+  while (ready && queue.length > 0) take(queue.shift() as ToWorker);
 }
 
 /**
@@ -284,12 +389,12 @@ scope.onmessage = (e: MessageEvent<ToWorker>) => {
 
 /** Starts with the page's compiled module (compiled once, for both threads). */
 function start(module: WebAssembly.Module) {
-  init({ module_or_path: module })
+  pageModule
+    .default({ module_or_path: module })
     .then((exports) => {
       memory.wasm = exports.memory;
-      ready = true;
       post({ type: 'ready' });
-      for (const m of queue.splice(0)) take(m);
+      drain();
     })
     .catch((e: unknown) => post({ type: 'error', message: `the simulation could not start: ${String(e)}`, context: 'load' }));
 }

@@ -76,6 +76,22 @@ pub fn rule_slots() -> Result<JsValue, JsError> {
     to_js(&kumiki_core::rules::slots())
 }
 
+/// Checks `source` as the script of `model`'s slot `slot` as a scenario's `rules` would
+/// (`kumiki_core::rules::Rules::read`): `null` when it reads, else the reason, which starts with
+/// "line L, column C: " when the engine places it. The page's editor marks it as the user types.
+/// In the rules module only.
+#[cfg(feature = "rules")]
+#[wasm_bindgen]
+pub fn check_rule(model: &str, slot: &str, source: &str) -> Result<Option<String>, JsError> {
+    let entry = models::entry(model).map_err(js_err)?;
+    let section = serde_json::json!({ slot: source });
+    match kumiki_core::rules::Rules::read(Some(section), entry) {
+        Ok(_) => Ok(None),
+        Err(kumiki_core::Error::Field { reason, .. }) => Ok(Some(reason)),
+        Err(e) => Ok(Some(e.to_string())),
+    }
+}
+
 /// Whether this module runs rule scripts: false in the page's first-load module, true in its
 /// rules module (kumiki_wasm_rules), which the page loads for a scenario that carries `rules`.
 #[wasm_bindgen]
