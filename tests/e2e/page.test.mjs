@@ -169,9 +169,13 @@ describe('the page', () => {
     // Click the centre of a built module: find one from the page's own picking.
     const box = await page.locator('#view').boundingBox();
     let recorded = false;
-    for (let k = 0; k < 40 && !recorded; k++) {
-      const x = box.x + box.width * (0.2 + (0.6 * ((k * 7) % 40)) / 40);
-      const y = box.y + box.height * (0.5 + (0.45 * ((k * 13) % 40)) / 40);
+    // A grid over the view, bottom rows first: the L stands on its stem, built up from the conveyor.
+    const points = [];
+    for (let j = 19; j >= 0; j--) for (let i = 0; i < 20; i++) points.push([(i + 0.5) / 20, (j + 0.5) / 20]);
+    for (const [fx, fy] of points) {
+      if (recorded) break;
+      const x = box.x + box.width * fx;
+      const y = box.y + box.height * fy;
       // The inspector names the cell under the pointer as it moves; only a module takes the tool.
       await page.mouse.move(x, y);
       const state = await page.evaluate(() => {
@@ -318,9 +322,10 @@ describe('the AMAS target editor', () => {
     const box = await page.locator('.grid-canvas').boundingBox();
     const cell = box.width / w;
     const at = (x, y) => [box.x + (x + 0.5) * cell, box.y + (y + 0.5) * cell];
-    // The top-right cell is empty in amas-L and touches nothing: painting it alone is refused.
-    assert.equal(rows[0][w - 1], '.');
-    await page.mouse.click(...at(w - 1, 0));
+    // The bottom-right cell is empty in amas-L (the L stands on its stem, its bar on top) and
+    // touches nothing: painting it alone is refused.
+    assert.equal(rows[h - 1][w - 1], '.');
+    await page.mouse.click(...at(w - 1, h - 1));
     await page.waitForFunction(() => document.querySelector('#model-editor .error').textContent.includes('not connected'));
     assert.equal(await target(), before, 'a refused shape does not change the scenario');
     // Undo the stray cell, then paint a cell on top of the bar, which is connected.

@@ -132,9 +132,13 @@ export const editor: ModelEditor = {
 /** Its built-in scenarios' titles in words, by code name (the gallery and the page's header show both). */
 export const titles: Record<string, string> = {
   'fracta-deadlock': 'Two triangles in deadlock (figure 4)',
+  'fracta-deadlock-corner': 'Two triangles in deadlock, the spare beside a corner',
   'fracta-hexagon7': 'A line curls into a hexagon',
   'fracta-large': '990 units form a large triangle',
   'fracta-repair': 'A triangle repairs itself',
+  'fracta-repair-corner': 'A triangle repairs itself, the spare beside a corner',
   'fracta-triangle10': 'Two lines form a triangle',
   'fracta-triangle10-3spares': 'A triangle with three spares',
+  'fracta-triangle10-3spares-corner': 'A triangle with three spares beside its corners',
+  'fracta-triangle10-corner': 'Two lines form a triangle, the spare beside a corner',
 };
