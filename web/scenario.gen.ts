@@ -81,6 +81,8 @@ export interface AmasScenario {
   robots: number;
   /** Scripts in the model's rule slots, in place of the paper's rules (docs/rules.md): each slot's script, or null for the paper's rule. */
   rules?: {
+    /** AMAS: what a robot does after a collision (sections 4.6 and 5.1). Each robot that could not do what it planned (a larger token claimed the cell first, a robot stands on the module it wants, or two robots want each other's modules) decides what it does next: keep its course without penalty, pay the penalty and plan again, or pay the penalty and step aside to the best free module at its next plan. Module relay is settled before: a loaded and an unloaded robot that meet swap loads instead of colliding. The script defines fn collision(input), which answers "keeps" (keeps its course and waits without penalty), "waits" (pays the penalty, then plans again) or "gives_way" (pays the penalty, then steps aside). null: the paper's rule. */
+    collision?: string | null;
   };
   /** The seed of every random choice of the run. */
   seed: number;

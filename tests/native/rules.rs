@@ -28,8 +28,9 @@ const MAX_STEPS: u64 = 300;
 /// Settings a slot's paper script is also held to, beside its model's presets as they are: the
 /// two selection rules of cubes3d that no preset uses (every one uses the MRF), with "no motion"
 /// among random selection's options and without it (model version 4 and before), on one target
-/// and two, with the light's priority on positions and on units.
-const VARIANTS: [(&str, &str); 7] = [
+/// and two, with the light's priority on positions and on units; and AMAS's L with every loser
+/// giving way (its links made before model version 3).
+const VARIANTS: [(&str, &str); 8] = [
     ("cubes-cube8-zigzag", r#"{"selection": "random"}"#),
     (
         "cubes-cube8-zigzag",
@@ -43,6 +44,7 @@ const VARIANTS: [(&str, &str); 7] = [
         "cubes-light",
         r#"{"selection": "random", "priority": "units"}"#,
     ),
+    ("amas-L", r#"{"give_way": "every_loser"}"#),
 ];
 
 /// Every (preset, settings) of `entry`'s model whose run asks `slot`: its presets, then its
@@ -254,7 +256,25 @@ fn every_slots_paper_script_gives_the_built_in_rules_hashes_on_every_preset_that
     };
     assert_eq!(of("cubes-").len(), count("cubes3d"), "{checked:?}");
     let select = checked.iter().filter(|c| c.contains(":select:")).count();
-    assert_eq!(select, count("cubes3d") + VARIANTS.len(), "{checked:?}");
+    let variants = |prefix: &str| {
+        VARIANTS
+            .iter()
+            .filter(|(p, _)| p.starts_with(prefix))
+            .count()
+    };
+    assert_eq!(select, count("cubes3d") + variants("cubes-"), "{checked:?}");
+    // AMAS asks `collision` wherever robots collide in their first steps: not in the square,
+    // whose 28 robots build their columns in lockstep, nor in figures 25 and 26's squares.
+    assert_eq!(
+        of("amas-"),
+        ["L", "T", "bridge-single", "bridge-staged", "fig24"],
+        "{checked:?}"
+    );
+    assert_eq!(
+        checked.iter().filter(|c| c.contains(":collision:")).count(),
+        of("amas-").len() + variants("amas-"),
+        "{checked:?}"
+    );
     for slot in ["activation", "roll"] {
         let asked = checked
             .iter()
@@ -344,7 +364,7 @@ fn rules_read_write_and_refuse_by_name() {
         .to_string();
     assert_eq!(
         amas,
-        "rules.select: amas has no rule slot 'select'; it has none yet"
+        "rules.select: amas has no rule slot 'select'; its slots: collision"
     );
 }
 

@@ -1,7 +1,9 @@
 //! Step phase 2, conflicts (4.6): which moves go ahead, module relay (4.6.1), and the
 //! collision penalty of the robots that must wait.
 
-use super::collision::{self, Conflict, Outcome, Partner};
+use kumiki_model::slot::Stop;
+
+use super::collision::{self, Conflict, Meeting, Outcome, Partner};
 use super::spec::GiveWay;
 use super::{
     Amas, Collision, Communication, Plan, EV_COLLISION, EV_RELAY, MOVES, NONE, STAYS, UNKNOWN,
@@ -180,7 +182,7 @@ impl Amas {
 
     /// Token and relay rules: decides which moves go ahead, then hands modules over (relay)
     /// or charges the collision penalty to the robots that must wait.
-    pub(super) fn settle_conflicts(&mut self) {
+    pub(super) fn settle_conflicts(&mut self) -> Result<(), Stop> {
         let n = self.robots.len();
         for r in 0..n {
             if matches!(self.plans[r], Plan::Move(_)) {
@@ -188,7 +190,7 @@ impl Amas {
             }
         }
         if self.p.collision == Collision::Blackboard {
-            return;
+            return Ok(());
         }
         if self.p.collision == Collision::Relay {
             for k in 0..n {
@@ -253,12 +255,14 @@ impl Amas {
                 Plan::Blocked(_) => self.claimant(t, r),
                 _ => Some(self.occupant[t as usize] as usize),
             };
-            match collision::outcome(conflict, self.p.give_way) {
+            let meeting = Meeting::of(conflict, self.p.give_way, self.robots[r].loaded);
+            match self.collision_rule.decide(&meeting, None)? {
                 Outcome::Keeps => {}
                 Outcome::Waits => self.collide(r, t, other, false),
                 Outcome::GivesWay => self.collide(r, t, other, true),
             }
         }
+        Ok(())
     }
 
     /// The robots that could not do what they planned, in planning order, with the cell each

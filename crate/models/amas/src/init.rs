@@ -11,6 +11,7 @@ use super::{
 };
 use kumiki_model::lattice::{Lattice, Square};
 use kumiki_model::rng::Rng;
+use kumiki_model::slot::Rule;
 
 impl Amas {
     /// The model at step 0, from its checked plan (see [`spec::Spec::validate`]).
@@ -114,6 +115,8 @@ impl Amas {
             claimed: Vec::new(),
             chain: Vec::new(),
             losers: Vec::new(),
+            collision_rule: Rule::paper(),
+            stopped: None,
             yielding: vec![false; robots_n],
             ahead: vec![NONE; robots_n],
             lock: vec![0; robots_n],

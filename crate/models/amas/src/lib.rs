@@ -12,6 +12,7 @@ use kumiki_model::error::Result;
 use kumiki_model::hash::StateHasher;
 use kumiki_model::model::{Action, Agent, Event, Layout, Metric, Model};
 use kumiki_model::rng::Rng;
+use kumiki_model::slot::{Rule, Script};
 
 mod act;
 mod actions;
@@ -46,7 +47,7 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
-    slots: &[],
+    slots: &[<collision::CollisionRule as kumiki_model::slot::Slot>::INFO],
     queries: &[],
     // Links made before a version replay with the readings they were made with.
     pins: &[
@@ -156,6 +157,11 @@ pub struct Amas {
     /// Scratch: the robots that could not do what they planned this step, with the cell each
     /// wanted and why, and which of them give way as the smaller token of a lock.
     losers: Vec<(u32, u32, collision::Conflict)>,
+    /// What a robot that lost a collision does: the paper's rule, or a scenario's script (the
+    /// slot `collision`).
+    collision_rule: Rule<collision::CollisionRule>,
+    /// Why a script stopped the run, once one did.
+    stopped: Option<String>,
     yielding: Vec<bool>,
     /// Scratch: the robot each robot waits on this step, and its lock bits (`conflicts.rs`).
     ahead: Vec<u32>,
@@ -248,13 +254,34 @@ impl Model for Amas {
     fn step(&mut self) {
         self.events.clear();
         self.plan_all();
-        self.settle_conflicts();
+        if let Err(stop) = self.settle_conflicts() {
+            self.stopped = Some(stop.0);
+            self.steps += 1;
+            return;
+        }
         self.act_all();
         self.settle();
         for _ in 0..self.p.updates {
             self.field.update(&self.state, self.w, self.top);
         }
         self.steps += 1;
+    }
+
+    fn install(&mut self, slot: &str, script: std::rc::Rc<dyn Script>) -> Result<()> {
+        match slot {
+            "collision" => self.collision_rule.install(script),
+            _ => {
+                return Err(kumiki_model::error::Error::field(
+                    format!("rules.{slot}"),
+                    "amas has one rule slot: collision",
+                ))
+            }
+        }
+        Ok(())
+    }
+
+    fn stopped(&self) -> Option<&str> {
+        self.stopped.as_deref()
     }
 
     fn steps(&self) -> u64 {
