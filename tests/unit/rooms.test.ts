@@ -39,7 +39,7 @@ describe('the gallery', () => {
     const filter = $<HTMLInputElement>('#gallery-filter');
     filter.value = 'repairs itself';
     filter.dispatchEvent(new Event('input'));
-    expect(all('#gallery-list [data-preset]').map((c) => c.dataset.preset)).toEqual(['fracta-repair']);
+    expect(all('#gallery-list [data-preset]').map((c) => c.dataset.preset)).toEqual(['fracta-repair', 'fracta-repair-corner']);
   });
 
   it('opens a chosen scenario, and its name in words heads the page', async () => {
