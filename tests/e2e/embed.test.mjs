@@ -64,7 +64,9 @@ async function course(embedUrl) {
 }
 
 const events = (page, type) => page.evaluate((t) => events.filter((e) => !t || e.type === t), type);
-const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 30000 });
+// A minute: a run to its end (amas-L on its stem, about 500 steps) may take that long on a
+// crowded machine; what is waited for is an event, not a speed.
+const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 60000 });
 
 describe('embedded in a course page on another origin', () => {
   test('shows the view, the run controls and the exercise panel, and nothing else', async () => {
