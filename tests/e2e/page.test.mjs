@@ -322,10 +322,11 @@ describe('the AMAS target editor', () => {
     const box = await page.locator('.grid-canvas').boundingBox();
     const cell = box.width / w;
     const at = (x, y) => [box.x + (x + 0.5) * cell, box.y + (y + 0.5) * cell];
-    // The bottom-right cell is empty in amas-L (the L stands on its stem, its bar on top) and
-    // touches nothing: painting it alone is refused.
-    assert.equal(rows[h - 1][w - 1], '.');
-    await page.mouse.click(...at(w - 1, h - 1));
+    // The right-hand cell of the row above the bottom is empty in amas-L (the L stands on its
+    // stem, its bar on top) and touches nothing, not even the supply row below the bottom row
+    // (which would hold it, as it holds a bridge's piers): painting it alone is refused.
+    assert.deepEqual([rows[h - 3][w - 1], rows[h - 2][w - 2], rows[h - 2][w - 1], rows[h - 1][w - 1]], ['.', '.', '.', '.']);
+    await page.mouse.click(...at(w - 1, h - 2));
     await page.waitForFunction(() => document.querySelector('#model-editor .error').textContent.includes('not connected'));
     assert.equal(await target(), before, 'a refused shape does not change the scenario');
     // Undo the stray cell, then paint a cell on top of the bar, which is connected.
