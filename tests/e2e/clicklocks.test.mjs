@@ -5,13 +5,9 @@
 // (`scenario.disturbances.0.at >= 0`), and a control exercise that allows one click of a kind
 // meets it with that click and then counts the tool down to locked: so the test could tell.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session } from './harness.mjs';
+import { audit, loadWasm, openPage, session } from './harness.mjs';
 
-const require = createRequire(import.meta.url);
-const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
 const wasm = loadWasm();
 const s = session();
 
@@ -37,21 +33,6 @@ function exerciseLink(name, allow = {}) {
   const doc = JSON.parse(wasm.preset_json(name));
   doc.exercise = { title: `Do not disturb ${name}`, instructions: 'Leave the run as it is.', goal: GOAL, disturbances: allow, hints: [] };
   return wasm.encode_link(JSON.stringify(doc));
-}
-
-/** Serious and critical axe violations on the page as it stands. */
-async function audit(page) {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
-  return page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
-      rules: { 'label-content-name-mismatch': { enabled: true } },
-      resultTypes: ['violations'],
-    });
-    return result.violations
-      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-      .map((v) => `${v.id} at ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
-  });
 }
 
 /** The disturbances the scenario in view carries, as the JSON editor shows it. */
@@ -89,7 +70,7 @@ describe('click tools under an exercise', () => {
       const tools = await page.$$eval('#tools button', (bs) => bs.map((b) => b.dataset.tool).filter((t) => t !== 'inspect'));
       assert.ok(tools.length > 0, 'the model has click tools, and they are listed');
       await page.waitForFunction((n) => document.querySelectorAll('#tools button[aria-disabled="true"]').length === n, tools.length);
-      assert.deepEqual(await audit(page), [], 'axe, with the tools locked');
+      assert.deepEqual(await audit(page, 'the tools locked'), [], 'axe, with the tools locked');
 
       for (const t of tools) {
         const button = page.locator(`#tools button[data-tool="${t}"]`);

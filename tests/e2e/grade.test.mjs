@@ -10,12 +10,9 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { createRequire } from 'node:module';
-import { kumiki, loadWasm, openPage, session } from './harness.mjs';
+import { audit, kumiki, loadWasm, openPage, session } from './harness.mjs';
 import { xlsx } from './xlsx.mjs';
 
-const require = createRequire(import.meta.url);
-const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
 const wasm = loadWasm();
 const s = session();
 const LESSON = 'lesson-amas-robots';
@@ -97,21 +94,6 @@ function formClass(base) {
   rows.push(['2026-11-28 10:19:00', 'Bob', 'I lost it', 'No idea,\nsorry.']);
   const cell = (c) => (/[",\n]/.test(c) ? `"${c.replace(/"/g, '""')}"` : c);
   return { rows, csv: `${rows.map((r) => r.map(cell).join(',')).join('\r\n')}\r\n` };
-}
-
-/** Serious and critical axe violations on the page as it stands. */
-async function audit(page) {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.evaluate(AXE);
-  return page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'] },
-      rules: { 'label-content-name-mismatch': { enabled: true } },
-      resultTypes: ['violations'],
-    });
-    return result.violations
-      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-      .map((v) => `${v.id} at ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
-  });
 }
 
 /** Opens `file` in the Grade view, grades it by the exercise the links carry, and returns the table's cells. */
@@ -250,7 +232,7 @@ describe('the Grade view', () => {
       const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-export')]);
       assert.equal(readFileSync(await download.path(), 'utf8'), kumiki(['check', '--file', file, '--format', 'csv']), `${file}: the export`);
     }
-    assert.deepEqual(await audit(page), [], 'axe, with the graded table');
+    assert.deepEqual(await audit(page, 'the graded table'), [], 'axe, with the graded table');
 
     // A file that is neither text nor a workbook: one message, and the previous table and tally go.
     const junk = join(tmpdir(), `kumiki-junk-${process.pid}.png`);

@@ -166,7 +166,7 @@ fn enclosed(cells: &[(i32, i32)], at: &dyn Fn(i32, i32) -> bool) -> bool {
 }
 
 /// Axial cells in a normal form shared by every rotation, reflection and translation.
-fn normal_form(cells: &[(i32, i32)]) -> Vec<(i32, i32)> {
+pub(super) fn normal_form(cells: &[(i32, i32)]) -> Vec<(i32, i32)> {
     let normal = |cs: &[(i32, i32)]| -> Vec<(i32, i32)> {
         let q0 = cs.iter().map(|c| c.0).min().unwrap_or(0);
         let r0 = cs.iter().map(|c| c.1).min().unwrap_or(0);

@@ -65,26 +65,7 @@ fn shape_up_to_symmetry(m: &Fracta) -> Vec<(i32, i32)> {
         .iter()
         .map(|&u| Hex::to_axial(m.lattice.coord(m.units[u as usize].cell as usize)))
         .collect();
-    let normal = |cs: &[(i32, i32)]| -> Vec<(i32, i32)> {
-        let q0 = cs.iter().map(|c| c.0).min().unwrap_or(0);
-        let r0 = cs.iter().map(|c| c.1).min().unwrap_or(0);
-        let mut out: Vec<(i32, i32)> = cs.iter().map(|&(q, r)| (q - q0, r - r0)).collect();
-        out.sort_unstable();
-        out
-    };
-    let mut best: Option<Vec<(i32, i32)>> = None;
-    let mut cur = cells;
-    for _ in 0..2 {
-        for _ in 0..6 {
-            let n = normal(&cur);
-            if best.as_ref().is_none_or(|b| n < *b) {
-                best = Some(n);
-            }
-            cur = cur.iter().map(|&(q, r)| (-r, q + r)).collect();
-        }
-        cur = cur.iter().map(|&(q, r)| (q + r, -r)).collect();
-    }
-    best.unwrap_or_default()
+    super::fixed_points::normal_form(&cells)
 }
 
 #[test]
