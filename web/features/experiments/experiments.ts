@@ -79,10 +79,12 @@ export function setupExperiments(page: PageContext) {
     }
   };
 
-  // Until the lab module is loaded, nothing can run, be shared or be chosen.
+  // Until the lab module is loaded, nothing can run, be shared, be chosen or be typed: the load
+  // fills the editor, and would overwrite what was typed meanwhile.
   const startLink = location.hash.startsWith('#x1.') ? location.hash : null;
   if (startLink) prefs.tab = 'experiments';
   runButton.disabled = select.disabled = linkButton.disabled = true;
+  editor.readOnly = true;
   let loaded: Promise<boolean> | null = null;
   /** Loads the lab module once, then fills the panel: the built-in experiments and the one in view. */
   const load = (): Promise<boolean> => {
@@ -96,6 +98,7 @@ export function setupExperiments(page: PageContext) {
         if (!opened && prefs.experimentText) showEdited(prefs.experimentText);
         else if (!opened) show(prefs.experiment);
         runButton.disabled = select.disabled = linkButton.disabled = false;
+        editor.readOnly = false;
         return true;
       },
       (e: unknown) => {
