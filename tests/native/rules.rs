@@ -29,8 +29,9 @@ const MAX_STEPS: u64 = 300;
 /// two selection rules of cubes3d that no preset uses (every one uses the MRF), with "no motion"
 /// among random selection's options and without it (model version 4 and before), on one target
 /// and two, with the light's priority on positions and on units; and AMAS's L with every loser
-/// giving way (its links made before model version 3).
-const VARIANTS: [(&str, &str); 8] = [
+/// giving way (its links made before model version 3), and the L and figure 24's continuous
+/// field with each robot drawing among equally good neighbours (footnote 3's other reading).
+const VARIANTS: [(&str, &str); 10] = [
     ("cubes-cube8-zigzag", r#"{"selection": "random"}"#),
     (
         "cubes-cube8-zigzag",
@@ -45,6 +46,8 @@ const VARIANTS: [(&str, &str); 8] = [
         r#"{"selection": "random", "priority": "units"}"#,
     ),
     ("amas-L", r#"{"give_way": "every_loser"}"#),
+    ("amas-L", r#"{"direction": "robot"}"#),
+    ("amas-fig24", r#"{"direction": "robot"}"#),
 ];
 
 /// Every (preset, settings) of `entry`'s model whose run asks `slot`: its presets, then its
@@ -263,16 +266,25 @@ fn every_slots_paper_script_gives_the_built_in_rules_hashes_on_every_preset_that
             .count()
     };
     assert_eq!(select, count("cubes3d") + variants("cubes-"), "{checked:?}");
-    // AMAS asks `collision` wherever robots collide in their first steps: not in the square,
-    // whose 28 robots build their columns in lockstep, nor in figures 25 and 26's squares.
+    // AMAS asks `direction` in every preset (every robot reads its module at every plan), and
+    // `collision` wherever robots collide in their first steps: not in the square, whose 28
+    // robots build their columns in lockstep, nor in figures 25 and 26's squares.
+    let amas = |slot: &str| -> Vec<String> {
+        let mut names: Vec<String> = checked
+            .iter()
+            .filter(|c| c.starts_with("amas-") && c.contains(&format!(":{slot}:")))
+            .map(|c| c["amas-".len()..].split(':').next().unwrap().to_string())
+            .collect();
+        let all = names.len();
+        names.sort();
+        names.dedup();
+        assert_eq!(all, names.len() + variants("amas-"), "{slot}: {checked:?}");
+        names
+    };
+    assert_eq!(amas("direction").len(), count("amas"), "{checked:?}");
     assert_eq!(
-        of("amas-"),
+        amas("collision"),
         ["L", "T", "bridge-single", "bridge-staged", "fig24"],
-        "{checked:?}"
-    );
-    assert_eq!(
-        checked.iter().filter(|c| c.contains(":collision:")).count(),
-        of("amas-").len() + variants("amas-"),
         "{checked:?}"
     );
     for slot in ["activation", "roll"] {
@@ -364,7 +376,7 @@ fn rules_read_write_and_refuse_by_name() {
         .to_string();
     assert_eq!(
         amas,
-        "rules.select: amas has no rule slot 'select'; its slots: collision"
+        "rules.select: amas has no rule slot 'select'; its slots: direction, collision"
     );
 }
 
@@ -406,6 +418,42 @@ fn a_hostile_script_stops_the_run_with_the_rule_the_line_and_the_cap() {
         assert!(!run.step());
         assert_eq!(run.outcome().stopped.as_deref(), Some(stopped.as_str()));
     }
+}
+
+#[test]
+fn a_direction_off_the_structure_stops_the_run_naming_the_rule_and_the_way() {
+    // A robot steps only onto a neighbouring module: "always north" runs until a robot's
+    // module has none to its north.
+    let mut run = Run::new(scripted_scenario(
+        "amas-L",
+        "direction",
+        "fn direction(robot) { \"N\" }",
+    ))
+    .unwrap();
+    run.run_to_end();
+    assert_eq!(
+        run.stopped(),
+        Some("rule 'direction' answered N, where no module is: a robot steps only onto a neighbouring module")
+    );
+    // "wait" is an answer too: robots only pick and place where they stand, and never wander.
+    let mut still = Run::new(scripted_scenario(
+        "amas-L",
+        "direction",
+        "fn direction(robot) { \"wait\" }",
+    ))
+    .unwrap();
+    still.advance(50);
+    let mut paper = Run::new(presets::scenario("amas-L").unwrap()).unwrap();
+    paper.advance(50);
+    assert_eq!(still.stopped(), None);
+    assert_eq!(still.outcome().metrics["wandering"], json!(0));
+    let placed = |run: &Run| run.outcome().metrics["placed"].as_u64().unwrap();
+    assert!(
+        placed(&still) < placed(&paper),
+        "{} against {}",
+        placed(&still),
+        placed(&paper)
+    );
 }
 
 #[test]

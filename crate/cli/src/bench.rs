@@ -15,8 +15,8 @@
 //! compiler) are warm. The median rate over the repeats is reported, with the bytes the run holds
 //! per lattice cell.
 //!
-//! `"rules": "paper"` puts every slot's paper rule, as a script, in the scenario's model
-//! (`"against"` names the workload of the built-in rules, which the bench prints it beside), and
+//! `"rules": "paper"` puts every slot's paper rule, as a script, in the scenario's model, and a
+//! list of slot names puts only theirs (`"against"` names the workload of the built-in rules, which the bench prints it beside), and
 //! `"stops"` names a file of hostile scripts (`tests/fixtures/rules.json`) to time how long each
 //! takes to be stopped instead of stepping one run.
 
@@ -138,13 +138,11 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
             overrides.push((k.clone(), val.clone()));
         }
     }
-    if v["rules"] == "paper" {
-        for slot in models::entry(scenario.model())
-            .map_err(|e| err(&e.to_string()))?
-            .slots
-        {
-            overrides.push((format!("rules.{}", slot.name), slot.paper.into()));
-        }
+    let slots = models::entry(scenario.model())
+        .map_err(|e| err(&e.to_string()))?
+        .slots;
+    for slot in slots.iter().filter(|s| scripted(&v["rules"], s.name)) {
+        overrides.push((format!("rules.{}", slot.name), slot.paper.into()));
     }
     let scenario = scenario
         .with_overrides(&overrides)
@@ -161,6 +159,16 @@ pub fn load(path: &std::path::Path) -> Result<Workload, String> {
         experiment,
         stops,
     })
+}
+
+/// Whether a workload's `rules` (`"paper"`: every slot; a list: the slots named) puts the
+/// paper's script in slot `name`.
+fn scripted(rules: &Value, name: &str) -> bool {
+    match rules {
+        Value::String(all) => all == "paper",
+        Value::Array(names) => names.iter().any(|n| n == name),
+        _ => false,
+    }
 }
 
 /// The hostile scripts of a rules fixture (`stopped`: name, preset, slot, source), each as its

@@ -53,14 +53,14 @@ impl Drop for Temp {
 fn rules_lists_the_slots_and_prints_the_papers_script() {
     let list = stdout(&kumiki(&["rules"]));
     assert!(
-        list.starts_with("amas collision\tAMAS: what a robot does after a collision"),
+        list.starts_with("amas direction\tAMAS: the direction a module shows its robot (footnote 3)\namas collision\tAMAS: what a robot does after a collision"),
         "{list}"
     );
     assert!(
         list.contains("\nchobie leader\tCHOBIE II: who leads"),
         "{list}"
     );
-    assert_eq!(list.lines().count(), 5, "{list}");
+    assert_eq!(list.lines().count(), 6, "{list}");
     let paper = models::entry("chobie").unwrap().slots[0].paper;
     assert_eq!(stdout(&kumiki(&["rules", "chobie", "leader"])), paper);
     let out = kumiki(&["rules", "chobie", "lead"]);

@@ -116,6 +116,7 @@ impl Amas {
             chain: Vec::new(),
             losers: Vec::new(),
             collision_rule: Rule::paper(),
+            direction_rule: Rule::paper(),
             stopped: None,
             yielding: vec![false; robots_n],
             ahead: vec![NONE; robots_n],

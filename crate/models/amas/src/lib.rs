@@ -47,7 +47,10 @@ pub const ENTRY: ModelEntry = ModelEntry {
     parse: entry::parse::<Spec>,
     schema: entry::schema_of::<Spec>(),
     disturbance: entry::schema_of::<actions::Raw>(),
-    slots: &[<collision::CollisionRule as kumiki_model::slot::Slot>::INFO],
+    slots: &[
+        <direction::DirectionRule as kumiki_model::slot::Slot>::INFO,
+        <collision::CollisionRule as kumiki_model::slot::Slot>::INFO,
+    ],
     queries: &[],
     // Links made before a version replay with the readings they were made with.
     pins: &[
@@ -160,6 +163,9 @@ pub struct Amas {
     /// What a robot that lost a collision does: the paper's rule, or a scenario's script (the
     /// slot `collision`).
     collision_rule: Rule<collision::CollisionRule>,
+    /// What the module under a robot shows it: the paper's rule, or a scenario's script (the
+    /// slot `direction`).
+    direction_rule: Rule<direction::DirectionRule>,
     /// Why a script stopped the run, once one did.
     stopped: Option<String>,
     yielding: Vec<bool>,
@@ -253,8 +259,7 @@ impl Model for Amas {
 
     fn step(&mut self) {
         self.events.clear();
-        self.plan_all();
-        if let Err(stop) = self.settle_conflicts() {
+        if let Err(stop) = self.plan_all().and_then(|()| self.settle_conflicts()) {
             self.stopped = Some(stop.0);
             self.steps += 1;
             return;
@@ -270,10 +275,11 @@ impl Model for Amas {
     fn install(&mut self, slot: &str, script: std::rc::Rc<dyn Script>) -> Result<()> {
         match slot {
             "collision" => self.collision_rule.install(script),
+            "direction" => self.direction_rule.install(script),
             _ => {
                 return Err(kumiki_model::error::Error::field(
                     format!("rules.{slot}"),
-                    "amas has one rule slot: collision",
+                    "amas has two rule slots: direction and collision",
                 ))
             }
         }

@@ -1,7 +1,9 @@
 //! Step phase 1, planning (5.1): robots plan one after another in a fresh random order; each
 //! reads the field on the module under it (footnote 3) and claims the cell it wants.
 
-use super::direction::{self, Reading, Shown, LISTED};
+use kumiki_model::slot::Stop;
+
+use super::direction::{self, Reading, Shown, Sight, LISTED};
 use super::field::Field;
 use super::state::{ACTIVE_MASK, CLAIMED, CONVEYOR, FRONT, MODULE, REMOVE, SOURCE, VACANT};
 use super::{Amas, Collision, Plan, NONE, UNKNOWN};
@@ -105,13 +107,48 @@ impl Amas {
         self.pick_random(&options[..n])
     }
 
-    /// The move the module under the robot shows it (footnote 3, [`direction::shown`]): towards
-    /// the best neighbour, or, with no effective gradient, a random neighbouring module. On a
+    /// What the module at `i` shows a robot that is `loaded` and sees `reading` (footnote 3):
+    /// the paper's rule, [`direction::shown`], or a scenario's script (the slot `direction`),
+    /// whose answer must name neighbouring modules.
+    fn show(&self, reading: &Reading, loaded: bool, giving_way: bool) -> Result<Shown, Stop> {
+        let sight = Sight::of(
+            reading,
+            self.p.threshold,
+            self.p.direction,
+            loaded,
+            giving_way,
+        );
+        let shown = self.direction_rule.decide(&sight, None)?;
+        let modules = (0..4)
+            .filter(|&slot| reading.cost[slot].is_some())
+            .fold(0u8, |set, slot| set | 1 << slot);
+        let named = match shown {
+            Shown::Toward(slot) => 1 << slot,
+            Shown::Among(set) => set,
+            Shown::Nowhere | Shown::NoGradient => 0,
+        };
+        match named & !modules {
+            0 => Ok(shown),
+            off => Err(Stop(format!(
+                "rule 'direction' answered {}, where no module is: a robot steps only onto a neighbouring module",
+                ["N", "S", "E", "W"][off.trailing_zeros() as usize]
+            ))),
+        }
+    }
+
+    /// The move the module under the robot shows it (footnote 3, [`Amas::show`]): towards the
+    /// best neighbour, or, with no effective gradient, a random neighbouring module. On a
     /// blackboard the robot avoids engaged modules and takes the best free one.
-    pub(super) fn follow(&mut self, r: usize, i: usize, loaded: bool, board: bool) -> Plan {
+    pub(super) fn follow(
+        &mut self,
+        r: usize,
+        i: usize,
+        loaded: bool,
+        board: bool,
+    ) -> Result<Plan, Stop> {
         let around = self.compass(i);
         let reading = self.reading(&around, loaded, |j| !(board && self.engaged(j, i)));
-        match direction::shown(&reading, self.p.threshold, self.p.direction) {
+        Ok(match self.show(&reading, loaded, false)? {
             Shown::Toward(slot) => Plan::Move(around[slot] as u32),
             Shown::Among(set) => self.draw(set, &around).map_or(Plan::Wait, Plan::Move),
             Shown::Nowhere => Plan::Wait,
@@ -123,19 +160,19 @@ impl Amas {
                     .fold(0u8, |set, slot| set | 1 << slot);
                 self.draw(open, &around).map_or(Plan::Wait, Plan::Move)
             }
-        }
+        })
     }
 
     /// A robot that gives way (4.6) steps, at its next plan, to the best module for itself that
     /// no robot stands on: it moves on if the way has cleared, or aside if it has not.
-    pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Option<u32> {
+    pub(super) fn give_way(&mut self, i: usize, loaded: bool) -> Result<Option<u32>, Stop> {
         let around = self.compass(i);
         let reading = self.reading(&around, loaded, |j| self.occupant[j] == NONE);
-        match direction::shown(&reading, f32::NEG_INFINITY, self.p.direction) {
+        Ok(match self.show(&reading, loaded, true)? {
             Shown::Toward(slot) => Some(around[slot] as u32),
             Shown::Among(set) => self.draw(set, &around),
             Shown::Nowhere | Shown::NoGradient => None,
-        }
+        })
     }
 
     /// A vacant target site among `nb`, chosen at random; on a blackboard, not one another
@@ -154,7 +191,7 @@ impl Amas {
     }
 
     /// What robot `r` wants to do this step.
-    pub(super) fn decide(&mut self, r: usize) -> Plan {
+    pub(super) fn decide(&mut self, r: usize) -> Result<Plan, Stop> {
         let rb = self.robots[r];
         let i = rb.cell as usize;
         let s = self.state[i];
@@ -163,8 +200,8 @@ impl Amas {
         self.robots[r].waiting_for = NONE;
         if rb.give_way {
             self.robots[r].give_way = false;
-            if let Some(c) = self.give_way(i, rb.loaded) {
-                return Plan::Move(c);
+            if let Some(c) = self.give_way(i, rb.loaded)? {
+                return Ok(Plan::Move(c));
             }
         }
         if s & ACTIVE_MASK != MODULE {
@@ -174,7 +211,7 @@ impl Amas {
             let (nb, k) = self.neighbours(i);
             if rb.loaded {
                 if let Some(t) = self.vacant_site(&nb[..k], board) {
-                    return Plan::Place(t);
+                    return Ok(Plan::Place(t));
                 }
             }
             let mut walk = [0u32; 4];
@@ -187,19 +224,19 @@ impl Amas {
             }
             self.robots[r].lost = true;
             self.wandering += 1;
-            return self.pick_random(&walk[..n]).map_or(Plan::Wait, Plan::Move);
+            return Ok(self.pick_random(&walk[..n]).map_or(Plan::Wait, Plan::Move));
         }
         let (nb, k) = self.neighbours(i);
         if rb.loaded {
             if s & FRONT != 0 {
                 if s & CONVEYOR != 0 && self.return_mode {
-                    return Plan::Return;
+                    return Ok(Plan::Return);
                 }
                 if let Some(t) = self.vacant_site(&nb[..k], board) {
-                    return Plan::Place(t);
+                    return Ok(Plan::Place(t));
                 }
                 if board {
-                    return Plan::Wait;
+                    return Ok(Plan::Wait);
                 }
             }
             return self.follow(r, i, true, board);
@@ -219,12 +256,12 @@ impl Amas {
                 }
             }
             if n > 0 {
-                return self
+                return Ok(self
                     .pick_random(&opts[..n])
-                    .map_or(Plan::Wait, Plan::Remove);
+                    .map_or(Plan::Wait, Plan::Remove));
             }
             if s & CONVEYOR != 0 && !self.return_mode && !self.reuse {
-                return Plan::Pick;
+                return Ok(Plan::Pick);
             }
         }
         self.follow(r, i, false, board)
@@ -235,7 +272,8 @@ impl Amas {
         self.claimed.push(c as u32);
     }
 
-    pub(super) fn plan_all(&mut self) {
+    /// Every robot plans, in a fresh random order; a script that stops the run stops planning.
+    pub(super) fn plan_all(&mut self) -> Result<(), Stop> {
         self.rng.shuffle(&mut self.order);
         for k in 0..self.order.len() {
             let r = self.order[k] as usize;
@@ -250,7 +288,7 @@ impl Amas {
                 self.robots[r].busy -= 1;
                 Plan::Busy
             } else {
-                self.decide(r)
+                self.decide(r)?
             };
             let plan = match plan {
                 Plan::Move(t) | Plan::Place(t) | Plan::Remove(t) => {
@@ -266,5 +304,6 @@ impl Amas {
             self.plans[r] = plan;
             self.planned[r] = true;
         }
+        Ok(())
     }
 }
