@@ -30,9 +30,11 @@ const median = (xs) => {
 export function scenarioJson(spec) {
   const json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
   const set = { ...spec.set };
-  if (spec.rules === 'paper') {
+  if (spec.rules) {
+    // "paper": every slot of the model; a list: the slots it names.
     const model = JSON.parse(json).model;
-    for (const { slot } of wasmRules.rule_slots().filter((s) => s.model === model)) set[`rules.${slot.name}`] = slot.paper;
+    const named = (name) => spec.rules === 'paper' || (Array.isArray(spec.rules) && spec.rules.includes(name));
+    for (const { slot } of wasmRules.rule_slots().filter((s) => s.model === model && named(s.slot.name))) set[`rules.${slot.name}`] = slot.paper;
   }
   if (Object.keys(set).length === 0) return json;
   const draft = new wasm.Draft(Number.MAX_SAFE_INTEGER);
