@@ -110,7 +110,16 @@ impl Amas {
     /// What the module at `i` shows a robot that is `loaded` and sees `reading` (footnote 3):
     /// the paper's rule, [`direction::shown`], or a scenario's script (the slot `direction`),
     /// whose answer must name neighbouring modules.
+    #[inline]
     fn show(&self, reading: &Reading, loaded: bool, giving_way: bool) -> Result<Shown, Stop> {
+        if !self.direction_rule.scripted() {
+            // The paper's rule straight from the reading, without the script's copy of it.
+            let threshold = match giving_way {
+                true => f32::NEG_INFINITY,
+                false => self.p.threshold,
+            };
+            return Ok(direction::shown(reading, threshold, self.p.direction));
+        }
         let sight = Sight::of(
             reading,
             self.p.threshold,
