@@ -1,5 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { type Plugin, defineConfig } from 'vite';
+import { compress } from './vite.compress.ts';
 import { pwa } from './vite.pwa.ts';
 
 // One Content-Security-Policy: the page's meta tag. Wherever Kumiki serves the page it also sends
@@ -31,7 +32,7 @@ export default defineConfig({
   root: 'static',
   base: './',
   publicDir: false,
-  plugins: [headersFile(), pwa()],
+  plugins: [headersFile(), pwa(), compress()],
   build: {
     outDir: '../dist',
     emptyOutDir: true,
