@@ -98,7 +98,9 @@ const page = await benchPage(
   specs.filter((s) => s.page),
   (s) => wasm.encode_link(scenarioJson(s)),
 );
-console.log(`page load to interactive from the test harness's uncompressed server, no throttling (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
+console.log(
+  `page load to interactive from the test harness's uncompressed server, no throttling (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`,
+);
 const idleMb = page.idle.residentMb.renderer + page.idle.residentMb.gpu;
 console.log(
   `the default page, drawn: renderer process ${fmt(page.idle.residentMb.renderer)} MB, GPU process ${fmt(page.idle.residentMb.gpu)} MB; ` +

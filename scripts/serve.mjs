@@ -7,7 +7,7 @@
 // Usage: node scripts/serve.mjs [--port 8080] [--host localhost]
 import { createServer } from 'node:http';
 import { readFileSync } from 'node:fs';
-import { open, stat } from 'node:fs/promises';
+import { open } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -49,12 +49,12 @@ function accepted(header = '') {
   return ok;
 }
 
-/** An open file and its size, or null when there is none. */
+/** An open file, its size and its validator (ETag), or null when there is none. */
 async function openFile(path) {
   try {
     const handle = await open(path, 'r');
-    const { size } = await handle.stat();
-    if ((await stat(path)).isFile()) return { handle, size };
+    const info = await handle.stat();
+    if (info.isFile()) return { handle, size: info.size, etag: `"${info.size.toString(36)}-${Math.round(info.mtimeMs).toString(36)}"` };
     await handle.close();
   } catch {
     // Missing, or a directory: the caller tries the next candidate.
@@ -94,12 +94,22 @@ export function handler(root = DIST) {
       return;
     }
     const hashed = rel.startsWith('assets/') || rel.startsWith('icons/');
-    res.writeHead(200, {
+    const common = {
       ...headers,
-      'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
-      'content-length': found.size,
       'cache-control': hashed ? 'public, max-age=31536000, immutable' : 'no-cache',
       vary: 'Accept-Encoding',
+      etag: found.etag,
+    };
+    // A revalidation (the page, the service worker) of an unchanged file: no body.
+    if (req.headers['if-none-match'] === found.etag) {
+      await found.handle.close();
+      res.writeHead(304, common).end();
+      return;
+    }
+    res.writeHead(200, {
+      ...common,
+      'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+      'content-length': found.size,
       ...(encoding ? { 'content-encoding': encoding } : {}),
     });
     if (req.method === 'HEAD') {
