@@ -60,6 +60,9 @@ export default defineConfig({
     // Never inline assets as data: URLs; the Content-Security-Policy only allows 'self'.
     assetsInlineLimit: 0,
     chunkSizeWarningLimit: 1024,
+    // The precompression after the build (vite.compress.ts) takes seconds by design: no warning
+    // about slow plugin callbacks on every build.
+    rolldownOptions: { checks: { bundlerTimings: false } },
   },
   worker: { format: 'es' },
   server: { port: 8080, strictPort: true, fs: { allow: ['..'] }, headers: HEADERS },
