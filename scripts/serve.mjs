@@ -6,8 +6,8 @@
 // are revalidated on every visit.
 // Usage: node scripts/serve.mjs [--port 8080] [--host localhost]
 import { createServer } from 'node:http';
-import { readFileSync } from 'node:fs';
-import { open } from 'node:fs/promises';
+import { createReadStream, readFileSync } from 'node:fs';
+import { stat } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -49,13 +49,11 @@ function accepted(header = '') {
   return ok;
 }
 
-/** An open file, its size and its validator (ETag), or null when there is none. */
-async function openFile(path) {
+/** A file's path, size and validator (ETag), or null when there is no such file. */
+async function fileAt(path) {
   try {
-    const handle = await open(path, 'r');
-    const info = await handle.stat();
-    if (info.isFile()) return { handle, size: info.size, etag: `"${info.size.toString(36)}-${Math.round(info.mtimeMs).toString(36)}"` };
-    await handle.close();
+    const info = await stat(path);
+    if (info.isFile()) return { path, size: info.size, etag: `"${info.size.toString(36)}-${Math.round(info.mtimeMs).toString(36)}"` };
   } catch {
     // Missing, or a directory: the caller tries the next candidate.
   }
@@ -82,13 +80,13 @@ export function handler(root = DIST) {
     let encoding = null;
     for (const e of ENCODINGS) {
       if (!ok.has(e.name)) continue;
-      found = await openFile(file + e.ext);
+      found = await fileAt(file + e.ext);
       if (found) {
         encoding = e.name;
         break;
       }
     }
-    found ??= await openFile(file);
+    found ??= await fileAt(file);
     if (!found) {
       res.writeHead(404, { 'content-type': 'text/plain; charset=utf-8' }).end('not found');
       return;
@@ -102,7 +100,6 @@ export function handler(root = DIST) {
     };
     // A revalidation (the page, the service worker) of an unchanged file: no body.
     if (req.headers['if-none-match'] === found.etag) {
-      await found.handle.close();
       res.writeHead(304, common).end();
       return;
     }
@@ -113,12 +110,13 @@ export function handler(root = DIST) {
       ...(encoding ? { 'content-encoding': encoding } : {}),
     });
     if (req.method === 'HEAD') {
-      await found.handle.close();
       res.end();
       return;
     }
-    const stream = found.handle.createReadStream();
+    const stream = createReadStream(found.path);
     stream.on('error', () => res.destroy());
+    // A browser that goes away mid-file (a closed tab) leaves the file to close here.
+    res.on('close', () => stream.destroy());
     stream.pipe(res);
   };
 }
