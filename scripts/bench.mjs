@@ -1,11 +1,12 @@
 // Runs the benchmarks and prints one table: native and wasm rates for every workload and their
-// ratio, the page's load-to-interactive time and in-page rates, and the gzipped wasm size.
+// ratio, the first load (cold, on loopback and the classroom profile: scripts/bench-load.mjs) against
+// its budget, the page's in-page rates, and the gzipped wasm sizes.
 // Usage: node scripts/bench.mjs [tests/bench/a.json ...]   (default: every workload)
 import { execFileSync } from 'node:child_process';
 import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { measure, scenarioJson } from './bench-wasm.mjs';
-import { WASM_BUDGET_KB, budgetVerdict, overBudget } from './budget.mjs';
+import { benchLoad, printLoad } from './bench-load.mjs';
 import * as lab from '../web/pkg/kumiki_lab.js';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 
@@ -49,7 +50,7 @@ for (const { spec, native, wasm: w } of rows) {
 
 const wasmBytes = readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`);
 const gzKb = gzipSync(wasmBytes, { level: 9 }).length / 1024;
-console.log(`\npage's wasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (budget ${WASM_BUDGET_KB} KB: ${budgetVerdict(gzKb)})`);
+console.log(`\npage's wasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.toFixed(1)} KB gzipped (in the first load's budget, below)`);
 // The rule slots: each slot's paper rule as a script against the built-in, and the bytes the rule
 // scripts' engine adds to the page's simulation module (its second build, loaded only for a
 // scenario with rules).
@@ -89,11 +90,17 @@ console.log(
     `${grading.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core; ` +
     `a class of ${grading.classCount.toLocaleString('en-US')} from a form's CSV export: ${grading.classSeconds.toFixed(2)} s with kumiki check (median of 3)`,
 );
+// The first load, cold, on loopback and on the classroom profile, from `npm start`'s server:
+// time to interactive and the bytes before it, against the one budget (scripts/budget.mjs).
+const load = await benchLoad();
+const loadWithin = printLoad(load);
 const page = await benchPage(
   specs.filter((s) => s.page),
   (s) => wasm.encode_link(scenarioJson(s)),
 );
-console.log(`page load to interactive (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`);
+console.log(
+  `page load to interactive from the test harness's uncompressed server, no throttling (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`,
+);
 const idleMb = page.idle.residentMb.renderer + page.idle.residentMb.gpu;
 console.log(
   `the default page, drawn: renderer process ${fmt(page.idle.residentMb.renderer)} MB, GPU process ${fmt(page.idle.residentMb.gpu)} MB; ` +
@@ -139,11 +146,12 @@ const out = {
   rules_wasm_gzip_kb: rulesGzKb,
   lab_wasm_gzip_kb: labGzKb,
   grading,
+  load,
   page,
 };
 writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
 console.log('\nfull results: target/bench-results.json');
-if (overBudget(gzKb)) {
-  console.error(`\nbench: the page's wasm is ${gzKb.toFixed(1)} KB gzipped, over its budget of ${WASM_BUDGET_KB} KB (scripts/budget.mjs)`);
+if (!loadWithin) {
+  console.error(`\nbench: the first load sends more than its budget before it is interactive (scripts/budget.mjs)`);
   process.exitCode = 1;
 }

@@ -3,6 +3,7 @@
 // web/features/index.ts on it, and opens the first scenario (web/page/start.ts).
 import { FEATURES } from './features/index';
 import { embedEditRequested, embedRequested } from './page/address';
+import { EarlyInput } from './page/early';
 import type { PageContext, PageEvents } from './page/context';
 import { Events } from './page/events';
 import { LargeOpening } from './page/opening';
@@ -16,6 +17,9 @@ import { SimClient } from './sim/client';
 import { Banner } from './widgets/banner';
 import { byId } from './widgets/dom';
 import * as core from './wasm';
+
+// First of all: a Play pressed from now on, while the wasm module arrives, is kept (web/page/early.ts).
+const early = new EarlyInput();
 
 /** In a course page's iframe (?embed): the view, the run controls and the exercise panel only. */
 const embedded = embedRequested();
@@ -62,6 +66,7 @@ const page: PageContext = {
   tabs: new Tabs(prefs, persistPrefs, events),
   events,
   embedded,
+  early,
   async useRenderer(choice) {
     try {
       await view.useRenderer(choice);

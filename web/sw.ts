@@ -53,8 +53,8 @@ async function pageFirstFromNetwork(request: Request): Promise<Response> {
 
 /**
  * Anything else of the build: the kept copy, else the network. `ignoreVary`: a server that
- * answers `Vary: Origin` (vite preview, which `npm start` runs) would otherwise make every kept
- * file miss, because the page's module scripts and styles load with `crossorigin` (an Origin
+ * answers `Vary: Origin` (vite preview, which `npm start` ran before it served dist/ itself) would
+ * otherwise make every kept file miss, because the page's module scripts and styles load with `crossorigin` (an Origin
  * header) while the install stored them without one; the outage then left an unstyled page.
  */
 async function keptFirst(request: Request): Promise<Response> {

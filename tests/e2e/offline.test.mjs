@@ -1,6 +1,7 @@
 // Offline use: the built site is an installable app (a manifest with icons) whose service worker
-// keeps the page, its code and its wasm. After one visit the page opens and runs with the network
-// off; a new deployment installs beside the running version, is offered ("A new version of Kumiki
+// keeps the page, its code and its wasm. It registers once the first visit is interactive and idle,
+// so what it keeps (the lab and rules modules, the rule editor) never competes with the first frame.
+// After one visit the page opens and runs with the network off; a new deployment installs beside the running version, is offered ("A new version of Kumiki
 // is ready"), and takes over when accepted.
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
@@ -10,11 +11,14 @@ import { launch, loadWasm, serve, stepCount, waitForSteps } from './harness.mjs'
 const wasm = loadWasm();
 /** What the test host serves: the build as it is, a newer build, or nothing (the network is down). */
 let host = 'up';
+/** The paths the test host has served, in order. */
+const served = [];
 let server;
 let browser;
 before(async () => {
   server = await serve('/', {
     rewrite: (path, body) => {
+      served.push(path);
       if (host === 'down') return null;
       // A new deployment: the same files under a new service-worker version.
       if (host === 'newer' && path === 'sw.js') return Buffer.from(body.toString().replace(/\\"version\\":\\"([0-9a-f]+)\\"/, '\\"version\\":\\"$1-next\\"'));
@@ -54,6 +58,45 @@ const cached = (page) =>
   });
 
 describe('offline', () => {
+  test('a first visit asks for nothing but what its first frame needs before it is interactive; the worker keeps the rest after', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await context.newPage();
+    let atReady = null;
+    await page.exposeBinding('markReady', () => {
+      atReady ??= served.length;
+    });
+    await page.addInitScript(() => {
+      new MutationObserver((_, observer) => {
+        if (document.body?.dataset.ready !== 'true') return;
+        observer.disconnect();
+        window.markReady();
+      }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-ready'] });
+    });
+    served.length = 0;
+    await page.goto(server.url);
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+    await page.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30000 });
+    assert.ok(atReady !== null);
+    const before = served.slice(0, atReady);
+    const later = /sw\.js|kumiki_lab|kumiki_wasm_rules|editor-|experiment-worker|picture-worker/;
+    assert.deepEqual(
+      before.filter((p) => later.test(p)),
+      [],
+      `asked before interactive: ${before.join(' ')}`,
+    );
+    assert.ok(
+      before.some((p) => /kumiki_wasm_bg-.*\.wasm$/.test(p)),
+      'the page wasm module is part of the first load',
+    );
+    const kept = Object.values(await cached(page)).flat();
+    for (const part of ['kumiki_lab_bg', 'kumiki_wasm_rules_bg', 'editor-'])
+      assert.ok(
+        kept.some((p) => p.includes(part)),
+        `${part} is kept once the page is idle`,
+      );
+    await context.close();
+  });
+
   test('the manifest names the app and its icons, and every icon is served', async () => {
     const manifest = await (await fetch(`${server.url}manifest.webmanifest`)).json();
     assert.equal(manifest.short_name, 'Kumiki');
@@ -129,9 +172,9 @@ describe('offline', () => {
     return failed;
   }
 
-  test('the server `npm start` runs (vite preview) stops: a reload still opens and runs', async () => {
+  test('the server `npm start` runs (scripts/serve.mjs) stops: a reload still opens and runs', async () => {
     const port = 18000 + (process.pid % 1000);
-    const preview = spawn('npx', ['--no-install', 'vite', 'preview', '--port', String(port), '--strictPort', '--host', '127.0.0.1'], {
+    const npmStart = spawn('node', ['scripts/serve.mjs', '--port', String(port), '--host', '127.0.0.1'], {
       stdio: 'ignore',
       detached: true,
     });
@@ -146,10 +189,17 @@ describe('offline', () => {
         break;
       await new Promise((r) => setTimeout(r, 200));
     }
-    // vite preview answers with Vary: Origin, and the page's scripts load with crossorigin.
-    assert.match((await fetch(url)).headers.get('vary') ?? '', /Origin/);
+    // It sends the build's precompressed copies (Vary: Accept-Encoding), the wasm included; the
+    // worker's kept copies are matched whatever the Vary.
+    const page = await (await fetch(url)).text();
+    const wasmPath = /href="\.\/(assets\/kumiki_wasm_bg-[\w-]+\.wasm)"/.exec(page)?.[1];
+    assert.ok(wasmPath, 'index.html preloads the page wasm module');
+    const wasmResponse = await fetch(new URL(wasmPath, url), { headers: { 'accept-encoding': 'br, gzip' } });
+    assert.equal(wasmResponse.headers.get('content-encoding'), 'br');
+    assert.match(wasmResponse.headers.get('vary') ?? '', /Accept-Encoding/);
+    assert.match(wasmResponse.headers.get('content-security-policy') ?? '', /frame-ancestors/);
     await survivesOutage(url, async () => {
-      process.kill(-preview.pid);
+      process.kill(-npmStart.pid);
       for (
         let i = 0;
         i < 50 &&

@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import type { Comparison, Frame, Proposal, SlotDoc, Verdict } from '../../web/contract.gen';
 import type { Feature, PageContext, PageEvents } from '../../web/page/context';
+import { EarlyInput } from '../../web/page/early';
 import { Events } from '../../web/page/events';
 import { Session } from '../../web/page/session';
 import { sessionHost, workerEvents } from '../../web/page/shell';
@@ -273,6 +274,7 @@ export function testPage(features: Feature[], { rules = false }: { rules?: boole
     tabs: new Tabs(prefs, () => {}, events),
     events,
     embedded: false,
+    early: new EarlyInput(),
     useRenderer: async () => {},
   };
   const on = workerEvents(() => page, large);

@@ -8,6 +8,7 @@ import type { RendererChoice } from '../sim/protocol';
 import type { SimClient } from '../sim/client';
 import type { Banner } from '../widgets/banner';
 import type { RunLabels } from '../widgets/chart';
+import type { EarlyInput } from './early';
 import type { Events } from './events';
 import type { Session } from './session';
 import type { Prefs } from './store';
@@ -62,6 +63,8 @@ export interface PageContext {
   events: Events<PageEvents>;
   /** In a course page's iframe (`?embed`): the view, the run controls and the exercise panel. */
   embedded: boolean;
+  /** What the visitor did while the page loaded: a Play pressed, the page used at all. */
+  early: EarlyInput;
   /** Draws the view with this renderer (the worker falls back to Canvas 2D without WebGL2). */
   useRenderer(choice: RendererChoice): Promise<void>;
 }

@@ -44,8 +44,9 @@ export async function start(page: PageContext, features: readonly Feature[]) {
     return;
   }
   // A first visit opens on what Kumiki is and where to start; a shared link has its own introduction.
-  // Shown once, it is seen: a reload does not bring it back ("Start here" does).
-  if (!prefs.welcomed && !location.hash.slice(1)) {
+  // Shown once, it is seen: a reload does not bring it back ("Start here" does). It opens before
+  // the page can be used, or not at all: never over a page already used while it loaded.
+  if (!prefs.welcomed && !location.hash.slice(1) && !page.early.used) {
     page.events.emit('first-visit', null);
     prefs.welcomed = true;
     page.persistPrefs();

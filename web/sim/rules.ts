@@ -36,6 +36,13 @@ export function editsRules(changes: string): boolean {
   }
 }
 
+/** An opening or an edit that puts rule scripts in the scenario: only the rules module runs it. */
+export function needsRules(msg: ToWorker): boolean {
+  if (msg.type === 'open') return carriesRules(msg.text);
+  if (msg.type === 'edit') return editsRules(msg.changes);
+  return false;
+}
+
 /** What the Rules tab asks the worker's rules module. */
 export interface RuleQueries {
   /** Every model's rule slots, with the paper's rule as each slot's script. */

@@ -28,7 +28,7 @@ import {
 } from './pace';
 import type { ClickState, Proposed, ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
-import { carriesRules, editsRules } from './rules';
+import { needsRules } from './rules';
 
 /** The calls the worker makes of its wasm module: the page's module's, which the rules module has too. */
 type Wasm = typeof pageModule;
@@ -98,7 +98,8 @@ function startRun(id: number, make: () => pageModule.Sim, text?: string) {
   inView = text ?? created.scenario_json();
   const comparison = guard('load', () => needDraft().comparison() as Comparison) ?? { kind: 'none' };
   post({ type: 'loaded', id, layout: created.layout(), scenario: inView, comparison });
-  attachLayout();
+  if (run.viewer) attachLayout();
+  else attachAsked();
   started();
 }
 
@@ -216,7 +217,11 @@ function handle(msg: ToWorker) {
       return setVisible(msg.visible);
     case 'view':
       viewAsked = { view: msg, resize: null, marks: null };
-      return attachView(msg);
+      if (run.sim) return attachView(msg);
+      // The first run starts the view (startRun): the renderer starts while the page takes in the run.
+      run.viewer?.free();
+      run.viewer = null;
+      return;
     case 'resize':
       viewAsked.resize = msg;
       run.viewer?.resize(msg.width, msg.height, msg.dpr);
@@ -299,13 +304,6 @@ function take(msg: ToWorker) {
   handleReporting(msg);
 }
 
-/** An opening or an edit that puts rule scripts in the scenario: only the rules module runs it. */
-function needsRules(msg: ToWorker): boolean {
-  if (msg.type === 'open') return carriesRules(msg.text);
-  if (msg.type === 'edit') return editsRules(msg.changes);
-  return false;
-}
-
 /** The rules module, fetched and started the first time it is asked for. */
 function loadRules(): Promise<RulesWasm> {
   rulesWasm ??= import('../pkg/kumiki_wasm_rules.js').then(async (rules) => {
@@ -351,13 +349,17 @@ async function switchToRules() {
   memory.wasm = rulesMemory;
   memory.panicMessage = rules.panic_message;
   if (inView) guard('load', () => needDraft().open(inView ?? '', false));
-  const { view, resize, marks } = viewAsked;
-  if (view) {
-    attachView(view);
-    if (resize) handle(resize);
-    if (marks) handle(marks);
-  }
+  attachAsked();
   drain();
+}
+
+/** Draws on the canvases the page gave last, at the size and with the marks it asked for since. */
+function attachAsked() {
+  const { view, resize, marks } = viewAsked;
+  if (!view) return;
+  attachView(view);
+  if (resize) handle(resize);
+  if (marks) handle(marks);
 }
 
 /** Handles the messages held while the module started. */
@@ -367,10 +369,7 @@ function drain() {
   while (ready && queue.length > 0) take(queue.shift() as ToWorker);
 }
 
-/**
- * Handles a message; if that throws, the page is told why. Messages handled in a batch (those
- * queued before start, those held by a recording) are each handled whatever the one before did.
- */
+/** Handles a message, telling the page why if it throws: each of a batch (queued, held) is handled. */
 function handleReporting(msg: ToWorker) {
   try {
     handle(msg);

@@ -51,8 +51,23 @@ export function setupTransport(page: PageContext) {
   const forget = () => (backTarget = null);
   timeline.addEventListener('input', forget);
 
+  // From now on Play is the transport's; one pressed while the page loaded starts the run with its
+  // first frame, as does one pressed before a run has one.
+  page.early.stop();
+  let playWanted = page.early.play;
+  const startWanted = () => {
+    if (!playWanted) return;
+    playWanted = false;
+    sim.play();
+  };
+
   const togglePlay = () => {
     forget();
+    if (!session.frame) {
+      playWanted = !playWanted;
+      showPlaying(playWanted);
+      return;
+    }
     if (session.playing) sim.pause();
     else sim.play();
   };
@@ -127,7 +142,10 @@ export function setupTransport(page: PageContext) {
     forget();
     showSeed();
   });
-  session.on('frame', showFrame);
+  session.on('frame', (frame) => {
+    showFrame(frame);
+    startWanted();
+  });
   session.on('playing', showPlaying);
 
   // ---- keys -------------------------------------------------------------------------------------
