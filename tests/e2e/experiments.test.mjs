@@ -341,3 +341,74 @@ test('a sweep is kept: it survives a reload, reopens with the same exports, is c
   assert.deepEqual(problems, []);
   await context.close();
 });
+
+test('the design form writes ranges, a Latin-hypercube sample and a stop condition, checked beside each field, and the page runs the CLI’s rows', async () => {
+  const { page, context, problems } = await openPage(s.browser, s.server.url);
+  await page.click('#tab-experiments');
+  const start = { version: 1, name: 'e2e-design', scenarios: ['amas-L'], seeds: 2, plot: { kind: 'summary', group: ['params.robots'], values: ['steps'] } };
+  await edit(page, JSON.stringify(start, null, 2));
+  await page.click('#experiment-design summary');
+  await page.waitForFunction(() => !document.querySelector('#experiment-design-form fieldset').disabled);
+  const json = async () => JSON.parse(await page.inputValue('#experiment-json'));
+  // Typed and left with Tab, as a keyboard user does: each field is written when it changes.
+  const type = async (selector, text) => {
+    await page.fill(selector, text);
+    await page.press(selector, 'Tab');
+  };
+
+  // A grid key as a range.
+  await page.click('#design-add-grid');
+  assert.equal(await page.evaluate(() => document.activeElement.getAttribute('aria-label')), 'Grid key 1: scenario path');
+  await type('#design-grid-rows li:nth-child(1) [data-field="key"]', 'set.max_steps');
+  await page.selectOption('#design-grid-rows li:nth-child(1) [data-field="kind"]', 'range');
+  await type('#design-grid-rows li:nth-child(1) [data-field="start"]', '3000');
+  await type('#design-grid-rows li:nth-child(1) [data-field="step"]', '1000');
+  await type('#design-grid-rows li:nth-child(1) [data-field="end"]', '4000');
+  assert.deepEqual((await json()).grid, { 'set.max_steps': { start: 3000, step: 1000, end: 4000 } });
+
+  // A misspelt key is blamed beside the grid, with the core's suggestion.
+  await type('#design-grid-rows li:nth-child(1) [data-field="key"]', 'robot');
+  await page.waitForFunction(() => document.querySelector('#design-grid-problem').textContent.includes('did you mean'));
+  assert.match(await page.textContent('#design-grid-problem'), /^grid\.robot: .*unknown field 'robot'; did you mean 'robots'\?$/);
+  assert.equal(await page.getAttribute('#design-grid-rows li:nth-child(1) [data-field="key"]', 'aria-invalid'), 'true');
+  await page.click('#design-grid-rows li:nth-child(1) button:has-text("Remove")');
+  assert.equal((await json()).grid, undefined);
+  assert.equal(await page.textContent('#design-grid-problem'), '');
+
+  // A Latin-hypercube sample of the robots.
+  await page.selectOption('#design-method', 'latin');
+  await type('#design-count', '3');
+  await type('#design-seed', '7');
+  await page.click('#design-add-range');
+  await type('#design-range-rows li:nth-child(1) [data-field="key"]', 'robots');
+  await type('#design-range-rows li:nth-child(1) [data-field="min"]', '1');
+  await type('#design-range-rows li:nth-child(1) [data-field="max"]', '4');
+  await page.check('#design-range-rows li:nth-child(1) [data-field="integer"]');
+  assert.deepEqual((await json()).sample, { method: 'latin', count: 3, seed: 7, ranges: { robots: { min: 1, max: 4, integer: true } } });
+
+  // A stop condition, checked by the core: the message stands beside the field.
+  await type('#design-stop', 'metrics.placd >= 40');
+  await page.waitForFunction(() => document.querySelector('#design-stop-problem').textContent !== '');
+  assert.equal(await page.textContent('#design-stop-problem'), "stop: 'metrics.placd' is not a metric of amas; did you mean 'metrics.placed'?");
+  assert.equal(await page.getAttribute('#design-stop', 'aria-invalid'), 'true');
+  await type('#design-stop', 'metrics.placed >= 40 or steps >= 1500');
+  await page.waitForFunction(() => document.querySelector('#design-stop-problem').textContent === '');
+  assert.equal(await page.getAttribute('#design-stop', 'aria-invalid'), null);
+  assert.match(await page.textContent('#experiment-description'), /\(6 runs\)$/);
+  const designed = await json();
+  assert.deepEqual(Object.keys(designed), ['version', 'name', 'scenarios', 'sample', 'seeds', 'stop', 'plot']);
+  assert.deepEqual(await audit(page, 'the design form'), []);
+
+  // The JSON edited by hand comes back into the form.
+  await edit(page, JSON.stringify({ ...designed, grid: { field: ['continuous', 'discrete'] } }, null, 2));
+  await page.waitForFunction(() => document.querySelector('#design-grid-rows [data-field="values"]')?.value === 'continuous, discrete');
+
+  // The page runs what the CLI runs: the same Latin-hypercube points, stopped at the same steps.
+  await edit(page, JSON.stringify(designed, null, 2));
+  const csv = await runToCsv(page);
+  const file = join(mkdtempSync(join(tmpdir(), 'kumiki-e2e-')), 'e2e-design.json');
+  writeFileSync(file, JSON.stringify(designed, null, 2));
+  assert.equal(csv, cliCsv(file, csv));
+  assert.deepEqual(problems, []);
+  await context.close();
+});

@@ -98,6 +98,8 @@ export function setupExperiments(page: PageContext) {
   };
   /** The form writes the design into the experiment: it becomes an edited one, described again. */
   const design = new DesignForm((text) => {
+    // The form's text replaces what was typed in the JSON before: that edit's pending sync would undo it.
+    clearTimeout(typing);
     leaveLink();
     editor.value = text;
     select.value = '';
