@@ -322,6 +322,7 @@ test('a sweep is kept: it survives a reload, reopens with the same exports, is c
   const rows = await page.$$eval('#sweep-compare .compare-grid > figure[data-kind="summary"]', (fs) => fs.map((f) => f.querySelectorAll('tbody tr').length));
   assert.equal(rows[1], 2);
   assert.ok(rows[0] >= 1);
+  assert.equal(await page.getAttribute('#sweep-compare figure[data-kind="lines"]:nth-of-type(2) button:has-text("Save SVG")', 'aria-label'), 'Save SVG of “B · Total steps”');
   assert.deepEqual(await audit(page, 'two sweeps compared'), []);
 
   // Deleted, put back by Undo, deleted again; a reload agrees.

@@ -21,7 +21,15 @@ export function renderComparison(root: HTMLElement, a: Side, b: Side) {
   renderPlots(right, b.text, b.name, b.rows);
   // Where the pair no longer fits side by side it stacks, A above B: each figure's heading says its side.
   const mark = (side: string, figures: Element) => {
-    for (const h of figures.querySelectorAll('figure > h3')) h.textContent = `${side} · ${h.textContent}`;
+    for (const figure of figures.querySelectorAll('figure')) {
+      const h = figure.querySelector('h3');
+      if (!h) continue;
+      const heading = h.textContent ?? '';
+      h.textContent = `${side} · ${heading}`;
+      // Its buttons name the side too: "Save SVG of “B · Total steps”".
+      for (const b of figure.querySelectorAll('button[aria-label]'))
+        b.setAttribute('aria-label', (b.getAttribute('aria-label') ?? '').replace(`“${heading}”`, `“${side} · ${heading}”`));
+    }
     return [...figures.children];
   };
   const lefts = mark('A', left);
