@@ -91,7 +91,21 @@ export function withDesign(experiment: Json, d: ReturnType<typeof designOf>): Js
   return out;
 }
 
-/** The form; `write` is given the experiment's new JSON text after each change made in it. */
+/** The experiment's JSON value, or null when the text does not read as an object. */
+function parsed(text: string): Json | null {
+  try {
+    const value: unknown = JSON.parse(text);
+    return isObject(value) ? value : null;
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * The form; `current` gives the experiment's JSON text as it stands, and `write` its new text after
+ * each change made in the form (the design written into the current text, so nothing typed in the
+ * JSON meanwhile is lost).
+ */
 export class DesignForm {
   private readonly root = byId('experiment-design-form');
   private readonly gridRows = byId('design-grid-rows');
@@ -103,10 +117,12 @@ export class DesignForm {
   private readonly sampling = byId('design-sampling');
   private readonly notice = byId('design-notice');
   private readonly problems = { grid: byId('design-grid-problem'), sample: byId('design-sample-problem'), stop: byId('design-stop-problem') };
-  private experiment: Json | null = null;
   private rows = 0;
 
-  constructor(private readonly write: (text: string) => void) {
+  constructor(
+    private readonly current: () => string,
+    private readonly write: (text: string) => void,
+  ) {
     byId('design-add-grid').addEventListener('click', () => {
       this.gridRow({ key: '', range: false, values: '', start: '', step: '', end: '' }).querySelector('input')?.focus();
     });
@@ -125,18 +141,12 @@ export class DesignForm {
 
   /** Reads the experiment's JSON text into the form; a text that does not read leaves the form disabled. */
   sync(text: string) {
-    let value: unknown;
-    try {
-      value = JSON.parse(text);
-    } catch {
-      value = null;
-    }
-    this.experiment = isObject(value) ? value : null;
+    const experiment = parsed(text);
     const fields = this.root.querySelector('fieldset.design-fields') as HTMLFieldSetElement;
-    fields.disabled = this.experiment === null;
-    this.notice.textContent = this.experiment ? '' : 'The JSON does not read as an experiment yet: the form follows once it does.';
-    if (!this.experiment) return;
-    const d = designOf(this.experiment);
+    fields.disabled = experiment === null;
+    this.notice.textContent = experiment ? '' : 'The JSON does not read as an experiment yet: the form follows once it does.';
+    if (!experiment) return;
+    const d = designOf(experiment);
     this.gridRows.replaceChildren();
     this.rangeRows.replaceChildren();
     for (const g of d.grid) this.gridRow(g);
@@ -166,9 +176,8 @@ export class DesignForm {
   }
 
   private changed() {
-    if (!this.experiment) return;
-    this.experiment = withDesign(this.experiment, this.read());
-    this.write(JSON.stringify(this.experiment, null, 2));
+    const experiment = parsed(this.current());
+    if (experiment) this.write(JSON.stringify(withDesign(experiment, this.read()), null, 2));
   }
 
   private read(): ReturnType<typeof designOf> {

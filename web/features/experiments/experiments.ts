@@ -96,18 +96,21 @@ export function setupExperiments(page: PageContext) {
       design.showProblem(core.message(e));
     }
   };
-  /** The form writes the design into the experiment: it becomes an edited one, described again. */
-  const design = new DesignForm((text) => {
-    // The form's text replaces what was typed in the JSON before: that edit's pending sync would undo it.
-    clearTimeout(typing);
-    leaveLink();
-    editor.value = text;
-    select.value = '';
-    prefs.experimentText = text;
-    savePrefs();
-    describe(text);
-    problem(null);
-  });
+  /** The form writes the design into the experiment in view: it becomes an edited one, described again. */
+  const design = new DesignForm(
+    () => editor.value,
+    (text) => {
+      // The form's text replaces what was typed in the JSON before: that edit's pending sync would undo it.
+      clearTimeout(typing);
+      leaveLink();
+      editor.value = text;
+      select.value = '';
+      prefs.experimentText = text;
+      savePrefs();
+      describe(text);
+      problem(null);
+    },
+  );
   const show = (name: string) => {
     const e = builtIn.find((x) => x.name === name) ?? builtIn[0];
     if (!e) return;
@@ -212,11 +215,13 @@ export function setupExperiments(page: PageContext) {
   editor.addEventListener('input', () => {
     select.value = '';
     leaveLink();
+    // The form follows each keystroke (a few rows, no core call), so a change made in it at once
+    // after typing starts from what was typed; the description, which asks the core, waits.
+    design.sync(editor.value);
     clearTimeout(typing);
     typing = setTimeout(() => {
       prefs.experimentText = editor.value;
       savePrefs();
-      design.sync(editor.value);
       describe(editor.value);
     }, 300);
   });
