@@ -322,7 +322,21 @@ test('a sweep is kept: it survives a reload, reopens with the same exports, is c
   const rows = await page.$$eval('#sweep-compare .compare-grid > figure[data-kind="summary"]', (fs) => fs.map((f) => f.querySelectorAll('tbody tr').length));
   assert.equal(rows[1], 2);
   assert.ok(rows[0] >= 1);
-  assert.equal(await page.getAttribute('#sweep-compare figure[data-kind="lines"]:nth-of-type(2) button:has-text("Save SVG")', 'aria-label'), 'Save SVG of “B · Total steps”');
+  assert.equal(
+    await page.getAttribute('#sweep-compare figure[data-kind="lines"]:nth-of-type(2) button:has-text("Save SVG")', 'aria-label'),
+    'Save SVG of “B · Total steps”',
+  );
+  // First the two summaries in one table: each condition's n, mean and interval, A beside B (a
+  // condition the cancelled sweep did not reach shows a dash on its side).
+  const joined = await page.$$eval('#sweep-compare-figures > .table-scroll tbody tr', (trs) => trs.map((t) => [...t.cells].map((c) => c.textContent)));
+  assert.deepEqual(
+    joined.map((r) => [r[0], r[1], r[5]]),
+    [
+      ['1', 'steps [steps]', '2'],
+      ['3', 'steps [steps]', '2'],
+    ],
+  );
+  assert.ok(joined.every((r) => r.length === 8));
   assert.deepEqual(await audit(page, 'two sweeps compared'), []);
 
   // Deleted, put back by Undo, deleted again; a reload agrees.
