@@ -199,8 +199,9 @@ test('an invalid experiment or plot is refused with a message and nothing runs',
     "This experiment cannot run: plot.statistic: 'mode' is not a choice; expected 'mean' or 'median'",
   );
   // The description says it too, styled as an error, not as a hint.
-  await page.waitForFunction(() => document.querySelector('#experiment-description').classList.contains('error'));
-  assert.match(await page.textContent('#experiment-description'), /cannot run: plot\.statistic/);
+  await page.waitForFunction(() => document.querySelector('#experiment-description').textContent.includes('plot.statistic'));
+  assert.match(await page.textContent('#experiment-description'), /^This experiment cannot run: plot\.statistic/);
+  assert.equal(await page.getAttribute('#experiment-description', 'class'), 'error');
   await context.close();
 });
 
@@ -221,7 +222,15 @@ test('a near miss is named with the core’s suggestion, which one press puts in
   await page.click('#experiment-problem button:has-text("Use \'robots\'")');
   assert.deepEqual(JSON.parse(await page.inputValue('#experiment-json')).grid, { robots: [1, 3] });
   assert.equal(await page.textContent('#experiment-problem'), '');
-  assert.doesNotMatch(await page.textContent('#experiment-description'), /cannot run/);
+  await page.waitForFunction(() => !document.querySelector('#experiment-description').textContent.includes('cannot run'));
+  // A name with no near miss: the page lists the model's metrics, not a file of the repository.
+  await edit(page, JSON.stringify({ ...experiment, stop: 'metrics.xyzzy >= 1' }, null, 2));
+  await page.waitForFunction(() => document.querySelector('#experiment-description').textContent.includes('xyzzy'));
+  const listed = await page.textContent('#experiment-description');
+  assert.match(listed, /^This experiment cannot run: stop: 'metrics\.xyzzy' is not a metric of amas, whose metrics are [a-z_]+(, [a-z_]+)+$/);
+  assert.ok(listed.includes(' built,') && listed.includes(' total_steps,'));
+  assert.doesNotMatch(listed, /docs\/metrics\.md/);
+  assert.equal(await page.getAttribute('#experiment-description', 'class'), 'error');
   assert.deepEqual(problems, []);
   await context.close();
 });

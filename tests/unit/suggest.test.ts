@@ -1,7 +1,7 @@
 // The page's reading of the core's "did you mean" (web/features/experiments/suggest.ts): the name
 // written and the one suggested, put in the experiment as a key or inside a value's text.
 import { describe, expect, it } from 'vitest';
-import { applyNearMiss, nearMiss } from '../../web/features/experiments/suggest';
+import { applyNearMiss, nearMiss, pageWords } from '../../web/features/experiments/suggest';
 
 describe('nearMiss', () => {
   it('reads a misspelt field and a misspelt metric from the core’s messages', () => {
@@ -40,5 +40,23 @@ describe('applyNearMiss', () => {
   it('gives nothing for text that does not read or holds no such name', () => {
     expect(applyNearMiss('{"grid": ', { wrong: 'a', right: 'b', field: true })).toBeNull();
     expect(applyNearMiss('{"grid": {}}', { wrong: 'a', right: 'b', field: true })).toBeNull();
+  });
+});
+
+describe('pageWords', () => {
+  const metricsOf = (model: string) => ({ amas: ['built', 'steps'], fracta: ['steps', 'moves'] })[model] ?? [];
+  it('lists the models’ metrics where the core sends the reader to the docs', () => {
+    expect(pageWords("stop: 'metrics.xyz' is not a metric of amas (each model's metrics are in docs/metrics.md)", metricsOf)).toBe(
+      "stop: 'metrics.xyz' is not a metric of amas, whose metrics are built, steps",
+    );
+    expect(pageWords("plot.y: 'q' is not a metric of amas or fracta (each model's metrics are in docs/metrics.md)", metricsOf)).toBe(
+      "plot.y: 'q' is not a metric of amas or fracta, whose metrics are built, steps, moves",
+    );
+  });
+  it('leaves every other message, and one it cannot list, as it is', () => {
+    const near = "stop: 'metrics.placd' is not a metric of amas; did you mean 'metrics.placed'?";
+    expect(pageWords(near, metricsOf)).toBe(near);
+    const unknown = "'x' is not a metric of nobody (each model's metrics are in docs/metrics.md)";
+    expect(pageWords(unknown, metricsOf)).toBe(unknown);
   });
 });

@@ -17,7 +17,7 @@ import { renderComparison } from './compare';
 import { DesignForm } from './design';
 import { dateText, runsText, SavedSweeps } from './saved';
 import { partial, type SavedSweep, SweepStore } from './store';
-import { applyNearMiss, nearMiss } from './suggest';
+import { applyNearMiss, nearMiss, pageWords } from './suggest';
 
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
@@ -68,8 +68,11 @@ export function setupExperiments(page: PageContext) {
    */
   const problem = (text: string | null) => {
     problemBox.replaceChildren();
-    if (!text) return;
-    problemBox.append(text);
+    if (text) say(problemBox, text);
+  };
+  /** Writes a core message into `box` in the page's words, with a button that applies its "did you mean". */
+  const say = (box: HTMLElement, text: string) => {
+    box.replaceChildren(pageWords(text, (model) => core.metricTable(model).map((m) => m.name)));
     const miss = nearMiss(text);
     const fixed = miss && applyNearMiss(editor.value, miss);
     if (!miss || !fixed) return;
@@ -79,7 +82,7 @@ export function setupExperiments(page: PageContext) {
       showEdited(fixed);
       problem(null);
     });
-    problemBox.append(' ', use);
+    box.append(' ', use);
   };
   /** The description of the experiment as it stands, or why it cannot run, as an error. */
   const describeInfo = (info: ExperimentInfo) => {
@@ -92,7 +95,7 @@ export function setupExperiments(page: PageContext) {
       design.showProblem(null);
     } catch (e) {
       description.className = 'error';
-      description.textContent = `This experiment cannot run: ${core.message(e)}`;
+      say(description, `This experiment cannot run: ${core.message(e)}`);
       design.showProblem(core.message(e));
     }
   };

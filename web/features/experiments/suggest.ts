@@ -42,3 +42,19 @@ export function applyNearMiss(json: string, miss: NearMiss): string | null {
   const fixed = JSON.stringify(fix(value, miss, word), null, 2);
   return fixed === JSON.stringify(value, null, 2) ? null : fixed;
 }
+
+/**
+ * A core message as the page says it: where it sends the reader to docs/metrics.md for a metric
+ * with no near name, the page lists the model's metrics instead (`metricsOf` gives a model's).
+ */
+export function pageWords(message: string, metricsOf: (model: string) => string[]): string {
+  return message.replace(/ is not a metric of ([\w-]+(?: or [\w-]+)*) \(each model's metrics are in docs\/metrics\.md\)/, (whole, models: string) => {
+    let names: string[];
+    try {
+      names = [...new Set(models.split(' or ').flatMap(metricsOf))];
+    } catch {
+      return whole;
+    }
+    return names.length ? ` is not a metric of ${models}, whose metrics are ${names.join(', ')}` : whole;
+  });
+}
