@@ -84,11 +84,12 @@ export function setupExperiments(page: PageContext) {
     });
     box.append(' ', use);
   };
-  /** The description of the experiment as it stands, or why it cannot run, as an error. */
+  /** The description of an experiment that reads, with its runs. */
   const describeInfo = (info: ExperimentInfo) => {
     description.className = 'hint';
     description.textContent = `${info.description} (${info.jobs.toLocaleString('en-US')} runs)`;
   };
+  /** Describes the experiment's text, or says why it cannot run as an error (and beside the form's field it names). */
   const describe = (text: string) => {
     try {
       describeInfo(experimentInfo(text));
@@ -103,7 +104,7 @@ export function setupExperiments(page: PageContext) {
   const design = new DesignForm(
     () => editor.value,
     (text) => {
-      // The form's text replaces what was typed in the JSON before: that edit's pending sync would undo it.
+      // The form's text replaces the JSON typed before: that edit's pending save and description are of the old text.
       clearTimeout(typing);
       leaveLink();
       editor.value = text;
