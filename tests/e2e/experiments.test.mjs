@@ -287,6 +287,15 @@ test('a sweep is kept: it survives a reload, reopens with the same exports, is c
     await page.textContent('#saved-sweeps-usage'),
     /^1 saved sweep\. This page’s storage uses [\d.]+ [kMG]?B of the [\d.]+ [kMGT]?B the browser allows it\.$/,
   );
+  // Whether the browser may clear them, and a press to ask it not to; either answer is said.
+  if (await page.isVisible('#saved-sweeps-persist button')) {
+    assert.equal(
+      await page.textContent('#saved-sweeps-persist'),
+      'The browser may clear the saved sweeps when the disk runs short. Ask the browser to keep them',
+    );
+    await page.click('#saved-sweeps-persist button');
+    await page.waitForFunction(() => /keeps the saved sweeps|did not agree/.test(document.querySelector('#saved-sweeps-persist').textContent));
+  } else assert.equal(await page.textContent('#saved-sweeps-persist'), 'The browser keeps the saved sweeps until you delete them.');
 
   // Reopened: its figures are drawn again, and its exports are the bytes it saved when it ran,
   // which the CLI writes for that experiment at that time.

@@ -21,6 +21,7 @@ export const runsText = (s: SavedSweep) =>
 export class SavedSweeps {
   private readonly list = byId<HTMLUListElement>('saved-sweeps-list');
   private readonly usage = byId('saved-sweeps-usage');
+  private readonly persist = byId('saved-sweeps-persist');
   private readonly problem = byId('saved-sweeps-problem');
   private readonly note = byId('saved-sweeps-note');
   private sweeps: SavedSweep[] = [];
@@ -112,5 +113,33 @@ export class SavedSweeps {
     this.usage.textContent = use
       ? `${count}. This page’s storage uses ${bytesText(use.usage)} of the ${bytesText(use.quota)} the browser allows it.`
       : `${count}. The browser does not say how much storage it allows.`;
+    await this.showPersistence();
+  }
+
+  /**
+   * Whether the browser keeps the page's storage until it is deleted, or may clear it when the disk
+   * runs short (its default); a button asks it to keep it (`navigator.storage.persist`), which some
+   * browsers ask their user about, so only a press asks.
+   */
+  private async showPersistence(refused = false) {
+    const storage = globalThis.navigator?.storage;
+    const kept = await storage?.persisted?.().catch(() => undefined);
+    if (kept === undefined) {
+      this.persist.replaceChildren();
+      return;
+    }
+    if (kept) {
+      this.persist.replaceChildren('The browser keeps the saved sweeps until you delete them.');
+      return;
+    }
+    const ask = el('button', { type: 'button', text: 'Ask the browser to keep them' });
+    ask.addEventListener('click', async () => {
+      const granted = await storage.persist().catch(() => false);
+      await this.showPersistence(!granted);
+    });
+    const why = refused
+      ? 'The browser did not agree to keep them: it may still clear them when the disk runs short, so export the sweeps you need.'
+      : 'The browser may clear the saved sweeps when the disk runs short.';
+    this.persist.replaceChildren(why, ' ', ask);
   }
 }
