@@ -53,6 +53,8 @@ export const unpackLink = (link: string): Unpacked => core.unpack_link(link) as 
 export const freshSeed = (): number => core.fresh_seed();
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
+/** How a scenario (its JSON) differs from the preset it is named after, each change in words (`robots: 10 → 3`); null when no preset has its name. */
+export const presetChanges = (json: string): string[] | null => (core.preset_changes(json) as string[] | undefined) ?? null;
 
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];

@@ -6,7 +6,7 @@ import { readFileSync, readdirSync } from 'node:fs';
 import { describe, test } from 'node:test';
 import { deflateRawSync } from 'node:zlib';
 import { createServer } from 'node:http';
-import { loadWasm, openPage, session, waitForSteps } from './harness.mjs';
+import { audit, loadWasm, openPage, session, waitForSteps } from './harness.mjs';
 
 const wasm = loadWasm();
 const s = session();
@@ -113,6 +113,7 @@ describe('a shared link', () => {
     await page.waitForSelector('#intro[open]');
     assert.equal(await page.textContent('#intro-title'), 'Class 3: exercise');
     assert.equal(await page.textContent('#intro-model'), 'amas');
+    assert.ok(await page.isHidden('#intro-modified'), 'a scenario named after no preset is not marked');
     // biome-ignore lint/performance/useDomNodeTextContent: innerText is the text as laid out, line breaks included.
     assert.equal(await page.$eval('#intro-description', (p) => p.innerText), 'Line one.\nLine two, with <b>markup</b> that stays text.');
     await page.keyboard.press('Escape');
@@ -120,6 +121,23 @@ describe('a shared link', () => {
     await page.click('#step');
     await waitForSteps(page, 1);
     await context.close();
+  });
+
+  test('an edited preset says what differs from the preset, and that the description is the preset’s', async () => {
+    const edited = wasm.encode_link(withKeys({ robots: 3 }));
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${edited}`, { keepIntro: true });
+    await page.waitForSelector('#intro[open]');
+    assert.equal(await page.textContent('#intro-modified'), 'Modified from the preset “amas-L”: robots: 5 → 3. The description below is the preset’s.');
+    assert.ok(await page.isVisible('#intro-modified'));
+    assert.deepEqual(await audit(page, 'an edited preset introduced'), []);
+    assert.deepEqual(problems, []);
+    await context.close();
+    // The preset as it is: no mark.
+    const same = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(amas()))}`, { keepIntro: true });
+    await same.page.waitForSelector('#intro[open]');
+    assert.equal(await same.page.textContent('#intro-title'), 'amas-L');
+    assert.ok(await same.page.isHidden('#intro-modified'));
+    await same.context.close();
   });
 
   test('a preset opened from the gallery is not introduced', async () => {

@@ -1,8 +1,10 @@
 // The Experiments panel: choose or edit an experiment, keep it across reloads, share it as a
 // link (`#x1.…`) or a file, run it on a pool of workers with a progress bar, draw its figures
 // (the core's SVG, saved as SVG or PNG), and export the rows with their provenance, the same
-// bytes `kumiki sweep` writes. Its content comes from the lab module (web/lab/), loaded when the
-// tab is first shown, an experiment link is opened or the report opens an experiment.
+// bytes `kumiki sweep` writes. Each sweep that ends (or is cancelled) is kept in IndexedDB and
+// listed under "Saved sweeps" (./saved.ts), to reopen, compare or delete. Its content comes from
+// the lab module (web/lab/), loaded when the tab is first shown, an experiment link is opened or the
+// report opens an experiment.
 import type { ExperimentInfo } from '../../contract.gen';
 import { experimentExport, experimentInfo, experimentJson, experiments, loadLab, packExperiment, unpackExperiment } from '../../lab';
 import type { PageContext } from '../../page/context';
@@ -11,6 +13,11 @@ import * as core from '../../wasm';
 import panelHtml from './panel.html?raw';
 import { renderPlots } from './plots';
 import { ExperimentPool } from '../../lab/pool';
+import { renderComparison } from './compare';
+import { DesignForm } from './design';
+import { dateText, runsText, SavedSweeps } from './saved';
+import { partial, type SavedSweep, SweepStore } from './store';
+import { applyNearMiss, nearMiss, pageWords } from './suggest';
 
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
@@ -36,6 +43,10 @@ export function setupExperiments(page: PageContext) {
   const linkButton = byId<HTMLButtonElement>('experiment-link');
   const saveButton = byId<HTMLButtonElement>('experiment-save');
   const openInput = byId<HTMLInputElement>('experiment-open');
+  const problemBox = byId('experiment-problem');
+  const shown = byId('experiment-shown');
+  const compareBox = byId('sweep-compare');
+  const compareFigures = byId('sweep-compare-figures');
 
   let builtIn: ExperimentInfo[] = [];
   const cores = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
@@ -43,22 +54,76 @@ export function setupExperiments(page: PageContext) {
 
   let pool: ExperimentPool | null = null;
   let texts: string[] = [];
-  let ran: { info: ExperimentInfo; text: string; time: string } | null = null;
+  /** The sweep in view: what ran, its exports once it has ended, and its saved record once kept. */
+  let ran: { info: ExperimentInfo; text: string; time: string; exports?: SavedSweep['exports']; saved?: SavedSweep } | null = null;
+  const saved = new SavedSweeps(new SweepStore(), {
+    open: (s) => reopen(s),
+    compare: (s) => compare(s),
+    canCompare: () => !pool && ran?.exports !== undefined,
+  });
 
+  /**
+   * Says what is wrong with the experiment, styled as an error; where the core suggests a name for
+   * a near miss, a button puts it in the experiment. `null` clears it.
+   */
+  const problem = (text: string | null) => {
+    problemBox.replaceChildren();
+    if (text) say(problemBox, text);
+  };
+  /** Writes a core message into `box` in the page's words, with a button that applies its "did you mean". */
+  const say = (box: HTMLElement, text: string) => {
+    box.replaceChildren(pageWords(text, (model) => core.metricTable(model).map((m) => m.name)));
+    const miss = nearMiss(text);
+    const fixed = miss && applyNearMiss(editor.value, miss);
+    if (!miss || !fixed) return;
+    const use = el('button', { type: 'button', text: `Use '${miss.right}'`, 'aria-label': `Use '${miss.right}' in place of '${miss.wrong}'` });
+    use.addEventListener('click', () => {
+      leaveLink();
+      showEdited(fixed);
+      problem(null);
+    });
+    box.append(' ', use);
+  };
+  /** The description of an experiment that reads, with its runs. */
+  const describeInfo = (info: ExperimentInfo) => {
+    description.className = 'hint';
+    description.textContent = `${info.description} (${info.jobs.toLocaleString('en-US')} runs)`;
+  };
+  /** Describes the experiment's text, or says why it cannot run as an error (and beside the form's field it names). */
   const describe = (text: string) => {
     try {
-      const info = experimentInfo(text);
-      description.textContent = `${info.description} (${info.jobs.toLocaleString('en-US')} runs)`;
+      describeInfo(experimentInfo(text));
+      design.showProblem(null);
     } catch (e) {
-      description.textContent = `This experiment cannot run: ${core.message(e)}`;
+      description.className = 'error';
+      say(description, `This experiment cannot run: ${core.message(e)}`);
+      design.showProblem(core.message(e));
     }
   };
+  /** The form writes the design into the experiment in view: it becomes an edited one, described again. */
+  const design = new DesignForm(
+    () => editor.value,
+    (text) => {
+      // The form's text replaces the JSON typed before: that edit's pending save and description are of the old text.
+      clearTimeout(typing);
+      leaveLink();
+      editor.value = text;
+      select.value = '';
+      prefs.experimentText = text;
+      savePrefs();
+      describe(text);
+      problem(null);
+    },
+  );
   const show = (name: string) => {
     const e = builtIn.find((x) => x.name === name) ?? builtIn[0];
     if (!e) return;
     select.value = e.name;
     editor.value = experimentJson(e.name);
-    description.textContent = `${e.description} (${e.jobs.toLocaleString('en-US')} runs)`;
+    describeInfo(e);
+    design.sync(editor.value);
+    design.showProblem(null);
+    problem(null);
   };
   /** Shows an experiment's text as an edited one, kept across reloads. */
   const showEdited = (text: string) => {
@@ -66,7 +131,9 @@ export function setupExperiments(page: PageContext) {
     select.value = '';
     prefs.experimentText = text;
     savePrefs();
+    design.sync(text);
     describe(text);
+    problem(null);
   };
   const fromLink = (hash: string): boolean => {
     if (!hash.startsWith('#x1.')) return false;
@@ -99,11 +166,13 @@ export function setupExperiments(page: PageContext) {
         else if (!opened) show(prefs.experiment);
         runButton.disabled = select.disabled = linkButton.disabled = false;
         editor.readOnly = false;
+        void saved.refresh();
         return true;
       },
       (e: unknown) => {
         loaded = null;
-        status.textContent = `The experiments could not be loaded: ${core.message(e)}`;
+        status.textContent = '';
+        problem(`The experiments could not be loaded: ${core.message(e)}`);
         return false;
       },
     );
@@ -150,10 +219,14 @@ export function setupExperiments(page: PageContext) {
   editor.addEventListener('input', () => {
     select.value = '';
     leaveLink();
+    // The form follows each keystroke (a few rows, no core call), so a change made in it at once
+    // after typing starts from what was typed; the description, which asks the core, waits.
+    design.sync(editor.value);
     clearTimeout(typing);
     typing = setTimeout(() => {
       prefs.experimentText = editor.value;
       savePrefs();
+      describe(editor.value);
     }, 300);
   });
   workersInput.addEventListener('change', () => {
@@ -167,7 +240,7 @@ export function setupExperiments(page: PageContext) {
     try {
       payload = packExperiment(editor.value);
     } catch (e) {
-      status.textContent = `This experiment cannot be shared: ${core.message(e)}`;
+      problem(`This experiment cannot be shared: ${core.message(e)}`);
       return;
     }
     const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
@@ -210,6 +283,7 @@ export function setupExperiments(page: PageContext) {
     runButton.disabled = on;
     cancel.disabled = !on;
     select.disabled = on;
+    saved.draw();
   };
   const finished = () => texts.filter(Boolean);
   const draw = () => {
@@ -217,7 +291,7 @@ export function setupExperiments(page: PageContext) {
     try {
       renderPlots(plots, ran.text, ran.info.name, finished());
     } catch (e) {
-      status.textContent = `The plots could not be drawn: ${core.message(e)}`;
+      problem(`The plots could not be drawn: ${core.message(e)}`);
     }
   };
   const exportable = (on: boolean) => {
@@ -231,9 +305,12 @@ export function setupExperiments(page: PageContext) {
     try {
       info = experimentInfo(text);
     } catch (e) {
-      status.textContent = `This experiment cannot run: ${core.message(e)}`;
+      status.textContent = '';
+      problem(`This experiment cannot run: ${core.message(e)}`);
       return;
     }
+    problem(null);
+    shown.textContent = '';
     ran = { info, text, time: timestamp() };
     texts = new Array<string>(info.jobs);
     let done = 0;
@@ -260,7 +337,8 @@ export function setupExperiments(page: PageContext) {
       error(message) {
         running(false);
         pool = null;
-        status.textContent = `Stopped: ${message}`;
+        status.textContent = '';
+        problem(`The experiment stopped: ${message}`);
         report(`The experiment stopped: ${message}`);
       },
       done() {
@@ -269,7 +347,7 @@ export function setupExperiments(page: PageContext) {
         const elapsed = (performance.now() - started) / 1000;
         status.textContent = `Done: ${info.jobs.toLocaleString('en-US')} runs in ${formatNumber(elapsed)} s.`;
         draw();
-        exportable(true);
+        void keep();
       },
     });
     pool.start(Number(workersInput.value) || cores);
@@ -283,18 +361,92 @@ export function setupExperiments(page: PageContext) {
     status.textContent = `Cancelled after ${partial.length} runs.`;
     if (ran && partial.length) {
       draw();
-      exportable(true);
+      void keep();
     }
   });
 
-  const save = (format: 'csv' | 'json' | 'traces') => {
+  /**
+   * The sweep in view has ended: its exports are made now, once (the bytes `kumiki sweep` writes
+   * for it), and it is kept with them, so that reopened it saves the same bytes whatever version
+   * of the page reopens it.
+   */
+  const keep = async () => {
     if (!ran) return;
+    const r = ran;
+    const rows = finished();
+    const made = (format: 'csv' | 'json' | 'traces') => experimentExport(r.text, `[${rows.join(',')}]`, format, r.time);
+    let exports: SavedSweep['exports'];
+    try {
+      exports = { csv: made('csv'), json: made('json'), ...(r.info.traced ? { traces: made('traces') } : {}) };
+    } catch (e) {
+      problem(`The rows could not be exported: ${core.message(e)}`);
+      return;
+    }
+    r.exports = exports;
+    exportable(true);
+    const build = exports.csv.match(/^# (.+)$/m)?.[1] ?? '';
+    const sweep: SavedSweep = { name: r.info.name, title: r.info.title ?? '', text: r.text, rows, jobs: r.info.jobs, time: r.time, build, exports };
+    const id = await saved.keep(sweep);
+    if (id !== null) r.saved = { ...sweep, id };
+    saved.draw();
+  };
+
+  const save = (format: 'csv' | 'json' | 'traces') => {
+    const text = ran?.exports?.[format];
+    if (!ran || text === undefined) return;
     const ext = format === 'json' ? 'jsonl' : 'csv';
     const name = format === 'traces' ? `${ran.info.name}-traces` : ran.info.name;
-    const text = experimentExport(ran.text, `[${finished().join(',')}]`, format, ran.time);
     download(`${name}.${ext}`, text, format === 'json' ? 'application/x-ndjson' : 'text/csv');
   };
   csv.addEventListener('click', () => save('csv'));
   json.addEventListener('click', () => save('json'));
   traces.addEventListener('click', () => save('traces'));
+
+  /** A saved sweep's words: its name, when it ran, by which build, and its runs. */
+  const sweepLabel = (s: SavedSweep) => `“${s.name}” of ${dateText(s.time)}, ${runsText(s)}${partial(s) ? ' (partial)' : ''}`;
+
+  /** Reopens a saved sweep: its experiment in the editor, its figures drawn again from its rows, and its exports as saved. */
+  const reopen = (s: SavedSweep) => {
+    if (pool) return;
+    let info: ExperimentInfo;
+    try {
+      info = experimentInfo(s.text);
+    } catch (e) {
+      problem(`The saved sweep “${s.name}” cannot be read by this version of the page: ${core.message(e)}`);
+      return;
+    }
+    leaveLink();
+    showEdited(s.text);
+    ran = { info, text: s.text, time: s.time, exports: s.exports, saved: s };
+    texts = [...s.rows];
+    setProgress(s.rows.length, s.jobs);
+    status.textContent = '';
+    shown.textContent = `Showing the saved sweep ${sweepLabel(s)}, made by ${s.build}.`;
+    draw();
+    exportable(true);
+    saved.draw();
+    shown.scrollIntoView?.({ block: 'nearest' });
+  };
+
+  /** The sweep in view beside a saved one, figure by figure. */
+  const compare = (s: SavedSweep) => {
+    if (!ran?.exports) return;
+    const inView = ran.saved ? `In view: ${sweepLabel(ran.saved)}` : `In view: “${ran.info.name}” of ${dateText(ran.time)}`;
+    try {
+      renderComparison(
+        compareFigures,
+        { label: inView, text: ran.text, name: ran.info.name, rows: finished() },
+        { label: `Saved: ${sweepLabel(s)}`, text: s.text, name: s.name, rows: s.rows },
+      );
+    } catch (e) {
+      problem(`The two sweeps could not be drawn side by side: ${core.message(e)}`);
+      return;
+    }
+    compareBox.hidden = false;
+    compareBox.scrollIntoView?.({ block: 'start' });
+  };
+  byId('sweep-compare-close').addEventListener('click', () => {
+    compareBox.hidden = true;
+    compareFigures.replaceChildren();
+  });
 }

@@ -27,7 +27,8 @@ export async function svgToPng(svg: string): Promise<Blob> {
   }
 }
 
-const words = (path: string) => path.replace(/^(params|metrics)\./, '').replace(/[_.]/g, ' ');
+/** A value's path in words: "metrics.total_steps" as "total steps". */
+export const words = (path: string) => path.replace(/^(params|metrics)\./, '').replace(/[_.]/g, ' ');
 
 /**
  * The names of a summary's condition columns: the figure's axis label names its `group` paths,
@@ -95,8 +96,8 @@ function summaryTable(f: Figure): HTMLElement {
   return box;
 }
 
-/** Draws every figure of `experiment` (its JSON text or built-in name) from the rows' JSON texts. */
-export function renderPlots(root: HTMLElement, experiment: string, name: string, rowTexts: string[]) {
+/** Draws every figure of `experiment` (its JSON text or built-in name) from the rows' JSON texts; returns the figures drawn. */
+export function renderPlots(root: HTMLElement, experiment: string, name: string, rowTexts: string[]): Figure[] {
   clear(root);
   const rowsJson = `[${rowTexts.join(',')}]`;
   const drawn = experimentFigures(experiment, rowsJson);
@@ -124,4 +125,5 @@ export function renderPlots(root: HTMLElement, experiment: string, name: string,
     box.append(save);
     root.append(box);
   });
+  return drawn.map((d) => d.figure);
 }

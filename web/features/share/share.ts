@@ -22,6 +22,28 @@ export function setupShare(page: PageContext) {
     window.history.replaceState(null, '', url);
   }
 
+  /**
+   * An edited preset says so where it introduces itself: what differs from the preset it is named
+   * after, and whether the description it shows is still the preset's. False when it is no edited
+   * preset (or an exercise, whose differences may give the answer away).
+   */
+  function markModified(json: string, doc: { name?: string; description?: string }, exercise: boolean): boolean {
+    if (exercise) return false;
+    let changes: string[] | null;
+    try {
+      changes = core.presetChanges(json);
+    } catch {
+      return false;
+    }
+    if (!changes?.length) return false;
+    const preset = JSON.parse(core.presetJson(doc.name ?? '')) as { description?: string };
+    const shown = changes.slice(0, 6).map((c) => displayText(c, 200));
+    const words = `${shown.join('; ')}${changes.length > shown.length ? `; and ${changes.length - shown.length} more` : ''}`;
+    const same = preset.description === doc.description ? ' The description below is the preset’s.' : '';
+    byId('intro-modified').textContent = `Modified from the preset “${displayText(doc.name ?? '', 100)}”: ${words}.${same}`;
+    return true;
+  }
+
   /** Whoever opens a shared link sees its name and description first. */
   function introduce(json: string) {
     if (embedded) return;
@@ -39,6 +61,7 @@ export function setupShare(page: PageContext) {
         el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`),
       );
     else description.append(el('p', { text: displayText(doc.description ?? '', 4000, true) || 'It comes with no description.' }));
+    byId('intro-modified').hidden = !markModified(json, doc, exercise !== undefined);
     const dialog = byId<HTMLDialogElement>('intro');
     if (!dialog.open) dialog.showModal();
   }
