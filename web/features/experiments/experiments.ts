@@ -6,18 +6,19 @@
 // the lab module (web/lab/), loaded when the tab is first shown, an experiment link is opened or the
 // report opens an experiment.
 import type { ExperimentInfo } from '../../contract.gen';
-import { experimentExport, experimentInfo, experimentJson, experiments, loadLab, packExperiment, unpackExperiment } from '../../lab';
+import { experimentExport, experimentInfo, experimentJson, experiments, loadLab, unpackExperiment } from '../../lab';
 import type { PageContext } from '../../page/context';
-import { byId, download, el, formatNumber } from '../../widgets/dom';
+import { byId, el, formatNumber } from '../../widgets/dom';
 import * as core from '../../wasm';
 import panelHtml from './panel.html?raw';
 import { renderPlots } from './plots';
 import { ExperimentPool } from '../../lab/pool';
 import { renderComparison } from './compare';
 import { DesignForm } from './design';
+import { shareFiles } from './files';
 import { dateText, runsText, SavedSweeps } from './saved';
 import { partial, type SavedSweep, SweepStore } from './store';
-import { applyNearMiss, nearMiss, pageWords } from './suggest';
+import { explain } from './suggest';
 
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
@@ -37,12 +38,8 @@ export function setupExperiments(page: PageContext) {
   const progress = byId('experiment-progress');
   const status = byId('experiment-status');
   const plots = byId('experiment-plots');
-  const csv = byId<HTMLButtonElement>('export-csv');
-  const json = byId<HTMLButtonElement>('export-json');
-  const traces = byId<HTMLButtonElement>('export-traces');
+  const exportButtons = ['export-csv', 'export-json', 'export-traces'].map((id) => byId<HTMLButtonElement>(id));
   const linkButton = byId<HTMLButtonElement>('experiment-link');
-  const saveButton = byId<HTMLButtonElement>('experiment-save');
-  const openInput = byId<HTMLInputElement>('experiment-open');
   const problemBox = byId('experiment-problem');
   const shown = byId('experiment-shown');
   const compareBox = byId('sweep-compare');
@@ -71,19 +68,12 @@ export function setupExperiments(page: PageContext) {
     if (text) say(problemBox, text);
   };
   /** Writes a core message into `box` in the page's words, with a button that applies its "did you mean". */
-  const say = (box: HTMLElement, text: string) => {
-    box.replaceChildren(pageWords(text, (model) => core.metricTable(model).map((m) => m.name)));
-    const miss = nearMiss(text);
-    const fixed = miss && applyNearMiss(editor.value, miss);
-    if (!miss || !fixed) return;
-    const use = el('button', { type: 'button', text: `Use '${miss.right}'`, 'aria-label': `Use '${miss.right}' in place of '${miss.wrong}'` });
-    use.addEventListener('click', () => {
+  const say = (box: HTMLElement, text: string) =>
+    explain(box, text, editor.value, (fixed) => {
       leaveLink();
       showEdited(fixed);
       problem(null);
     });
-    box.append(' ', use);
-  };
   /** The description of an experiment that reads, with its runs. */
   const describeInfo = (info: ExperimentInfo) => {
     description.className = 'hint';
@@ -107,12 +97,7 @@ export function setupExperiments(page: PageContext) {
       // The form's text replaces the JSON typed before: that edit's pending save and description are of the old text.
       clearTimeout(typing);
       leaveLink();
-      editor.value = text;
-      select.value = '';
-      prefs.experimentText = text;
-      savePrefs();
-      describe(text);
-      problem(null);
+      showEdited(text, false);
     },
   );
   const show = (name: string) => {
@@ -125,13 +110,13 @@ export function setupExperiments(page: PageContext) {
     design.showProblem(null);
     problem(null);
   };
-  /** Shows an experiment's text as an edited one, kept across reloads. */
-  const showEdited = (text: string) => {
+  /** Shows an experiment's text as an edited one, kept across reloads; the form shows it too, unless it wrote it (`toForm` false). */
+  const showEdited = (text: string, toForm = true) => {
     editor.value = text;
     select.value = '';
     prefs.experimentText = text;
     savePrefs();
-    design.sync(text);
+    if (toForm) design.sync(text);
     describe(text);
     problem(null);
   };
@@ -235,42 +220,15 @@ export function setupExperiments(page: PageContext) {
     savePrefs();
   });
 
-  linkButton.addEventListener('click', async () => {
-    let payload: string;
-    try {
-      payload = packExperiment(editor.value);
-    } catch (e) {
-      problem(`This experiment cannot be shared: ${core.message(e)}`);
-      return;
-    }
-    const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
-    history.replaceState(null, '', `#${payload}`);
-    linkButton.dataset.link = url;
-    try {
-      await navigator.clipboard.writeText(url);
-      linkButton.textContent = 'Link copied';
-    } catch {
-      linkButton.textContent = 'Link in address bar';
-    }
-    setTimeout(() => (linkButton.textContent = 'Copy experiment link'), 2000);
-  });
-  saveButton.addEventListener('click', () => {
-    let name = 'experiment';
-    try {
-      name = experimentInfo(editor.value).name;
-    } catch {
-      // A draft that does not read yet is saved as it is, under a neutral name.
-    }
-    download(`${name}.json`, editor.value, 'application/json');
-  });
-  openInput.addEventListener('change', async () => {
-    const file = openInput.files?.[0];
-    openInput.value = '';
-    if (!file) return;
-    const text = await file.text();
-    leaveLink();
-    showEdited(text);
-    status.textContent = `Opened ${file.name}.`;
+  shareFiles({
+    editor,
+    status,
+    problem,
+    showEdited: (text) => {
+      leaveLink();
+      showEdited(text);
+    },
+    exports: () => (ran?.exports ? { name: ran.info.name, ...ran.exports } : null),
   });
 
   const setProgress = (done: number, total: number) => {
@@ -295,8 +253,8 @@ export function setupExperiments(page: PageContext) {
     }
   };
   const exportable = (on: boolean) => {
-    csv.disabled = json.disabled = traces.disabled = !on;
-    traces.hidden = !ran?.info.traced;
+    for (const b of exportButtons) b.disabled = !on;
+    exportButtons[2].hidden = !ran?.info.traced;
   };
 
   runButton.addEventListener('click', () => {
@@ -390,17 +348,6 @@ export function setupExperiments(page: PageContext) {
     if (id !== null) r.saved = { ...sweep, id };
     saved.draw();
   };
-
-  const save = (format: 'csv' | 'json' | 'traces') => {
-    const text = ran?.exports?.[format];
-    if (!ran || text === undefined) return;
-    const ext = format === 'json' ? 'jsonl' : 'csv';
-    const name = format === 'traces' ? `${ran.info.name}-traces` : ran.info.name;
-    download(`${name}.${ext}`, text, format === 'json' ? 'application/x-ndjson' : 'text/csv');
-  };
-  csv.addEventListener('click', () => save('csv'));
-  json.addEventListener('click', () => save('json'));
-  traces.addEventListener('click', () => save('traces'));
 
   /** A saved sweep's words: its name, when it ran, by which build, and its runs. */
   const sweepLabel = (s: SavedSweep) => `“${s.name}” of ${dateText(s.time)}, ${runsText(s)}${partial(s) ? ' (partial)' : ''}`;

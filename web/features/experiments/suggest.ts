@@ -1,5 +1,7 @@
 // The core's "did you mean" for a near miss in an experiment (a misspelt grid key, metric or
 // field), read from its message and applied to the experiment's JSON at the press of a button.
+import { el } from '../../widgets/dom';
+import * as core from '../../wasm';
 
 /** A near miss: the name written and the one the core suggests; `field` when it is a key. */
 export interface NearMiss {
@@ -57,4 +59,18 @@ export function pageWords(message: string, metricsOf: (model: string) => string[
     }
     return names.length ? ` is not a metric of ${models}, whose metrics are ${names.join(', ')}` : whole;
   });
+}
+
+/**
+ * Writes a core message into `box` in the page's words; where it suggests a name for a near miss
+ * in `json`, a button hands `use` the text with the name put right.
+ */
+export function explain(box: HTMLElement, text: string, json: string, use: (fixed: string) => void) {
+  box.replaceChildren(pageWords(text, (model) => core.metricTable(model).map((m) => m.name)));
+  const miss = nearMiss(text);
+  const fixed = miss && applyNearMiss(json, miss);
+  if (!miss || !fixed) return;
+  const button = el('button', { type: 'button', text: `Use '${miss.right}'`, 'aria-label': `Use '${miss.right}' in place of '${miss.wrong}'` });
+  button.addEventListener('click', () => use(fixed));
+  box.append(' ', button);
 }
