@@ -160,8 +160,13 @@ function handle(msg: ToWorker) {
       post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
       return;
     case 'clicks': {
+      // The run's answer, at its step (as its apply judges a click: one rewound past no longer
+      // counts); the scenario's before a run has started.
+      const sim = run.sim;
       const d = needDraft();
-      const value: ClickState[] = msg.tools.map((t) => ({ problem: d.click_problem(t.kind, t.label) ?? null, left: d.clicks_left(t.kind) ?? null }));
+      const value: ClickState[] = msg.tools.map((t) =>
+        sim ? (sim.click_state(t.kind, t.label) as ClickState) : { problem: d.click_problem(t.kind, t.label) ?? null, left: d.clicks_left(t.kind) ?? null },
+      );
       post({ type: 'answer', id: msg.id, value });
       return;
     }
