@@ -12,7 +12,7 @@ import { byId, download, markup } from '../../widgets/dom';
 import * as core from '../../wasm';
 import dialogHtml from './dialog.html?raw';
 import { count, emptyTally, type GradeRow, nameText, tallyText } from './handins';
-import { GradePool } from './pool';
+import { GradePool, type ReadClass, readClass } from './pool';
 import { GradeTable } from './table';
 
 /** A file's text when it is UTF-8 text (shown in the box); null for anything else (read as bytes). */
@@ -168,26 +168,24 @@ export function setupGrade(page: PageContext) {
       refuse('Paste the hand-in links first, one a line, or open an export.');
       return;
     }
-    let cls: ClassExercise;
+    let read: ReadClass;
+    start.disabled = true;
+    status.textContent = 'Reading the hand-ins…';
     try {
-      await loadLab();
-      handins = readHandins(opened ? opened.bytes : new TextEncoder().encode(input.value));
+      read = await readClass(opened ? opened.bytes : new TextEncoder().encode(input.value), exerciseInput.value.trim() || null);
     } catch (e) {
       refuse(`Not graded: ${core.message(e)}`);
       return;
     }
-    if (!handins.length) {
+    if (read.type === 'refused') {
+      if (read.exercise) showExercise(read.message);
+      refuse(`Not graded: ${read.message}`);
+      return;
+    }
+    handins = read.handins;
+    const cls = read.cls;
+    if (!handins.length || !cls) {
       refuse('Not graded: there is no hand-in in it (blank lines and # comments are skipped).');
-      return;
-    }
-    try {
-      cls = classExercise(
-        exerciseInput.value.trim() || null,
-        handins.flatMap((h) => (h.link ? [h.link] : [])),
-      );
-    } catch (e) {
-      showExercise(core.message(e));
-      refuse(`Not graded: ${core.message(e)}`);
       return;
     }
     showExercise(cls);
@@ -206,14 +204,19 @@ export function setupGrade(page: PageContext) {
       if (done !== shown) {
         shown = done;
         setProgress(done, total);
-        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
         table.draw();
+        // The tally is a live region: said at most once a second, not once a frame.
+        if (performance.now() - said > 1000) {
+          said = performance.now();
+          status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
+        }
       }
       showRunning();
       drawing = requestAnimationFrame(draw);
     };
-    /** The rows graded when the page last drew. */
+    /** The rows graded when the page last drew, and when it last said the tally. */
     let shown = 0;
+    let said = 0;
     const record = (index: number, row: GradeRow) => {
       if (rows[index]) return;
       rows[index] = row;
@@ -262,7 +265,9 @@ export function setupGrade(page: PageContext) {
     if (pool) finish('Cancelled.');
   });
 
-  exportCsv.addEventListener('click', () => {
+  exportCsv.addEventListener('click', async () => {
+    // The rows were read and graded in workers: the page's own copy of the lab writes the CSV.
+    await loadLab();
     if (graded) download('kumiki-grades.csv', gradeTableCsv(JSON.stringify(rows.filter(Boolean)), graded.teacher), 'text/csv');
   });
 }

@@ -34,6 +34,29 @@ export interface PoolEvents {
   failed(message: string): void;
 }
 
+/** What reading a class's file gives: its hand-ins and exercise, or why not. */
+export type ReadClass = Extract<FromGradeWorker, { type: 'read' } | { type: 'refused' }>;
+
+/** Reads a class's file (its bytes) and finds its exercise in a worker, off the page's thread. */
+export async function readClass(bytes: Uint8Array, exercise: string | null): Promise<ReadClass> {
+  const module = await labModule();
+  const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'kumiki-grade-read' });
+  try {
+    return await new Promise<ReadClass>((resolve, reject) => {
+      worker.onmessage = (e: MessageEvent<FromGradeWorker>) => {
+        const msg = e.data;
+        if (msg.type === 'ready') worker.postMessage({ type: 'read', bytes, exercise } satisfies ToGradeWorker);
+        else if (msg.type === 'read' || msg.type === 'refused') resolve(msg);
+        else if (msg.type === 'failed') reject(new Error(msg.message));
+      };
+      worker.onerror = (e) => reject(new Error(`the reading worker failed: ${e.message}`));
+      worker.postMessage({ type: 'setup', module, teacher: '' } satisfies ToGradeWorker);
+    });
+  } finally {
+    worker.terminate();
+  }
+}
+
 /** Grades `handins` by the class's exercise (`teacher`) on a pool of workers. */
 export class GradePool {
   private members: Member[] = [];

@@ -5,21 +5,27 @@
 // sees a stuck row and can skip it (the page then ends this worker). Graded rows go back in
 // batches, not one message a row. It runs the page's compiled lab module, handed over at setup:
 // nothing is downloaded, and no hand-in leaves the machine.
-import init, { panic_message, RowReplay } from '../../pkg/kumiki_lab.js';
+import type { ClassExercise, Handin2 } from '../../contract.gen';
+import init, { class_exercise, panic_message, RowReplay, read_handins } from '../../pkg/kumiki_lab.js';
 import type { GradeRow } from './handins';
 
 export type ToGradeWorker =
   /** The lab module, and the class's exercise (its `ClassExercise.teacher`). */
   | { type: 'setup'; module: WebAssembly.Module; teacher: string }
   /** Rows of the class's file (`Handin2` records as JSON), each with its place in the table. */
-  | { type: 'grade'; rows: { index: number; handin: string }[] };
+  | { type: 'grade'; rows: { index: number; handin: string }[] }
+  /** A class's file to read, and the teacher's exercise (null: the one most hand-ins carry). */
+  | { type: 'read'; bytes: Uint8Array; exercise: string | null };
 export type FromGradeWorker =
   | { type: 'ready' }
   /** Rows graded since the last batch, in the order they were handed out. */
   | { type: 'graded'; rows: { index: number; row: GradeRow }[] }
   /** The row this worker has been replaying for a while, and its step. */
   | { type: 'running'; index: number; steps: number }
-  | { type: 'failed'; message: string };
+  | { type: 'failed'; message: string }
+  /** The file's hand-ins and the class's exercise; or why not (`exercise`: the exercise is what is wrong). */
+  | { type: 'read'; handins: Handin2[]; cls: ClassExercise | null }
+  | { type: 'refused'; message: string; exercise: boolean };
 
 /** Graded rows are sent at least this often, in milliseconds (and whenever the worker runs out of rows). */
 const BATCH_MS = 50;
@@ -93,6 +99,27 @@ function work() {
   working = false;
 }
 
+/** Reads a class's file and finds its exercise, off the page's thread (a class of 10,000 takes a while). */
+function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
+  const why = (err: unknown) => (err instanceof Error ? err.message : String(err));
+  let handins: Handin2[];
+  try {
+    handins = read_handins(bytes) as Handin2[];
+  } catch (err) {
+    return { type: 'refused', message: why(err), exercise: false };
+  }
+  if (!handins.length) return { type: 'read', handins, cls: null };
+  try {
+    const cls = class_exercise(
+      exercise,
+      handins.flatMap((h) => (h.link ? [h.link] : [])),
+    ) as ClassExercise;
+    return { type: 'read', handins, cls };
+  } catch (err) {
+    return { type: 'refused', message: why(err), exercise: true };
+  }
+}
+
 scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
   const msg = e.data;
   if (msg.type === 'setup') {
@@ -103,6 +130,10 @@ scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
     } catch (err) {
       post({ type: 'failed', message: err instanceof Error ? err.message : String(err) });
     }
+    return;
+  }
+  if (msg.type === 'read') {
+    post(read(msg.bytes, msg.exercise));
     return;
   }
   queue.push(...msg.rows);
