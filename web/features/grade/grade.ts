@@ -15,6 +15,9 @@ import { count, emptyTally, type GradeRow, nameText, tallyText } from './handins
 import { GradePool, type ReadClass, readClass } from './pool';
 import { GradeTable } from './table';
 
+/** The largest text file shown in the box, in bytes; a larger one is graded as it is, unshown. */
+const BOX_BYTES = 1 << 20;
+
 /** A file's text when it is UTF-8 text (shown in the box); null for anything else (read as bytes). */
 function utf8Text(bytes: Uint8Array): string | null {
   try {
@@ -105,11 +108,19 @@ export function setupGrade(page: PageContext) {
 
   const readFile = async (f: File) => {
     const bytes = new Uint8Array(await f.arrayBuffer());
-    const text = utf8Text(bytes);
+    const text = bytes.length <= BOX_BYTES ? utf8Text(bytes) : null;
     if (text !== null) {
       opened = null;
       input.value = text;
       fileNote.textContent = '';
+      return;
+    }
+    if (bytes.length > BOX_BYTES && utf8Text(bytes) !== null) {
+      // A large class's export stays out of the box (laying out megabytes of text there takes the
+      // page's thread for seconds): it is read as it is, in the grading workers.
+      opened = { name: f.name, bytes };
+      input.value = '';
+      fileNote.textContent = `${f.name} (${(bytes.length / 2 ** 20).toFixed(1)} MB of text), read as it is (typing in the box above replaces it).`;
       return;
     }
     // A workbook, a UTF-16 export, or something else: the lab's reader says which, at once.
@@ -205,11 +216,12 @@ export function setupGrade(page: PageContext) {
         shown = done;
         setProgress(done, total);
         table.draw();
-        // The tally is a live region: said at most once a second, not once a frame.
-        if (performance.now() - said > 1000) {
-          said = performance.now();
-          status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
-        }
+      }
+      // The tally is a live region: said at most once a second, not once a frame.
+      if (told !== done && performance.now() - said > 1000) {
+        said = performance.now();
+        told = done;
+        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
       }
       showRunning();
       drawing = requestAnimationFrame(draw);
@@ -217,6 +229,8 @@ export function setupGrade(page: PageContext) {
     /** The rows graded when the page last drew, and when it last said the tally. */
     let shown = 0;
     let said = 0;
+    /** The rows graded when the tally was last said. */
+    let told = 0;
     const record = (index: number, row: GradeRow) => {
       if (rows[index]) return;
       rows[index] = row;

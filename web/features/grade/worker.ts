@@ -81,7 +81,9 @@ function work() {
   while (queue.length) {
     const { index, handin } = queue.shift() as { index: number; handin: string };
     try {
-      graded.push({ index, row: gradeOne(index, handin) });
+      // Graded first, then added: a long row sends the rows before it (and replaces `graded`) as it runs.
+      const row = gradeOne(index, handin);
+      graded.push({ index, row });
     } catch (err) {
       // A panic stops this instance: the row is named, and the worker is not reused.
       const panic = panic_message();
