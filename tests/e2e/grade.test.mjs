@@ -347,4 +347,63 @@ describe('the Grade view', () => {
     assert.deepEqual(problems, []);
     await context.close();
   });
+
+  test("a student's own exercise: the editor says so first, and its hand-in fails in the page and with kumiki check", async () => {
+    const lesson = JSON.parse(wasm.lesson_json(LESSON));
+    const link = (doc) => `${s.server.url}#${wasm.encode_link(JSON.stringify(doc))}`;
+    const { page, context, problems } = await openPage(s.browser, link(lesson));
+    await page.waitForSelector('#exercise:not([hidden])');
+    await page.click('#tab-scenario');
+    await page.click('#make-exercise');
+    await page.waitForSelector('#exercise-editor[open]');
+    // With an exercise open, the editor first says what it will do.
+    assert.equal(await page.isVisible('#ex-fields'), false);
+    assert.match(
+      await page.textContent('#ex-confirm-text'),
+      /^This starts a new exercise from your scenario; it will not be graded as the teacher's exercise\./,
+    );
+    assert.deepEqual(await audit(page, 'the editor, saying what it will do'), []);
+    await page.click('#ex-confirm-go');
+    // The student unlocks the seed, and changes it.
+    await page.uncheck('#ex-locked input[value="seed"]');
+    await page.click('#ex-apply');
+    await page.waitForSelector('#exercise-editor', { state: 'hidden' });
+    await page.waitForFunction(() => !document.querySelector('#seed').readOnly);
+    await page.fill('#seed', '2');
+    await page.$eval('#seed', (i) => i.dispatchEvent(new Event('change')));
+    await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).seed === 2);
+    await page.fill('#exercise-student', 'Mallory');
+    await page.click('#exercise-handin');
+    await page.waitForFunction(() => document.querySelector('#exercise-handin-out').textContent.includes('#k1.'));
+    const own = /(http\S+#k1\.\S+)/.exec(await page.textContent('#exercise-handin-out'))[1];
+    const fair = structuredClone(lesson);
+    fair.robots = 5;
+    const links = [link(fair), own, link(fair)];
+
+    // Graded with no exercise given: the class's is the one most links carry, and Mallory's fails.
+    await page.click('#open-gallery');
+    await page.click('#open-grade');
+    await page.fill('#grade-input', links.join('\n'));
+    await page.fill('#grade-exercise', '');
+    await page.click('#grade-start');
+    await page.waitForFunction(() => /^3 hand-ins:/.test(document.querySelector('#grade-status').textContent), null, { timeout: 60000 });
+    const shown = (await tableRows(page)).map((r) => r.cells);
+    assert.deepEqual(
+      shown.map((r) => r[2]),
+      ['met', 'not met', 'met'],
+    );
+    assert.ok(shown[1][6].startsWith("not replayed: its exercise is not the class's (locked.seed differs)"), shown[1][6]);
+    const cli = kumiki(['check', ...links])
+      .trim()
+      .split('\n')
+      .map((l) => JSON.parse(l));
+    assert.deepEqual(
+      cli.map((r) => r.met),
+      [true, false, true],
+    );
+    assert.equal(cli[1].exercise_edited, true);
+    assert.ok(cli[1].because.startsWith("not replayed: its exercise is not the class's (locked.seed differs)"), cli[1].because);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
 });
