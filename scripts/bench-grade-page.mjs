@@ -26,12 +26,14 @@ export async function gradeInPage(file, count, exercise) {
     await page.fill('#grade-exercise', exercise);
     const workers = await page.evaluate(() => navigator.hardwareConcurrency);
     await page.evaluate(() => {
-      const seen = { longest: 0, longTasks: 0, inputDelay: 0, slowInputs: 0 };
+      const seen = { longest: 0, longTasks: 0, inputDelay: 0, slowInputs: 0, tasks: [], t0: 0 };
+      document.querySelector('#grade-start').addEventListener('click', () => (seen.t0 = performance.now()), { capture: true });
       window.__gradeBench = seen;
       new PerformanceObserver((list) => {
         for (const e of list.getEntries()) {
           seen.longTasks++;
           seen.longest = Math.max(seen.longest, e.duration);
+          seen.tasks.push([Math.round(e.startTime - seen.t0), Math.round(e.duration)]);
         }
       }).observe({ type: 'longtask' });
       new PerformanceObserver((list) => {
@@ -80,6 +82,8 @@ export async function gradeInPage(file, count, exercise) {
       status,
       longestTaskMs: seen.longest,
       longTasks: seen.longTasks,
+      /** Each long task: its start (ms after the click on Grade) and its length (ms). */
+      tasks: seen.tasks,
       inputDelayMs: seen.inputDelay,
       slowInputs: seen.slowInputs,
       keyPresses: roundTrips.length,

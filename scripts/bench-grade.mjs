@@ -106,7 +106,8 @@ export function gradingReport(g) {
       `${p.seconds.toFixed(2)} s in the page on ${p.workers} workers (one run): ${g.pageOverCli.toFixed(2)} times the CLI's ` +
       `(goal: at most ${g.goals.pageOverCli}, ${verdict(g.pageOverCli <= g.goals.pageOverCli)})`,
     `  the page's main thread while grading: longest task ${p.longestTaskMs.toFixed(0)} ms (${p.longTasks} over 50 ms), ` +
-      `longest input delay ${p.inputDelayMs.toFixed(0)} ms (${p.slowInputs} of ${p.keyPresses} key presses over 16 ms; longest round trip of a press ${p.keyRoundTripMs.toFixed(0)} ms) ` +
+      `(at ${p.tasks.map(([t, d]) => `${(t / 1000).toFixed(1)} s: ${d} ms`).join(', ') || 'none'}), ` +
+      `longest input delay ${p.inputDelayMs.toFixed(0)} ms (${p.slowInputs} input events over 16 ms, of ${p.keyPresses} key presses; longest round trip of a press ${p.keyRoundTripMs.toFixed(0)} ms) ` +
       `(goal: under ${g.goals.mainThreadMs} ms, ${verdict(g.mainThreadMs < g.goals.mainThreadMs)})`,
     `  the page's tally: ${p.status}`,
   ].join('\n');

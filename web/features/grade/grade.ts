@@ -5,7 +5,7 @@
 // gets a table graded as `kumiki check` grades: every row replayed within the exercise's budget in
 // wasm workers on this machine, with its points per credit part, the student's answer and record,
 // progress, cancel and the CLI's CSV. Nothing is sent anywhere.
-import type { ClassExercise, Handin2 } from '../../contract.gen';
+import type { ClassExercise } from '../../contract.gen';
 import { classExercise, gradeTableCsv, loadLab, readHandins } from '../../lab';
 import type { PageContext } from '../../page/context';
 import { byId, download, markup } from '../../widgets/dom';
@@ -47,8 +47,8 @@ export function setupGrade(page: PageContext) {
 
   let pool: GradePool | null = null;
   let rows: GradeRow[] = [];
-  /** The class's file as read, for the names of the rows being graded. */
-  let handins: Handin2[] = [];
+  /** The students' names in the class's file, for the row being graded. */
+  let students: string[] = [];
   /** The row shown as being graded (the one Skip skips); null when none. */
   let current: number | null = null;
   /** The class's exercise the rows in the table were graded by. */
@@ -78,7 +78,7 @@ export function setupGrade(page: PageContext) {
       running.textContent = '';
       return;
     }
-    const name = nameText(handins[r.index]?.student ?? '').shown;
+    const name = nameText(students[r.index] ?? '').shown;
     const seconds = (performance.now() - r.since) / 1000;
     const step = r.steps === null ? '' : `, step ${r.steps.toLocaleString('en-US')}`;
     running.textContent = `Grading row ${(r.index + 1).toLocaleString('en-US')}: ${name}${step}${seconds >= 1 ? `, ${seconds.toFixed(0)} s` : ''}`;
@@ -193,7 +193,8 @@ export function setupGrade(page: PageContext) {
       refuse(`Not graded: ${read.message}`);
       return;
     }
-    handins = read.handins;
+    const handins = read.handins;
+    students = read.students;
     const cls = read.cls;
     if (!handins.length || !cls) {
       refuse('Not graded: there is no hand-in in it (blank lines and # comments are skipped).');

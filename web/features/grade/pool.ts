@@ -57,7 +57,7 @@ export async function readClass(bytes: Uint8Array, exercise: string | null): Pro
   }
 }
 
-/** Grades `handins` by the class's exercise (`teacher`) on a pool of workers. */
+/** Grades `handins` (each a `Handin2` as JSON) by the class's exercise (`teacher`) on a pool of workers. */
 export class GradePool {
   private members: Member[] = [];
   /** Rows to hand out next: those of a skipped row's worker first, then the rest in order. */
@@ -67,7 +67,7 @@ export class GradePool {
   private module: WebAssembly.Module | null = null;
 
   constructor(
-    private readonly handins: Handin2[],
+    private readonly handins: string[],
     private readonly teacher: string,
     private readonly on: PoolEvents,
   ) {}
@@ -123,7 +123,7 @@ export class GradePool {
     while (rows.length < CHUNK) {
       const index = this.take();
       if (index === undefined) break;
-      rows.push({ index, handin: JSON.stringify(this.handins[index]) });
+      rows.push({ index, handin: this.handins[index] });
     }
     if (!rows.length) return;
     if (!member.held.length) member.since = performance.now();
@@ -151,7 +151,7 @@ export class GradePool {
     const steps = member.steps === null ? '' : ` at step ${member.steps.toLocaleString('en-US')}`;
     const seconds = ((performance.now() - member.since) / 1000).toFixed(1);
     this.spawn(this.members.length);
-    const handin = this.handins[index];
+    const handin = JSON.parse(this.handins[index]) as Handin2;
     return { handin: handin.row, student: handin.student, link: handin.link, error: `${SKIPPED}the teacher skipped it after ${seconds} s${steps}` };
   }
 

@@ -23,8 +23,12 @@ export type FromGradeWorker =
   /** The row this worker has been replaying for a while, and its step. */
   | { type: 'running'; index: number; steps: number }
   | { type: 'failed'; message: string }
-  /** The file's hand-ins and the class's exercise; or why not (`exercise`: the exercise is what is wrong). */
-  | { type: 'read'; handins: Handin2[]; cls: ClassExercise | null }
+  /**
+   * The file's hand-ins (each `Handin2` as JSON: strings cross to the page far faster than 10,000
+   * objects), their students' names, and the class's exercise; or why not (`exercise`: the
+   * exercise is what is wrong).
+   */
+  | { type: 'read'; handins: string[]; students: string[]; cls: ClassExercise | null }
   | { type: 'refused'; message: string; exercise: boolean };
 
 /** Graded rows are sent at least this often, in milliseconds (and whenever the worker runs out of rows). */
@@ -110,13 +114,15 @@ function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
   } catch (err) {
     return { type: 'refused', message: why(err), exercise: false };
   }
-  if (!handins.length) return { type: 'read', handins, cls: null };
+  const rows = handins.map((h) => JSON.stringify(h));
+  const students = handins.map((h) => h.student);
+  if (!handins.length) return { type: 'read', handins: rows, students, cls: null };
   try {
     const cls = class_exercise(
       exercise,
       handins.flatMap((h) => (h.link ? [h.link] : [])),
     ) as ClassExercise;
-    return { type: 'read', handins, cls };
+    return { type: 'read', handins: rows, students, cls };
   } catch (err) {
     return { type: 'refused', message: why(err), exercise: true };
   }
