@@ -15,6 +15,8 @@ import { count, emptyTally, type GradeRow, nameText, tallyText } from './handins
 import { GradePool, type ReadClass, readClass } from './pool';
 import { GradeTable } from './table';
 
+/** How often the table, the progress bar and the running row are drawn while grading, in milliseconds. */
+const DRAW_MS = 100;
 /** The largest text file shown in the box, in bytes; a larger one is graded as it is, unshown. */
 const BOX_BYTES = 1 << 20;
 
@@ -206,11 +208,14 @@ export function setupGrade(page: PageContext) {
     let done = 0;
     const total = handins.length;
     const tally = emptyTally();
-    // The page shows progress once a frame, not once a batch of rows: the table draws only the
-    // rows in view, and the status and progress bar change once a frame.
+    // The page shows progress ten times a second, not once a batch of rows nor once a frame (each
+    // frame drawn is the compositor's work too, on the cores the workers grade on): the table
+    // draws only the rows in view, and the status and progress bar change then.
     let drawing = 0;
+    const tick = () => {
+      drawing = window.setTimeout(() => requestAnimationFrame(draw), DRAW_MS);
+    };
     const draw = () => {
-      drawing = 0;
       // Finished or cancelled meanwhile: the final status stays.
       if (!pool) return;
       if (done !== shown) {
@@ -229,7 +234,7 @@ export function setupGrade(page: PageContext) {
         ran = performance.now();
         showRunning();
       }
-      drawing = requestAnimationFrame(draw);
+      tick();
     };
     /** The rows graded when the page last drew, and when it last said the tally. */
     let shown = 0;
@@ -247,7 +252,7 @@ export function setupGrade(page: PageContext) {
     const heard = (batch: { index: number; row: GradeRow }[]) => {
       for (const { index, row } of batch) record(index, row);
       if (done === total) {
-        cancelAnimationFrame(drawing);
+        clearTimeout(drawing);
         setProgress(done, total);
         finish(`${total.toLocaleString('en-US')} hand-ins: ${tallyText(tally)}.`);
       }
@@ -269,7 +274,7 @@ export function setupGrade(page: PageContext) {
       failed: (message) => finish(`Grading stopped: ${message}`),
     });
     table.reset(rows, true);
-    drawing = requestAnimationFrame(draw);
+    tick();
     status.textContent = `Grading ${total.toLocaleString('en-US')} hand-ins on this machine…`;
     pool.start(size).catch((e: unknown) => finish(`Grading could not start: ${core.message(e)}`));
   });
