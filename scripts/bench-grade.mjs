@@ -3,8 +3,10 @@
 // module's class_exercise and grade_row, wasm in Node, one thread) and as `kumiki check` does
 // (native, on every core): a hand-in's time in both, and a class of 10,000 graded by `kumiki check`
 // from a form's CSV export, the whole command timed (reading the file, finding the class's
-// exercise, grading, writing the table). The page's own side of a class of 10,000 (its pool of
-// workers and the table) is timed in the page's bench once the Grade view runs on these calls.
+// exercise, grading, writing the table), and the same file graded in the page's Grade view
+// (scripts/bench-grade-page.mjs): the page's time over the CLI's, and the page's main thread's
+// longest task and input delay while it grades, against their goals (issue 39).
+// Alone: node scripts/bench-grade.mjs (KUMIKI_BIN: the CLI to time, default target/release/kumiki).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -13,6 +15,10 @@ import { join } from 'node:path';
 const LESSON = 'lesson-amas-robots';
 /** The class `kumiki check` grades in one command. */
 export const CLASS = 10_000;
+/** Goals: the page grades the class within this many times the CLI's time... */
+export const PAGE_OVER_CLI_GOAL = 3;
+/** ...its main thread's tasks and input delays below this, in milliseconds. */
+export const MAIN_THREAD_GOAL_MS = 100;
 
 /** `count` hand-in links of the lesson, made with the loaded wasm module. */
 export function handins(wasm, count) {
@@ -47,7 +53,7 @@ function median(runs, f) {
  * graded with the lab module `lab`) and natively (`kumiki check`, all cores), and the seconds
  * `kumiki check` takes for a class of 10,000 (median of 3 runs).
  */
-export function benchGrade(wasm, lab, root, count = 60) {
+export async function benchGrade(wasm, lab, root, count = 60) {
   const links = handins(wasm, count);
   const { teacher } = lab.class_exercise(LESSON, []);
   const rows = links.map((link, i) => JSON.stringify({ row: i + 1, line: i + 2, student: `Student ${i + 1}`, link, text: link }));
@@ -58,7 +64,7 @@ export function benchGrade(wasm, lab, root, count = 60) {
   const wasmMs = (performance.now() - started) / count;
   const dir = mkdtempSync(join(tmpdir(), 'kumiki-bench-grade-'));
   const check = (file) =>
-    execFileSync(`${root}target/release/kumiki`, ['check', '--file', file, '--exercise', LESSON, '--format', 'csv'], {
+    execFileSync(process.env.KUMIKI_BIN ?? `${root}target/release/kumiki`, ['check', '--file', file, '--exercise', LESSON, '--format', 'csv'], {
       cwd: root,
       stdio: ['ignore', 'ignore', 'ignore'],
     });
@@ -70,6 +76,51 @@ export function benchGrade(wasm, lab, root, count = 60) {
   const form = join(dir, 'class.csv');
   writeFileSync(form, formExport(handins(wasm, CLASS)));
   const classSeconds = median(3, () => check(form)) / 1000;
+  const { gradeInPage } = await import('./bench-grade-page.mjs');
+  const page = await gradeInPage(form, CLASS, LESSON);
   rmSync(dir, { recursive: true });
-  return { count, wasmMs, nativeMs, classCount: CLASS, classSeconds };
+  const pageOverCli = page.seconds / classSeconds;
+  const mainThreadMs = Math.max(page.longestTaskMs, page.inputDelayMs);
+  return {
+    count,
+    wasmMs,
+    nativeMs,
+    classCount: CLASS,
+    classSeconds,
+    page,
+    pageOverCli,
+    mainThreadMs,
+    goals: { pageOverCli: PAGE_OVER_CLI_GOAL, mainThreadMs: MAIN_THREAD_GOAL_MS },
+    met: pageOverCli <= PAGE_OVER_CLI_GOAL && mainThreadMs < MAIN_THREAD_GOAL_MS,
+  };
+}
+
+/** The grading bench in words, with its goals. */
+export function gradingReport(g) {
+  const p = g.page;
+  const verdict = (ok) => (ok ? 'met' : 'NOT met');
+  return [
+    `grading (${g.count} hand-ins of lesson-amas-robots): ${g.wasmMs.toFixed(1)} ms a hand-in in wasm (one worker's share), ` +
+      `${g.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core`,
+    `a class of ${g.classCount.toLocaleString('en-US')} from a form's CSV export: ${g.classSeconds.toFixed(2)} s with kumiki check (median of 3), ` +
+      `${p.seconds.toFixed(2)} s in the page on ${p.workers} workers (one run): ${g.pageOverCli.toFixed(2)} times the CLI's ` +
+      `(goal: at most ${g.goals.pageOverCli}, ${verdict(g.pageOverCli <= g.goals.pageOverCli)})`,
+    `  the page's main thread while grading: longest task ${p.longestTaskMs.toFixed(0)} ms (${p.longTasks} over 50 ms), ` +
+      `(at ${p.tasks.map(([t, d]) => `${(t / 1000).toFixed(1)} s: ${d} ms`).join(', ') || 'none'}), ` +
+      `longest input delay ${p.inputDelayMs.toFixed(0)} ms (${p.slowInputs} input events over 16 ms, of ${p.keyPresses} key presses; longest round trip of a press ${p.keyRoundTripMs.toFixed(0)} ms) ` +
+      `(goal: under ${g.goals.mainThreadMs} ms, ${verdict(g.mainThreadMs < g.goals.mainThreadMs)})`,
+    `  the page's tally: ${p.status}`,
+  ].join('\n');
+}
+
+if (import.meta.url === `file://${process.argv[1]}`) {
+  const root = new URL('..', import.meta.url).pathname;
+  const { readFileSync } = await import('node:fs');
+  const wasm = await import('../web/pkg/kumiki_wasm.js');
+  const lab = await import('../web/pkg/kumiki_lab.js');
+  wasm.initSync({ module: readFileSync(`${root}web/pkg/kumiki_wasm_bg.wasm`) });
+  lab.initSync({ module: readFileSync(`${root}web/pkg/kumiki_lab_bg.wasm`) });
+  const g = await benchGrade(wasm, lab, root);
+  console.log(gradingReport(g));
+  if (!g.met) process.exitCode = 1;
 }

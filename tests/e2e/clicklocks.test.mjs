@@ -6,7 +6,7 @@
 // meets it with that click and then counts the tool down to locked: so the test could tell.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { audit, loadWasm, openPage, session } from './harness.mjs';
+import { audit, kumiki, loadWasm, openPage, session, stepCount } from './harness.mjs';
 
 const wasm = loadWasm();
 const s = session();
@@ -130,6 +130,63 @@ describe('click tools under an exercise', () => {
     await page.keyboard.press('Escape');
     await page.click('#tab-scenario');
     assert.equal((await disturbances(page)).length, 1);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test('a click rewound past no longer counts: the tool is free again before its step, and page and kumiki check agree', async () => {
+    const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${exerciseLink('fracta-hexagon7', { fault: 1 })}`);
+    await page.waitForSelector('#exercise:not([hidden])');
+    await page.click('#tab-run');
+    const text = (t) => page.textContent(`#tools button[data-tool="${t}"]`);
+    const until = (t, end) => page.waitForFunction(([t, e]) => document.querySelector(`#tools button[data-tool="${t}"]`).textContent.endsWith(e), [t, end]);
+    await until('fault', '(1 left)');
+    const view = page.locator('#view');
+    await view.focus();
+    for (let i = 0; i < 6; i++) await page.keyboard.press('ArrowRight');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '6');
+    // The allowance's one click, at step 6.
+    await page.click('#tools button[data-tool="fault"]');
+    await view.focus();
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => Number(document.querySelector('#view').dataset.cursor) >= 0);
+    await page.keyboard.press('Enter');
+    await until('fault', '(locked)');
+    await page.keyboard.press('Escape');
+    // Rewound past it: the click at step 6 would be dropped by a click now, so it no longer counts.
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowLeft');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '3');
+    await until('fault', '(1 left)');
+    assert.equal(await page.getAttribute('#tools button[data-tool="fault"]', 'aria-disabled'), null);
+    // Played past it again, it counts again.
+    for (let i = 0; i < 4; i++) await page.keyboard.press('ArrowRight');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '7');
+    await until('fault', '(locked)');
+    // Back at step 3, a click is made and replaces the later one; the tool is used up again.
+    for (let i = 0; i < 4; i++) await page.keyboard.press('ArrowLeft');
+    await page.waitForFunction(() => document.querySelector('#step-count').textContent === '3');
+    await until('fault', '(1 left)');
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => Number(document.querySelector('#view').dataset.cursor) >= 0);
+    await page.keyboard.press('Enter');
+    await until('fault', '(locked)');
+    await page.keyboard.press('Escape');
+    assert.equal(await stepCount(page), 3);
+    await page.click('#tab-scenario');
+    assert.deepEqual(
+      (await disturbances(page)).map((d) => [d.at, d.kind]),
+      [[3, 'fault']],
+    );
+    // The hand-in: kumiki check counts the same one click, within the allowance.
+    await page.click('#tab-run');
+    await page.fill('#exercise-student', 'Ada');
+    await page.click('#exercise-handin');
+    await page.waitForFunction(() => document.querySelector('#exercise-handin-out').textContent.includes('#k1.'));
+    const handin = /(http\S+#k1\.\S+)/.exec(await page.textContent('#exercise-handin-out'))[1];
+    const row = JSON.parse(kumiki(['check', handin, '--exercise', `#${exerciseLink('fracta-hexagon7', { fault: 1 })}`]).trim());
+    assert.deepEqual(row.disturbances, []);
+    assert.equal(row.met, true, row.because);
+    assert.match(await text('fault'), /\(locked\)$/);
     assert.deepEqual(problems, []);
     await context.close();
   });

@@ -96,6 +96,29 @@ function formClass(base) {
   return { rows, csv: `${rows.map((r) => r.map(cell).join(',')).join('\r\n')}\r\n` };
 }
 
+/**
+ * Every row of the (virtualised) grade table, scrolled through from the top: its cells' text, and
+ * whether it is marked over budget.
+ */
+async function tableRows(page) {
+  const found = new Map();
+  await page.$eval('#grade-scroller', (s) => (s.scrollTop = 0));
+  for (;;) {
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const seen = await page.$$eval('#grade-rows tr[aria-rowindex]', (trs) =>
+      trs.map((tr) => [Number(tr.getAttribute('aria-rowindex')), { cells: [...tr.cells].map((c) => c.textContent), over: tr.classList.contains('over') }]),
+    );
+    for (const [i, v] of seen) found.set(i, v);
+    const more = await page.$eval('#grade-scroller', (s) => {
+      const before = s.scrollTop;
+      s.scrollTop += s.clientHeight;
+      return s.scrollTop > before;
+    });
+    if (!more) break;
+  }
+  return [...found.keys()].sort((a, b) => a - b).map((i) => found.get(i));
+}
+
 /** Opens `file` in the Grade view, grades it by the exercise the links carry, and returns the table's cells. */
 async function gradeFile(page, file, rows) {
   await page.setInputFiles('#grade-file', file);
@@ -104,7 +127,7 @@ async function gradeFile(page, file, rows) {
   await page.fill('#grade-exercise', '');
   await page.click('#grade-start');
   await page.waitForFunction((n) => new RegExp(`^${n} hand-ins:`).test(document.querySelector('#grade-status').textContent), rows, { timeout: 120000 });
-  return page.$$eval('#grade-rows tr', (trs) => trs.map((tr) => ({ cells: [...tr.cells].map((c) => c.textContent), over: tr.classList.contains('over') })));
+  return tableRows(page);
 }
 
 /** kumiki check on the same file, by the exercise the links carry: one record a row. */
@@ -134,8 +157,9 @@ describe('the Grade view', () => {
     const status = await page.textContent('#grade-status');
     assert.equal(await page.getAttribute('#grade-progress', 'aria-valuenow'), '100');
 
-    const shown = await page.$$eval('#grade-rows tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+    const shown = (await tableRows(page)).map((r) => r.cells);
     assert.equal(shown.length, 30);
+    assert.equal(await page.getAttribute('#grade-table', 'aria-rowcount'), '31');
     assert.deepEqual(
       shown.map((r) => r[1]),
       links.map((_, i) => `Pupil ${i + 1}`),
@@ -218,7 +242,7 @@ describe('the Grade view', () => {
       assert.ok(shown[4].cells[6].startsWith(`holds no Kumiki link (line ${file.endsWith('.xlsx') ? 6 : 11} of the file)`), shown[4].cells[6]);
       // The answer, as the hand-in carries it, and its record.
       assert.equal(
-        await page.$eval('#grade-rows tr:first-child .grade-answer bdi', (b) => b.textContent),
+        await page.$eval('#grade-rows tr[aria-rowindex="2"] .grade-answer bdi', (b) => b.textContent),
         'They collide at the corner.\nSix was best, "really".',
       );
       assert.match(shown[0].cells[7], /handed in 2026-11-28T10:15:00Z, 2 checks, 1 hint$/);
@@ -240,7 +264,7 @@ describe('the Grade view', () => {
     await page.setInputFiles('#grade-file', junk);
     await page.waitForFunction(() => /neither text/.test(document.querySelector('#grade-status').textContent));
     assert.match(await page.textContent('#grade-status'), /^kumiki-junk-\d+\.png: this file is neither text .* nor a workbook/);
-    assert.equal(await page.locator('#grade-rows tr').count(), 0);
+    assert.equal(await page.locator('#grade-rows tr[aria-rowindex]').count(), 0);
     assert.equal(await page.isDisabled('#grade-export'), true);
     assert.equal(await page.getAttribute('#grade-progress', 'aria-valuenow'), '0');
     // A mistyped exercise: refused by its name, the table empty again.
@@ -248,7 +272,7 @@ describe('the Grade view', () => {
     await page.fill('#grade-exercise', 'lesson-amas-robotz');
     await page.click('#grade-start');
     await page.waitForFunction(() => /^Not graded: /.test(document.querySelector('#grade-status').textContent));
-    assert.equal(await page.locator('#grade-rows tr').count(), 0);
+    assert.equal(await page.locator('#grade-rows tr[aria-rowindex]').count(), 0);
     assert.equal(await page.getAttribute('#grade-exercise', 'aria-invalid'), 'true');
     assert.deepEqual(problems, []);
     await context.close();
@@ -264,18 +288,122 @@ describe('the Grade view', () => {
     // Pasted at once (typing 2.5 MB of links into the box would be the test's own slowness).
     await page.$eval('#grade-input', (t, text) => (t.value = text), Array.from({ length: 2000 }, () => link).join('\n'));
     await page.click('#grade-start');
-    await page.waitForFunction(() => document.querySelectorAll('#grade-rows tr:not(.pending)').length > 0, null, { timeout: 60000 });
+    await page.waitForFunction(() => document.querySelectorAll('#grade-rows tr[aria-rowindex]:not(.pending)').length > 0, null, { timeout: 60000 });
     await page.click('#grade-cancel');
     const status = await page.textContent('#grade-status');
     assert.match(status, /^Cancelled after [\d,]+ of 2,000 hand-ins/);
     const graded = Number(/after ([\d,]+)/.exec(status)[1].replace(/,/g, ''));
     assert.ok(graded > 0 && graded < 2000, `${graded} graded`);
-    // The table is paged: 200 rows at a time, whatever the class's size.
-    assert.equal(await page.locator('#grade-rows tr').count(), 200);
-    assert.equal(await page.textContent('#grade-page'), 'Rows 1 to 200 of 2,000');
-    await page.click('#grade-next');
-    assert.equal(await page.textContent('#grade-page'), 'Rows 201 to 400 of 2,000');
+    // The table is virtualised: only the rows in view (and a few either side) are in the page,
+    // numbered for screen readers among all 2,000; scrolling to the end draws the last.
+    assert.equal(await page.getAttribute('#grade-table', 'aria-rowcount'), '2001');
+    const drawn = await page.locator('#grade-rows tr[aria-rowindex]').count();
+    assert.ok(drawn > 0 && drawn < 60, `${drawn} rows drawn`);
+    await page.focus('#grade-scroller');
+    await page.keyboard.press('End');
+    await page.waitForSelector('#grade-rows tr[aria-rowindex="2001"]');
+    assert.match(await page.textContent('#grade-rows tr[aria-rowindex="2001"]'), /^2000(not graded|met|not met)/);
+    assert.ok((await page.locator('#grade-rows tr[aria-rowindex]').count()) < 60);
+    assert.equal(await page.locator('#grade-rows tr[aria-rowindex="2"]').count(), 0);
     assert.equal(await page.isDisabled('#grade-start'), false);
+    await context.close();
+  });
+
+  test('a stuck row is shown by its number and name, and skipped: its worker replaced, the rest graded', async () => {
+    const { page, context, problems } = await openPage(s.browser, s.server.url);
+    // The class's exercise leaves the target open; one student hands in a 200x200 one, which
+    // takes seconds to replay, among 39 fair hand-ins.
+    const teacher = JSON.parse(wasm.lesson_json(LESSON));
+    delete teacher.exercise.locked.target;
+    teacher.max_steps = 100000;
+    teacher.robots = 5;
+    const huge = structuredClone(teacher);
+    huge.target = `${Array.from({ length: 200 }, () => '#'.repeat(200)).join('\n')}\n`;
+    const link = (doc) => `${s.server.url}#${wasm.encode_link(JSON.stringify(doc))}`;
+    const lines = ['Full name,Kumiki link', ...Array.from({ length: 40 }, (_, i) => `Pupil ${i + 1},${link(i === 1 ? huge : teacher)}`)];
+    await page.click('#open-gallery');
+    await page.click('#open-grade');
+    await page.$eval('#grade-input', (t, text) => (t.value = text), lines.join('\n'));
+    await page.click('#grade-start');
+    await page.waitForFunction(() => /^Grading row 2: Pupil 2\b/.test(document.querySelector('#grade-running').textContent), null, { timeout: 60000 });
+    assert.equal(await page.isDisabled('#grade-skip'), false);
+    await page.click('#grade-skip');
+    await page.waitForFunction(() => /^40 hand-ins:/.test(document.querySelector('#grade-status').textContent), null, { timeout: 120000 });
+    assert.equal(await page.textContent('#grade-status'), '40 hand-ins: 39 met, 0 not met, 0 could not be graded, 1 skipped.');
+    assert.equal(await page.textContent('#grade-running'), '');
+    assert.equal(await page.isDisabled('#grade-skip'), true);
+    const shown = (await tableRows(page)).map((r) => r.cells);
+    assert.equal(shown.length, 40);
+    assert.equal(shown[1][2], 'skipped');
+    assert.match(shown[1][6], /^skipped: the teacher skipped it after [\d.]+ s/);
+    assert.deepEqual(new Set(shown.filter((_, i) => i !== 1).map((r) => r[2])), new Set(['met']));
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-export')]);
+    const exported = readFileSync(await download.path(), 'utf8')
+      .trim()
+      .split('\n');
+    assert.equal(exported.length, 41);
+    assert.match(exported[2], /^2,Pupil 2,.*skipped: the teacher skipped it after/);
+    assert.deepEqual(await audit(page, 'the table with a skipped row'), [], 'axe, with a skipped row');
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  test("a student's own exercise: the editor says so first, and its hand-in fails in the page and with kumiki check", async () => {
+    const lesson = JSON.parse(wasm.lesson_json(LESSON));
+    const link = (doc) => `${s.server.url}#${wasm.encode_link(JSON.stringify(doc))}`;
+    const { page, context, problems } = await openPage(s.browser, link(lesson));
+    await page.waitForSelector('#exercise:not([hidden])');
+    await page.click('#tab-scenario');
+    await page.click('#make-exercise');
+    await page.waitForSelector('#exercise-editor[open]');
+    // With an exercise open, the editor first says what it will do.
+    assert.equal(await page.isVisible('#ex-fields'), false);
+    assert.match(
+      await page.textContent('#ex-confirm-text'),
+      /^This starts a new exercise from your scenario; it will not be graded as the teacher's exercise\./,
+    );
+    assert.deepEqual(await audit(page, 'the editor, saying what it will do'), []);
+    await page.click('#ex-confirm-go');
+    // The student unlocks the seed, and changes it.
+    await page.uncheck('#ex-locked input[value="seed"]');
+    await page.click('#ex-apply');
+    await page.waitForSelector('#exercise-editor', { state: 'hidden' });
+    await page.waitForFunction(() => !document.querySelector('#seed').readOnly);
+    await page.fill('#seed', '2');
+    await page.$eval('#seed', (i) => i.dispatchEvent(new Event('change')));
+    await page.waitForFunction(() => JSON.parse(document.querySelector('#scenario-json').value).seed === 2);
+    await page.fill('#exercise-student', 'Mallory');
+    await page.click('#exercise-handin');
+    await page.waitForFunction(() => document.querySelector('#exercise-handin-out').textContent.includes('#k1.'));
+    const own = /(http\S+#k1\.\S+)/.exec(await page.textContent('#exercise-handin-out'))[1];
+    const fair = structuredClone(lesson);
+    fair.robots = 5;
+    const links = [link(fair), own, link(fair)];
+
+    // Graded with no exercise given: the class's is the one most links carry, and Mallory's fails.
+    await page.click('#open-gallery');
+    await page.click('#open-grade');
+    await page.fill('#grade-input', links.join('\n'));
+    await page.fill('#grade-exercise', '');
+    await page.click('#grade-start');
+    await page.waitForFunction(() => /^3 hand-ins:/.test(document.querySelector('#grade-status').textContent), null, { timeout: 60000 });
+    const shown = (await tableRows(page)).map((r) => r.cells);
+    assert.deepEqual(
+      shown.map((r) => r[2]),
+      ['met', 'not met', 'met'],
+    );
+    assert.ok(shown[1][6].startsWith("not replayed: its exercise is not the class's (locked.seed differs)"), shown[1][6]);
+    const cli = kumiki(['check', ...links])
+      .trim()
+      .split('\n')
+      .map((l) => JSON.parse(l));
+    assert.deepEqual(
+      cli.map((r) => r.met),
+      [true, false, true],
+    );
+    assert.equal(cli[1].exercise_edited, true);
+    assert.ok(cli[1].because.startsWith("not replayed: its exercise is not the class's (locked.seed differs)"), cli[1].because);
+    assert.deepEqual(problems, []);
     await context.close();
   });
 });

@@ -56,8 +56,14 @@ describe('the exercise editor', () => {
     });
     await until(() => $('#tools button[data-tool="remove"]').textContent?.endsWith('(2 left)') ?? false, 'the allowance');
     expect($('#tools button[data-tool="break"]').getAttribute('aria-disabled')).toBe('true');
-    // Edited again, the exercise keeps what it had.
+    // Edited again, the exercise keeps what it had, once the editor has said what it does: it
+    // starts a new exercise, not graded as the one open.
     $('#make-exercise').click();
+    expect($('#ex-confirm').hidden).toBe(false);
+    expect($('#ex-fields').hidden).toBe(true);
+    expect($('#ex-confirm-text').textContent).toMatch(/^This starts a new exercise from your scenario; it will not be graded as the teacher's exercise\./);
+    $('#ex-confirm-go').click();
+    expect($('#ex-fields').hidden).toBe(false);
     expect($<HTMLInputElement>('#ex-allow input[data-kind="remove"]').value).toBe('2');
     expect($<HTMLTextAreaElement>('#ex-credit').value).toBe('5: completed\n3: steps < 3000');
     expect($<HTMLInputElement>('#ex-budget-steps').value).toBe('5000');
@@ -66,6 +72,8 @@ describe('the exercise editor', () => {
   it('refuses a part whose goal does not read, naming it, and keeps the editor open', async () => {
     const { until } = await opened();
     $('#make-exercise').click();
+    // No exercise open: the editor opens on its fields at once.
+    expect($('#ex-confirm').hidden).toBe(true);
     set('#ex-goal', 'completed');
     set('#ex-credit', '5: metrics.nonsense > 1');
     $('#ex-apply').click();

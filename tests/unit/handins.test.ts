@@ -44,12 +44,13 @@ describe('a graded row', () => {
       grade(),
       grade({ over_budget: true }),
       { handin: 4, error: 'holds no Kumiki link (line 5 of the file): Bob' } as GradeRow,
+      { handin: 5, error: 'skipped: the teacher skipped it after 4.0 s at step 9,000' } as GradeRow,
     ];
-    expect(rows.map(verdict)).toEqual(['met', 'not met', 'over budget', 'could not be graded']);
+    expect(rows.map(verdict)).toEqual(['met', 'not met', 'over budget', 'could not be graded', 'skipped']);
     const tally = emptyTally();
     for (const r of rows) count(tally, r);
-    expect(tallyText(tally)).toBe('1 met, 2 not met (1 over budget), 1 could not be graded');
-    expect(tallyText({ met: 2, unmet: 0, over: 0, errors: 0 })).toBe('2 met, 0 not met, 0 could not be graded');
+    expect(tallyText(tally)).toBe('1 met, 2 not met (1 over budget), 1 could not be graded, 1 skipped');
+    expect(tallyText({ met: 2, unmet: 0, over: 0, errors: 0, skipped: 0 })).toBe('2 met, 0 not met, 0 could not be graded');
   });
 
   test('its points of the most, and each credit part', () => {

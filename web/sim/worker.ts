@@ -26,7 +26,8 @@ import {
   touched,
   untold,
 } from './pace';
-import type { ClickState, Proposed, ToWorker } from './protocol';
+import { clickStates } from './clicks';
+import type { Proposed, ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
 import { needsRules } from './rules';
 
@@ -160,12 +161,9 @@ function handle(msg: ToWorker) {
     case 'goal-problem':
       post({ type: 'answer', id: msg.id, value: needDraft().goal_problem(msg.goal, msg.metrics) ?? null });
       return;
-    case 'clicks': {
-      const d = needDraft();
-      const value: ClickState[] = msg.tools.map((t) => ({ problem: d.click_problem(t.kind, t.label) ?? null, left: d.clicks_left(t.kind) ?? null }));
-      post({ type: 'answer', id: msg.id, value });
+    case 'clicks':
+      post({ type: 'answer', id: msg.id, value: clickStates(run.sim, needDraft(), msg.tools) });
       return;
-    }
     case 'play':
       return play();
     case 'pause':

@@ -278,29 +278,44 @@ impl Playback {
     /// it would be added to are those before `now` and the scenario's own (a click in the past
     /// drops the later ones).
     fn allowed(&self, action: &Action, now: u64) -> Result<()> {
-        let scenario = self.run().scenario();
-        let Some(exercise) = &scenario.exercise else {
-            return Ok(());
-        };
         let kind = action
             .get("kind")
             .and_then(serde_json::Value::as_str)
             .unwrap_or_default();
+        let tools = self.run().model().layout().tools;
+        let label = tools
+            .iter()
+            .find(|t| t.action.get("kind").and_then(serde_json::Value::as_str) == Some(kind))
+            .map_or(kind, |t| t.label.as_str());
+        match self.click_state_at(kind, label, now).0 {
+            Some(why) => Err(crate::error::Error::field("", why)),
+            None => Ok(()),
+        }
+    }
+
+    /// What the exercise in view says of a click of `kind` (the tool `label`) made now, as
+    /// [`Playback::apply`] judges it: why it is refused (`None` when it may be made), and how
+    /// many more of its kind may be added (`None` when no exercise is in view). A click rewound
+    /// past (made at a later step) no longer counts: a click now drops it.
+    pub fn click_state(&self, kind: &str, label: &str) -> (Option<String>, Option<u32>) {
+        self.click_state_at(kind, label, self.run().steps())
+    }
+
+    fn click_state_at(&self, kind: &str, label: &str, now: u64) -> (Option<String>, Option<u32>) {
+        let scenario = self.run().scenario();
+        let Some(exercise) = &scenario.exercise else {
+            return (None, None);
+        };
         let list: Vec<serde_json::Value> = scenario
             .disturbances
             .iter()
             .filter(|d| d.at <= now || self.authored.contains(d))
             .map(crate::scenario::Disturbance::to_value)
             .collect();
-        let tools = self.run().model().layout().tools;
-        let label = tools
-            .iter()
-            .find(|t| t.action.get("kind").and_then(serde_json::Value::as_str) == Some(kind))
-            .map_or(kind, |t| t.label.as_str());
-        match exercise.click_problem(kind, label, &list) {
-            Some(why) => Err(crate::error::Error::field("", why)),
-            None => Ok(()),
-        }
+        let left = exercise
+            .allowed(kind)
+            .saturating_sub(exercise.added(kind, &list));
+        (exercise.click_problem(kind, label, &list), Some(left))
     }
 }
 
@@ -392,6 +407,55 @@ mod tests {
             before_fork,
             "the fork runs differently"
         );
+    }
+
+    /// A click of an allowance's last one, rewound past: the page asks the playback, which
+    /// answers as its `apply` judges (the click at hand would drop the later one), so the tool is
+    /// free again before the click's step and counted again once the run passes it.
+    #[test]
+    fn a_click_rewound_past_no_longer_counts_against_the_allowance() {
+        let mut scenario: Scenario = presets::scenario("amas-L").unwrap();
+        let mut doc = scenario.to_value();
+        doc["exercise"] = serde_json::json!({
+            "title": "One removal", "instructions": "", "goal": "completed",
+            "disturbances": {"remove": 1}, "hints": []
+        });
+        scenario = Scenario::from_value(doc).unwrap();
+        let mut p = Playback::new(Run::new(scenario).unwrap());
+        let remove = || action(r#"{"kind": "remove", "count": 1}"#);
+        assert_eq!(p.click_state("remove", "Remove"), (None, Some(1)));
+        p.advance(40, &mut no_clock());
+        p.apply(remove()).unwrap();
+        p.advance(20, &mut no_clock());
+        assert_eq!(p.click_state("remove", "Remove").1, Some(0));
+        assert!(p.apply(remove()).is_err(), "the allowance is used");
+        p.seek(10);
+        assert_eq!(
+            p.click_state("remove", "Remove"),
+            (None, Some(1)),
+            "rewound past, the click no longer counts"
+        );
+        p.advance(35, &mut no_clock());
+        assert_eq!(
+            p.click_state("remove", "Remove").1,
+            Some(0),
+            "played past it again, it counts"
+        );
+        p.seek(10);
+        p.apply(remove()).unwrap();
+        let at: Vec<u64> = p
+            .run()
+            .scenario()
+            .disturbances
+            .iter()
+            .map(|d| d.at)
+            .collect();
+        assert_eq!(
+            at,
+            [10],
+            "the click made after rewinding replaced the later one"
+        );
+        assert_eq!(p.click_state("remove", "Remove").1, Some(0));
     }
 
     #[test]

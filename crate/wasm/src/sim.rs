@@ -193,6 +193,15 @@ impl Sim {
         self.playback.apply(action).map_err(js_err)
     }
 
+    /// What the exercise in view says of a click of `kind` (the tool `label`) made now, as
+    /// [`Sim::apply`] would judge it: a `ClickState` (`problem`: why it is refused, or null;
+    /// `left`: how many more of its kind may be added, null without an exercise). A click
+    /// rewound past no longer counts.
+    pub fn click_state(&self, kind: &str, label: &str) -> Result<JsValue, JsError> {
+        let (problem, left) = self.playback.click_state(kind, label);
+        to_js(&serde_json::json!({ "problem": problem, "left": left }))
+    }
+
     /// Bonds as one bit mask per cell (bit d: bonded to the neighbour in lattice direction d);
     /// empty for models without bonds. See `kumiki_core::models::Model::bonds`.
     pub fn bonds(&self) -> Uint8Array {

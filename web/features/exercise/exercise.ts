@@ -215,7 +215,16 @@ export function setupExerciseEditor(page: PageContext) {
     byId<HTMLInputElement>('ex-budget-seconds').value = current?.budget?.seconds ? String(current.budget.seconds) : '';
     byId('ex-remove').hidden = !current;
     void showGoalProblem();
+    // With an exercise open (a student's page), the editor first says what it will do.
+    byId('ex-confirm').hidden = !current;
+    byId('ex-fields').hidden = Boolean(current);
     dialog.showModal();
+    if (current) byId('ex-confirm-go').focus();
+  });
+  byId('ex-confirm-go').addEventListener('click', () => {
+    byId('ex-confirm').hidden = true;
+    byId('ex-fields').hidden = false;
+    byId('ex-title').focus();
   });
   // The exercise is made only with a goal that reads well: checked first when it was not yet.
   /** The credit's parts, each goal checked against the model in view; null (with the problem shown) when one is wrong. */

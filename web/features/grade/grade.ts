@@ -5,95 +5,20 @@
 // gets a table graded as `kumiki check` grades: every row replayed within the exercise's budget in
 // wasm workers on this machine, with its points per credit part, the student's answer and record,
 // progress, cancel and the CLI's CSV. Nothing is sent anywhere.
-import type { ClassExercise, Handin2 } from '../../contract.gen';
-import { classExercise, gradeTableCsv, labModule, loadLab, readHandins } from '../../lab';
+import type { ClassExercise } from '../../contract.gen';
+import { classExercise, gradeTableCsv, loadLab, readHandins } from '../../lab';
 import type { PageContext } from '../../page/context';
-import { byId, clear, download, el, formatNumber, markup } from '../../widgets/dom';
+import { byId, download, markup } from '../../widgets/dom';
 import * as core from '../../wasm';
 import dialogHtml from './dialog.html?raw';
-import {
-  answerText,
-  count,
-  emptyTally,
-  type GradeRow,
-  isGraded,
-  nameText,
-  partsText,
-  pointsText,
-  reasonText,
-  recordText,
-  studentOf,
-  tallyText,
-  verdict,
-} from './handins';
-import type { FromGradeWorker, ToGradeWorker } from './worker';
+import { count, emptyTally, type GradeRow, nameText, tallyText } from './handins';
+import { GradePool, type ReadClass, readClass } from './pool';
+import { GradeTable } from './table';
 
-/**
- * Rows the table shows at a time: a class of 10 000 is paged, so the page's memory and its work
- * per frame stay the same however large the class (the CSV export has every row).
- */
-const PAGE_ROWS = 200;
-/**
- * Hand-ins each worker holds at once: the next one is already there when it finishes, so the
- * workers never wait for the page's thread to hand one out.
- */
-const IN_FLIGHT = 4;
-/** The table's columns: a row not graded yet spans those after its number. */
-const COLUMNS = 10;
-
-/** Grades `handins` by the class's exercise (`teacher`) on `size` workers; `row` hears each one as it comes, in any order. */
-class GradePool {
-  private workers: Worker[] = [];
-  private next = 0;
-  private stopped = false;
-
-  constructor(
-    private readonly handins: Handin2[],
-    private readonly teacher: string,
-    private readonly on: { row(index: number, row: GradeRow): void; failed(message: string): void },
-  ) {}
-
-  async start(size: number) {
-    const module = await labModule();
-    if (this.stopped) return;
-    const n = Math.max(1, Math.min(size, this.handins.length));
-    for (let w = 0; w < n; w++) this.spawn(module, w);
-  }
-
-  private spawn(module: WebAssembly.Module, w: number) {
-    const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: `kumiki-grade-${w}` });
-    worker.onmessage = (e: MessageEvent<FromGradeWorker>) => {
-      if (this.stopped) return;
-      const msg = e.data;
-      if (msg.type === 'failed') {
-        this.stop();
-        this.on.failed(msg.message);
-        return;
-      }
-      if (msg.type === 'ready') for (let k = 1; k < IN_FLIGHT; k++) this.handOut(worker);
-      this.handOut(worker);
-      if (msg.type === 'graded') this.on.row(msg.index, msg.row);
-    };
-    worker.onerror = (e) => {
-      this.stop();
-      this.on.failed(`a grading worker failed: ${e.message}`);
-    };
-    worker.postMessage({ type: 'setup', module, teacher: this.teacher } satisfies ToGradeWorker);
-    this.workers.push(worker);
-  }
-
-  private handOut(worker: Worker) {
-    if (this.stopped || this.next >= this.handins.length) return;
-    const index = this.next++;
-    worker.postMessage({ type: 'grade', index, handin: JSON.stringify(this.handins[index]) } satisfies ToGradeWorker);
-  }
-
-  stop() {
-    this.stopped = true;
-    for (const w of this.workers) w.terminate();
-    this.workers = [];
-  }
-}
+/** How often the table, the progress bar and the running row are drawn while grading, in milliseconds. */
+const DRAW_MS = 100;
+/** The largest text file shown in the box, in bytes; a larger one is graded as it is, unshown. */
+const BOX_BYTES = 1 << 20;
 
 /** A file's text when it is UTF-8 text (shown in the box); null for anything else (read as bytes). */
 function utf8Text(bytes: Uint8Array): string | null {
@@ -118,20 +43,18 @@ export function setupGrade(page: PageContext) {
   const exportCsv = byId<HTMLButtonElement>('grade-export');
   const progress = byId('grade-progress');
   const status = byId('grade-status');
-  const body = byId('grade-rows');
-
-  const prev = byId<HTMLButtonElement>('grade-prev');
-  const next = byId<HTMLButtonElement>('grade-next');
-  const pageLabel = byId('grade-page');
+  const running = byId('grade-running');
+  const skip = byId<HTMLButtonElement>('grade-skip');
+  const table = new GradeTable(byId('grade-scroller'), byId<HTMLTableElement>('grade-table'), byId('grade-rows'));
 
   let pool: GradePool | null = null;
   let rows: GradeRow[] = [];
+  /** The students' names in the class's file, for the row being graded. */
+  let students: string[] = [];
+  /** The row shown as being graded (the one Skip skips); null when none. */
+  let current: number | null = null;
   /** The class's exercise the rows in the table were graded by. */
   let graded: ClassExercise | null = null;
-  /** The first row of the page of the table in view. */
-  let pageStart = 0;
-  /** A row of the page in view was graded since the table was drawn. */
-  let pageDirty = false;
   /** A file that is not UTF-8 text (a workbook, a UTF-16 export), read as it is; null: the box's text. */
   let opened: { name: string; bytes: Uint8Array } | null = null;
 
@@ -148,26 +71,20 @@ export function setupGrade(page: PageContext) {
     progress.setAttribute('aria-valuenow', pct.toFixed(0));
   };
 
-  /** Draws the page of the table in view: its graded rows, and those still to come. */
-  const showPage = () => {
-    pageDirty = false;
-    clear(body);
-    const end = Math.min(rows.length, pageStart + PAGE_ROWS);
-    for (let i = pageStart; i < end; i++) body.append(rows[i] ? tableRow(rows[i]) : pendingRow(i + 1, pool !== null));
-    pageLabel.textContent = rows.length
-      ? `Rows ${(pageStart + 1).toLocaleString('en-US')} to ${end.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')}`
-      : '';
-    prev.disabled = pageStart === 0;
-    next.disabled = end >= rows.length;
+  /** Shows the row running longest ("Grading row 12: Ada, step 40,000, 3.2 s"), the one Skip skips. */
+  const showRunning = () => {
+    const r = pool?.running() ?? null;
+    current = r?.index ?? null;
+    skip.disabled = r === null;
+    if (!r) {
+      running.textContent = '';
+      return;
+    }
+    const name = nameText(students[r.index] ?? '').shown;
+    const seconds = (performance.now() - r.since) / 1000;
+    const step = r.steps === null ? '' : `, step ${r.steps.toLocaleString('en-US')}`;
+    running.textContent = `Grading row ${(r.index + 1).toLocaleString('en-US')}: ${name}${step}${seconds >= 1 ? `, ${seconds.toFixed(0)} s` : ''}`;
   };
-  prev.addEventListener('click', () => {
-    pageStart = Math.max(0, pageStart - PAGE_ROWS);
-    showPage();
-  });
-  next.addEventListener('click', () => {
-    if (pageStart + PAGE_ROWS < rows.length) pageStart += PAGE_ROWS;
-    showPage();
-  });
 
   const finish = (text: string) => {
     pool?.stop();
@@ -175,7 +92,8 @@ export function setupGrade(page: PageContext) {
     start.disabled = false;
     cancel.disabled = true;
     exportCsv.disabled = !rows.some(Boolean);
-    showPage();
+    showRunning();
+    table.setGrading(false);
     status.textContent = text;
   };
 
@@ -185,18 +103,26 @@ export function setupGrade(page: PageContext) {
     pool = null;
     rows = [];
     graded = null;
-    pageStart = 0;
+    table.reset(rows, false);
     setProgress(0, 0);
     finish(message);
   };
 
   const readFile = async (f: File) => {
     const bytes = new Uint8Array(await f.arrayBuffer());
-    const text = utf8Text(bytes);
+    const text = bytes.length <= BOX_BYTES ? utf8Text(bytes) : null;
     if (text !== null) {
       opened = null;
       input.value = text;
       fileNote.textContent = '';
+      return;
+    }
+    if (bytes.length > BOX_BYTES && utf8Text(bytes) !== null) {
+      // A large class's export stays out of the box (laying out megabytes of text there takes the
+      // page's thread for seconds): it is read as it is, in the grading workers.
+      opened = { name: f.name, bytes };
+      input.value = '';
+      fileNote.textContent = `${f.name} (${(bytes.length / 2 ** 20).toFixed(1)} MB of text), read as it is (typing in the box above replaces it).`;
       return;
     }
     // A workbook, a UTF-16 export, or something else: the lab's reader says which, at once.
@@ -255,70 +181,107 @@ export function setupGrade(page: PageContext) {
       refuse('Paste the hand-in links first, one a line, or open an export.');
       return;
     }
-    let handins: Handin2[];
-    let cls: ClassExercise;
+    let read: ReadClass;
+    start.disabled = true;
+    status.textContent = 'Reading the hand-ins…';
     try {
-      await loadLab();
-      handins = readHandins(opened ? opened.bytes : new TextEncoder().encode(input.value));
+      read = await readClass(opened ? opened.bytes : new TextEncoder().encode(input.value), exerciseInput.value.trim() || null);
     } catch (e) {
       refuse(`Not graded: ${core.message(e)}`);
       return;
     }
-    if (!handins.length) {
+    if (read.type === 'refused') {
+      if (read.exercise) showExercise(read.message);
+      refuse(`Not graded: ${read.message}`);
+      return;
+    }
+    const handins = read.handins;
+    students = read.students;
+    const cls = read.cls;
+    if (!handins.length || !cls) {
       refuse('Not graded: there is no hand-in in it (blank lines and # comments are skipped).');
-      return;
-    }
-    try {
-      cls = classExercise(
-        exerciseInput.value.trim() || null,
-        handins.flatMap((h) => (h.link ? [h.link] : [])),
-      );
-    } catch (e) {
-      showExercise(core.message(e));
-      refuse(`Not graded: ${core.message(e)}`);
       return;
     }
     showExercise(cls);
     graded = cls;
     rows = new Array(handins.length);
-    pageStart = 0;
     let done = 0;
     const total = handins.length;
     const tally = emptyTally();
-    // The page shows progress once a frame, not once a hand-in: a row a message would keep the
-    // page's thread, which hands out the work, busy laying out the table.
+    // The page shows progress ten times a second, not once a batch of rows nor once a frame (each
+    // frame drawn is the compositor's work too, on the cores the workers grade on): the table
+    // draws only the rows in view, and the status and progress bar change then.
     let drawing = 0;
+    const tick = () => {
+      drawing = window.setTimeout(() => requestAnimationFrame(draw), DRAW_MS);
+    };
     const draw = () => {
-      drawing = 0;
       // Finished or cancelled meanwhile: the final status stays.
       if (!pool) return;
-      setProgress(done, total);
-      status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
-      if (pageDirty) showPage();
+      if (done !== shown) {
+        shown = done;
+        setProgress(done, total);
+        table.draw();
+      }
+      // The tally is a live region: said at most once a second, not once a frame.
+      if (told !== done && performance.now() - said > 1000) {
+        said = performance.now();
+        told = done;
+        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
+      }
+      // The row running longest changes its seconds, not its frames: shown four times a second.
+      if (performance.now() - ran > 250) {
+        ran = performance.now();
+        showRunning();
+      }
+      tick();
     };
+    /** The rows graded when the page last drew, and when it last said the tally. */
+    let shown = 0;
+    let said = 0;
+    /** The rows graded when the tally was last said. */
+    let told = 0;
+    /** When the row running longest was last shown. */
+    let ran = 0;
     const record = (index: number, row: GradeRow) => {
+      if (rows[index]) return;
       rows[index] = row;
-      if (index >= pageStart && index < pageStart + PAGE_ROWS) pageDirty = true;
       count(tally, row);
       done++;
+    };
+    const heard = (batch: { index: number; row: GradeRow }[]) => {
+      for (const { index, row } of batch) record(index, row);
       if (done === total) {
+        clearTimeout(drawing);
         setProgress(done, total);
         finish(`${total.toLocaleString('en-US')} hand-ins: ${tallyText(tally)}.`);
-      } else if (!drawing) drawing = requestAnimationFrame(draw);
+      }
+    };
+    skipRow = () => {
+      const index = current;
+      const row = index === null ? null : pool?.skip(index);
+      if (index !== null && row) heard([{ index, row }]);
+      if (pool) showRunning();
     };
     start.disabled = true;
     cancel.disabled = false;
     exportCsv.disabled = true;
     setProgress(0, total);
-    const size = Math.max(1, Math.min(8, (navigator.hardwareConcurrency || 2) - 1));
+    // A worker a core: the page's thread only draws the table, once a frame.
+    const size = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
     pool = new GradePool(handins, cls.teacher, {
-      row: record,
+      rows: heard,
       failed: (message) => finish(`Grading stopped: ${message}`),
     });
-    showPage();
+    table.reset(rows, true);
+    tick();
     status.textContent = `Grading ${total.toLocaleString('en-US')} hand-ins on this machine…`;
     pool.start(size).catch((e: unknown) => finish(`Grading could not start: ${core.message(e)}`));
   });
+
+  /** Skips the row shown as being graded (set for each grading). */
+  let skipRow = () => {};
+  skip.addEventListener('click', () => skipRow());
 
   cancel.addEventListener('click', () => {
     const done = rows.reduce((n, r) => n + (r ? 1 : 0), 0);
@@ -328,62 +291,9 @@ export function setupGrade(page: PageContext) {
     if (pool) finish('Cancelled.');
   });
 
-  exportCsv.addEventListener('click', () => {
+  exportCsv.addEventListener('click', async () => {
+    // The rows were read and graded in workers: the page's own copy of the lab writes the CSV.
+    await loadLab();
     if (graded) download('kumiki-grades.csv', gradeTableCsv(JSON.stringify(rows.filter(Boolean)), graded.teacher), 'text/csv');
   });
-}
-
-/** A row not graded yet: still to come, or left when grading was cancelled. */
-function pendingRow(handin: number, grading: boolean): HTMLTableRowElement {
-  return el(
-    'tr',
-    { class: 'pending' },
-    el('td', { text: String(handin) }),
-    el('td', { colspan: String(COLUMNS - 1), class: 'hint', text: grading ? 'being graded…' : 'not graded' }),
-  );
-}
-
-/** Text a student wrote (a name, an answer), isolated from the table's direction and cut, whole on hover. */
-function studentText(text: { shown: string; full: string }): HTMLElement {
-  return el('bdi', { dir: 'auto', title: text.full !== text.shown ? text.full : undefined, text: text.shown });
-}
-
-function tableRow(r: GradeRow): HTMLTableRowElement {
-  const v = verdict(r);
-  const metrics = isGraded(r)
-    ? Object.entries(r.goal_metrics)
-        .map(([k, value]) => `${k.replace(/_/g, ' ')} ${formatNumber(value)}`)
-        .join(', ')
-    : '';
-  const open = r.link
-    ? el('a', {
-        href: r.link.startsWith('http') ? r.link : `${location.pathname}${r.link.startsWith('#') ? '' : '#'}${r.link}`,
-        target: '_blank',
-        rel: 'noopener',
-        text: 'open',
-        'aria-label': `Open hand-in ${r.handin}`,
-      })
-    : '';
-  const parts = partsText(r);
-  const points = el('td', { class: 'grade-points' }, pointsText(r));
-  if (parts.length) points.append(el('ul', {}, ...parts.map((p) => el('li', { text: p }))));
-  const answer = answerText(r);
-  const answerCell = el('td', { class: 'grade-answer' });
-  if (answer.shown) answerCell.append(studentText(answer));
-  const said = recordText(r);
-  if (said) answerCell.append(el('span', { class: 'hint', text: said }));
-  return el(
-    'tr',
-    { class: v === 'could not be graded' ? 'error' : v === 'met' ? 'met' : v === 'over budget' ? 'over' : 'unmet' },
-    el('td', { text: String(r.handin) }),
-    el('td', { class: 'grade-student' }, studentText(nameText(studentOf(r)))),
-    el('td', { class: 'grade-verdict', text: v }),
-    points,
-    el('td', { text: isGraded(r) ? r.steps.toLocaleString('en-US') : '' }),
-    el('td', { text: metrics }),
-    el('td', { class: 'reason', text: reasonText(r) }),
-    answerCell,
-    el('td', {}, el('code', { text: isGraded(r) ? r.hash : '' })),
-    el('td', {}, open),
-  );
 }

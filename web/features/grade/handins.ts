@@ -19,9 +19,12 @@ const TITLE_CHARS = 2000;
 
 export const isGraded = (r: GradeRow): r is GradedRow => !('error' in r);
 
-/** The verdict in words: met, not met, over budget (stopped at the exercise's budget), or could not be graded. */
-export function verdict(r: GradeRow): 'met' | 'not met' | 'over budget' | 'could not be graded' {
-  if (!isGraded(r)) return 'could not be graded';
+/** How a row the teacher skipped says so: its error starts with it (in the table and the CSV). */
+export const SKIPPED = 'skipped: ';
+
+/** The verdict in words: met, not met, over budget (stopped at the exercise's budget), could not be graded, or skipped by the teacher. */
+export function verdict(r: GradeRow): 'met' | 'not met' | 'over budget' | 'could not be graded' | 'skipped' {
+  if (!isGraded(r)) return r.error.startsWith(SKIPPED) ? 'skipped' : 'could not be graded';
   if (r.over_budget) return 'over budget';
   return r.met ? 'met' : 'not met';
 }
@@ -72,9 +75,10 @@ export interface Tally {
   unmet: number;
   over: number;
   errors: number;
+  skipped: number;
 }
 
-export const emptyTally = (): Tally => ({ met: 0, unmet: 0, over: 0, errors: 0 });
+export const emptyTally = (): Tally => ({ met: 0, unmet: 0, over: 0, errors: 0, skipped: 0 });
 
 /** Counts a row in the tally. */
 export function count(tally: Tally, r: GradeRow) {
@@ -82,11 +86,13 @@ export function count(tally: Tally, r: GradeRow) {
   if (v === 'met') tally.met++;
   else if (v === 'not met') tally.unmet++;
   else if (v === 'over budget') tally.over++;
+  else if (v === 'skipped') tally.skipped++;
   else tally.errors++;
 }
 
-/** The tally in words, as `kumiki check` says it: "1 met, 3 not met (1 over budget), 1 could not be graded". */
+/** The tally in words, as `kumiki check` says it: "1 met, 3 not met (1 over budget), 1 could not be graded", then the rows skipped. */
 export function tallyText(t: Tally): string {
   const over = t.over ? ` (${t.over} over budget)` : '';
-  return `${t.met} met, ${t.unmet + t.over} not met${over}, ${t.errors} could not be graded`;
+  const skipped = t.skipped ? `, ${t.skipped} skipped` : '';
+  return `${t.met} met, ${t.unmet + t.over} not met${over}, ${t.errors} could not be graded${skipped}`;
 }

@@ -1,20 +1,132 @@
 // A grading worker: grades the rows of a class's file it is handed, each as `kumiki check` does
-// (the core's grading::grade through the lab's grade_row): replayed within the exercise's budget
-// and judged by the class's exercise. It runs the page's compiled lab module, handed over at
-// setup: nothing is downloaded, and no hand-in leaves the machine.
-import init, { grade_row, panic_message } from '../../pkg/kumiki_lab.js';
+// (the core's grading::Replay through the lab's RowReplay): replayed within the exercise's budget
+// in slices, and judged by the class's exercise. Between slices it reads its clock (the time
+// budget) and, for a row that runs long, tells the page which row and which step, so the teacher
+// sees a stuck row and can skip it (the page then ends this worker). Graded rows go back in
+// batches, not one message a row. It runs the page's compiled lab module, handed over at setup:
+// nothing is downloaded, and no hand-in leaves the machine.
+import type { ClassExercise, Handin2 } from '../../contract.gen';
+import init, { class_exercise, panic_message, RowReplay, read_handins } from '../../pkg/kumiki_lab.js';
 import type { GradeRow } from './handins';
 
 export type ToGradeWorker =
   /** The lab module, and the class's exercise (its `ClassExercise.teacher`). */
   | { type: 'setup'; module: WebAssembly.Module; teacher: string }
-  /** A row of the class's file (a `Handin2` record as JSON), the `index`-th of the table. */
-  | { type: 'grade'; index: number; handin: string };
-export type FromGradeWorker = { type: 'ready' } | { type: 'graded'; index: number; row: GradeRow } | { type: 'failed'; message: string };
+  /** Rows of the class's file (`Handin2` records as JSON), each with its place in the table. */
+  | { type: 'grade'; rows: { index: number; handin: string }[] }
+  /** A class's file to read, and the teacher's exercise (null: the one most hand-ins carry). */
+  | { type: 'read'; bytes: Uint8Array; exercise: string | null };
+export type FromGradeWorker =
+  | { type: 'ready' }
+  /** Rows graded since the last batch, in the order they were handed out. */
+  | { type: 'graded'; rows: { index: number; row: GradeRow }[] }
+  /** The row this worker has been replaying for a while, and its step. */
+  | { type: 'running'; index: number; steps: number }
+  | { type: 'failed'; message: string }
+  /**
+   * The file's hand-ins (each `Handin2` as JSON: strings cross to the page far faster than 10,000
+   * objects), their students' names, and the class's exercise; or why not (`exercise`: the
+   * exercise is what is wrong).
+   */
+  | { type: 'read'; handins: string[]; students: string[]; cls: ClassExercise | null }
+  | { type: 'refused'; message: string; exercise: boolean };
+
+/** Graded rows are sent at least this often, in milliseconds (and whenever the worker runs out of rows). */
+const BATCH_MS = 50;
+/** A row running longer than this, in milliseconds, is reported, and again this often. */
+const REPORT_MS = 250;
+/** The first slice of a row, in steps; a slice shorter than SLICE_MS doubles the next, up to MAX_SLICE. */
+const FIRST_SLICE = 64;
+const SLICE_MS = 10;
+const MAX_SLICE = 1 << 16;
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (m: FromGradeWorker) => scope.postMessage(m);
 let teacher = '';
+/** Rows handed out and not graded yet, in order. */
+const queue: { index: number; handin: string }[] = [];
+/** Rows graded and not sent yet. */
+let graded: { index: number; row: GradeRow }[] = [];
+let sent = 0;
+let working = false;
+
+/** Sends the rows graded so far. */
+function flush() {
+  if (graded.length) post({ type: 'graded', rows: graded });
+  graded = [];
+  sent = performance.now();
+}
+
+/** Grades one row in slices within its time budget, reporting it when it runs long. */
+function gradeOne(index: number, handin: string): GradeRow {
+  const started = performance.now();
+  const replay = new RowReplay(handin, teacher);
+  const budget = replay.time_budget();
+  let slice = FIRST_SLICE;
+  let reported = started;
+  for (;;) {
+    const before = performance.now();
+    if (replay.advance(slice)) return replay.finish(false) as GradeRow;
+    const now = performance.now();
+    if (budget !== undefined && (now - started) / 1000 > budget) return replay.finish(true) as GradeRow;
+    if (now - before < SLICE_MS) slice = Math.min(slice * 2, MAX_SLICE);
+    if (now - reported > REPORT_MS) {
+      reported = now;
+      // The rows graded before it go first: the page then knows this one is the one running.
+      flush();
+      post({ type: 'running', index, steps: replay.steps() });
+    }
+  }
+}
+
+/** Grades the queue; messages that arrive meanwhile (more rows) wait for it, as the page expects. */
+function work() {
+  working = true;
+  while (queue.length) {
+    const { index, handin } = queue.shift() as { index: number; handin: string };
+    try {
+      // Graded first, then added: a long row sends the rows before it (and replaces `graded`) as it runs.
+      const row = gradeOne(index, handin);
+      graded.push({ index, row });
+    } catch (err) {
+      // A panic stops this instance: the row is named, and the worker is not reused.
+      const panic = panic_message();
+      if (panic) {
+        flush();
+        post({ type: 'failed', message: `row ${index + 1}: ${panic}` });
+        queue.length = 0;
+        break;
+      }
+      graded.push({ index, row: { handin: index + 1, error: err instanceof Error ? err.message : String(err) } });
+    }
+    if (performance.now() - sent > BATCH_MS) flush();
+  }
+  flush();
+  working = false;
+}
+
+/** Reads a class's file and finds its exercise, off the page's thread (a class of 10,000 takes a while). */
+function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
+  const why = (err: unknown) => (err instanceof Error ? err.message : String(err));
+  let handins: Handin2[];
+  try {
+    handins = read_handins(bytes) as Handin2[];
+  } catch (err) {
+    return { type: 'refused', message: why(err), exercise: false };
+  }
+  const rows = handins.map((h) => JSON.stringify(h));
+  const students = handins.map((h) => h.student);
+  if (!handins.length) return { type: 'read', handins: rows, students, cls: null };
+  try {
+    const cls = class_exercise(
+      exercise,
+      handins.flatMap((h) => (h.link ? [h.link] : [])),
+    ) as ClassExercise;
+    return { type: 'read', handins: rows, students, cls };
+  } catch (err) {
+    return { type: 'refused', message: why(err), exercise: true };
+  }
+}
 
 scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
   const msg = e.data;
@@ -28,13 +140,10 @@ scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
     }
     return;
   }
-  try {
-    post({ type: 'graded', index: msg.index, row: grade_row(msg.handin, teacher) as GradeRow });
-  } catch (err) {
-    // A panic stops this instance: the row is named, and the worker is not reused.
-    const panic = panic_message();
-    const why = err instanceof Error ? err.message : String(err);
-    if (panic) post({ type: 'failed', message: `row ${msg.index + 1}: ${panic}` });
-    else post({ type: 'graded', index: msg.index, row: { handin: msg.index + 1, error: why } });
+  if (msg.type === 'read') {
+    post(read(msg.bytes, msg.exercise));
+    return;
   }
+  queue.push(...msg.rows);
+  if (!working) work();
 };

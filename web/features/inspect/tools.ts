@@ -169,6 +169,17 @@ export function setupTools(page: PageContext): Tools {
     refresh();
     renderDisturbanceNote();
   });
+  // A click counts from its step on: rewound past (or played past again), the exercise's answer
+  // changes, so the tools are asked again whenever the run's step crosses one of the scenario's.
+  let reached = -1;
+  session.on('frame', (frame) => {
+    if (!session.doc().exercise) return;
+    const list = (session.doc().disturbances as { at?: number }[] | undefined) ?? [];
+    const n = list.filter((d) => (d.at ?? 0) <= frame.steps).length;
+    if (n === reached) return;
+    reached = n;
+    refresh();
+  });
 
   return {
     get tool() {
@@ -183,6 +194,8 @@ export function setupTools(page: PageContext): Tools {
       return out;
     },
     async click(name, action) {
+      // Asked at the step the click is made (the run may have gone back since the last answer).
+      refresh();
       await answered();
       const why = states.get(name)?.problem ?? null;
       if (why) {

@@ -79,7 +79,8 @@ impl Teacher {
     }
 
     /// The exercise most of the hand-ins `docs` carry (each a hand-in's scenario document, as its
-    /// link holds it; ties go to the one met first). An exercise made before disturbances could be
+    /// link holds it). When two or more are carried equally often none is the class's (a student
+    /// who made their own exercise must not be graded by it): the teacher's must be given. An exercise made before disturbances could be
     /// locked does not say which disturbances are the teacher's: they are the ones most of the
     /// hand-ins that carry it have (a student's clicks are the student's own).
     pub fn from_handins(docs: impl IntoIterator<Item = Value>) -> Result<Teacher> {
@@ -118,6 +119,15 @@ impl Teacher {
                 "none of the hand-ins carries an exercise: give the teacher's exercise (its link or a lesson's name)",
             )
         })?;
+        let tied = seen.iter().filter(|c| c.count == most).count();
+        if tied > 1 {
+            return Err(Error::field(
+                "exercise",
+                format!(
+                    "the hand-ins carry {tied} different exercises equally often ({most} each), so none is the class's: give the teacher's exercise (its link or a lesson's name)"
+                ),
+            ));
+        }
         let carried = seen
             .into_iter()
             .find(|c| c.count == most)

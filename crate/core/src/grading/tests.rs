@@ -278,6 +278,12 @@ fn the_class_exercise_is_taken_from_the_hand_ins_and_a_re_authored_one_fails() {
         class.describe(),
         "“t”, which 2 of the 3 hand-ins with an exercise carry (none was given)"
     );
+    // One fair hand-in and one re-authored: neither exercise is the class's, the teacher's is asked for.
+    let tie = Teacher::from_handins([&cheat, &fair].map(|s| s.to_value()));
+    assert_eq!(
+        tie.unwrap_err().to_string(),
+        "exercise: the hand-ins carry 2 different exercises equally often (1 each), so none is the class's: give the teacher's exercise (its link or a lesson's name)"
+    );
     let g = grade(cheat, &class, &mut no_clock).unwrap();
     assert!(!g.met && g.exercise_edited);
     assert_eq!(
