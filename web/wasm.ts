@@ -7,6 +7,7 @@ import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import type { Cells, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Unpacked } from './contract.gen';
 import scenarioSchema from './scenario.schema.gen.json';
+import { LARGE_CELLS } from './sim/protocol';
 
 let compiled: Promise<WebAssembly.Module> | null = null;
 
@@ -53,8 +54,12 @@ export const unpackLink = (link: string): Unpacked => core.unpack_link(link) as 
 export const freshSeed = (): number => core.fresh_seed();
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
-/** How a scenario (its JSON) differs from the preset it is named after, each change in words (`robots: 10 → 3`); null when no preset has its name. */
-export const presetChanges = (json: string): string[] | null => (core.preset_changes(json) as string[] | undefined) ?? null;
+/**
+ * How a scenario (its JSON) differs from the preset it is named after, each change in words
+ * (`robots: 10 → 3`); null when no preset has its name, or when it is too large to read on the
+ * page's thread (its worker reads it).
+ */
+export const presetChanges = (json: string): string[] | null => (core.preset_changes(json, LARGE_CELLS) as string[] | undefined) ?? null;
 
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];

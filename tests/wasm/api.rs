@@ -2,8 +2,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use kumiki_wasm::{
-    decode_link, encode_link, fresh_seed, link_model_versions, model_query, preset_json,
-    unpack_link, Draft, Sim,
+    decode_link, encode_link, fresh_seed, link_model_versions, model_query, preset_changes,
+    preset_json, unpack_link, Draft, Sim,
 };
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -175,6 +175,33 @@ fn large_scenarios_are_measured_and_packed_without_building() {
         .as_string()
         .unwrap();
     assert_eq!(scenario, json);
+}
+
+#[wasm_bindgen_test]
+fn an_edited_preset_says_what_changed_unless_too_large_to_read_on_the_pages_thread() {
+    let limit = f64::from(1 << 18);
+    let edited = |set: &str| {
+        let mut doc: serde_json::Value =
+            serde_json::from_str(&preset_json("amas-L").unwrap()).unwrap();
+        let set: serde_json::Value = serde_json::from_str(set).unwrap();
+        for (k, v) in set.as_object().unwrap() {
+            doc[k] = v.clone();
+        }
+        doc.to_string()
+    };
+    let changes = preset_changes(&edited(r#"{"robots": 3}"#), limit).unwrap();
+    assert_eq!(
+        serde_wasm_bindgen::from_value::<Vec<String>>(changes).unwrap(),
+        ["robots: 5 → 3"]
+    );
+    // Its worker reads a large one; a name no preset has is no edited preset.
+    let large = edited(r#"{"target": {"rect": [4096, 4088]}}"#);
+    assert!(preset_changes(&large, limit).unwrap().is_null());
+    assert!(
+        preset_changes(&edited(r#"{"name": "mine", "robots": 3}"#), limit)
+            .unwrap()
+            .is_null()
+    );
 }
 
 #[wasm_bindgen_test]

@@ -11,6 +11,15 @@ import type { RecordSettings } from './record';
 
 export type { Picked, Marks as ViewMarks } from '../view.gen';
 
+/**
+ * Scenarios whose shapes span more cells than this are not checked at once: the page is told
+ * their size first, to show a notice while they are checked and built, and to ask about the
+ * memory of one that needs much (web/page/opening.ts); and the page's own thread never reads one.
+ * Checking costs about 0.2 µs a cell natively and about twice that in wasm: 2^18 cells stay well
+ * under 0.1 s on a busy machine; the largest (4096 × 4096, 64 times more) take seconds.
+ */
+export const LARGE_CELLS = 1 << 18;
+
 export type RendererChoice = 'webgl2' | 'canvas2d' | 'auto';
 
 export type CameraMove = { op: 'drag'; dx: number; dy: number; orbit: boolean } | { op: 'zoom'; factor: number; x: number; y: number } | { op: 'fit' };

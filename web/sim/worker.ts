@@ -27,7 +27,7 @@ import {
   untold,
 } from './pace';
 import { clickStates } from './clicks';
-import type { Proposed, ToWorker } from './protocol';
+import { LARGE_CELLS, type Proposed, type ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
 import { needsRules } from './rules';
 
@@ -47,15 +47,6 @@ type ViewAsked = { view: Extract<ToWorker, { type: 'view' }> | null; resize: ToW
 let viewAsked: ViewAsked = { view: null, resize: null, marks: null };
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
-
-/**
- * Scenarios whose shapes span more cells than this are not checked at once: the page is told
- * their size first, to show a notice while they are checked and built, and to ask about the
- * memory of one that needs much (web/page/opening.ts). Checking costs about 0.2 µs a cell natively
- * and about twice that in wasm: 2^18 cells stay well under 0.1 s on a busy machine; the largest
- * (4096 × 4096, 64 times more) take seconds.
- */
-const LARGE_CELLS = 1 << 18;
 
 /** The scenario in view, made once the module has started. */
 let draft: pageModule.Draft | null = null;

@@ -59,11 +59,20 @@ pub fn format_number(value: f64) -> String {
 }
 
 /// How a scenario (its JSON text) differs from the built-in scenario it is named after, each
-/// changed field in words (`robots: 5 → 3`), or `null` when no preset has its name: what a shared
-/// edited scenario says beside the preset's description.
+/// changed field in words (`robots: 5 → 3`), or `null` when no preset has its name or its shapes
+/// span more than `check_up_to_cells` cells: what a shared edited scenario says beside the
+/// preset's description. The page asks it on its own thread, where a large scenario is never read
+/// (reading one of 4096 × 4096 cells takes a second and more; its worker reads it).
 #[wasm_bindgen]
-pub fn preset_changes(scenario_json: &str) -> Result<JsValue, JsError> {
-    let s = kumiki_core::Scenario::from_json(scenario_json).map_err(js_err)?;
+pub fn preset_changes(scenario_json: &str, check_up_to_cells: f64) -> Result<JsValue, JsError> {
+    let doc: Value = serde_json::from_str(scenario_json).map_err(js_err)?;
+    let named = doc["name"].as_str().unwrap_or("");
+    if !presets::names().any(|p| p == named)
+        || kumiki_core::shape::estimate_cells(&doc) as f64 > check_up_to_cells
+    {
+        return to_js(&None::<Vec<String>>);
+    }
+    let s = kumiki_core::Scenario::from_value(doc).map_err(js_err)?;
     to_js(&presets::changes_from_preset(&s))
 }
 
