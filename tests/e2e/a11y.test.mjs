@@ -47,6 +47,9 @@ describe('accessibility audit (axe-core)', () => {
         ],
       }),
     );
+    // The description follows the text a moment after it is typed, moving what is below it: a
+    // click made meanwhile lands where Run was.
+    await page.waitForFunction(() => document.querySelector('#experiment-description').textContent.endsWith('(4 runs)'));
     await page.click('#experiment-run');
     await page.waitForFunction(() => document.querySelector('#experiment-status').textContent.startsWith('Done'), null, { timeout: 60000 });
     assert.equal(await page.locator('#experiment-plots figure').count(), 5);

@@ -379,7 +379,12 @@ test('the design form writes ranges, a Latin-hypercube sample and a stop conditi
   const { page, context, problems } = await openPage(s.browser, s.server.url);
   await page.click('#tab-experiments');
   const start = { version: 1, name: 'e2e-design', scenarios: ['amas-L'], seeds: 2, plot: { kind: 'summary', group: ['params.robots'], values: ['steps'] } };
+  await page.waitForSelector('#experiment-json:not([readonly])', { state: 'attached' });
+  const described = await page.textContent('#experiment-description');
   await edit(page, JSON.stringify(start, null, 2));
+  // The description follows the text a moment after it is typed, moving what is below it: a click
+  // made meanwhile lands where the summary was.
+  await page.waitForFunction((was) => document.querySelector('#experiment-description').textContent !== was, described);
   await page.click('#experiment-design summary');
   await page.waitForFunction(() => !document.querySelector('#experiment-design-form fieldset').disabled);
   const json = async () => JSON.parse(await page.inputValue('#experiment-json'));
