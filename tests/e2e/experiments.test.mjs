@@ -28,6 +28,23 @@ const experiment = {
 async function edit(page, text) {
   await page.$eval('details:has(#experiment-json)', (d) => (d.open = true));
   await page.fill('#experiment-json', text);
+  // The description follows the text a moment after it is typed and moves what is below it: a
+  // click made meanwhile lands where a button was. Wait until it has stood still for 0.8 s.
+  await page.waitForFunction(
+    () =>
+      new Promise((resolve) => {
+        const d = document.querySelector('#experiment-description');
+        let last = d.textContent;
+        let still = 0;
+        const t = setInterval(() => {
+          if (d.textContent !== last) [last, still] = [d.textContent, 0];
+          else if (++still >= 8) {
+            clearInterval(t);
+            resolve(true);
+          }
+        }, 100);
+      }),
+  );
 }
 
 async function downloaded(page, selector) {
