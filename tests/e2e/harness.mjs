@@ -10,18 +10,9 @@ import { fileURLToPath } from 'node:url';
 import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
 import * as wasm from '../../web/pkg/kumiki_wasm.js';
+import { DIST, TYPES } from '../../scripts/serve.mjs';
 
-export const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
-const TYPES = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.wasm': 'application/wasm',
-  '.svg': 'image/svg+xml',
-  '.json': 'application/json',
-  '.png': 'image/png',
-  '.webmanifest': 'application/manifest+json',
-};
+export { DIST };
 
 /** The headers a static host sends with every file, from the build's dist/_headers. */
 function hostHeaders() {
