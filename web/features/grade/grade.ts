@@ -11,8 +11,10 @@ import type { PageContext } from '../../page/context';
 import { byId, download, markup } from '../../widgets/dom';
 import * as core from '../../wasm';
 import dialogHtml from './dialog.html?raw';
-import { count, emptyTally, type GradeRow, nameText, tallyText } from './handins';
-import { GradePool, type ReadClass, readClass } from './pool';
+import { nameText, tallyText, verdict } from './handins';
+import { GradePool, type ReadClass } from './pool';
+import { GradedRows } from './rows';
+import type { GradedRow } from './worker';
 import { GradeTable } from './table';
 
 /** How often the table, the progress bar and the running row are drawn while grading, in milliseconds. */
@@ -48,7 +50,7 @@ export function setupGrade(page: PageContext) {
   const table = new GradeTable(byId('grade-scroller'), byId<HTMLTableElement>('grade-table'), byId('grade-rows'));
 
   let pool: GradePool | null = null;
-  let rows: GradeRow[] = [];
+  let rows = new GradedRows(0);
   /** The students' names in the class's file, for the row being graded. */
   let students: string[] = [];
   /** The row shown as being graded (the one Skip skips); null when none. */
@@ -65,10 +67,16 @@ export function setupGrade(page: PageContext) {
     input.focus();
   });
 
+  // The bar grows by scaling, on its own layer: a change of width (and its transition) laid out
+  // and painted the dialog every frame, a fifth of the page's thread while a class graded.
+  const bar = progress.firstElementChild as HTMLElement;
+  Object.assign(bar.style, { width: '100%', transformOrigin: 'left', transform: 'scaleX(0)', transition: 'none', willChange: 'transform' });
   const setProgress = (done: number, total: number) => {
     const pct = total ? (100 * done) / total : 0;
-    (progress.firstElementChild as HTMLElement).style.width = `${pct}%`;
-    progress.setAttribute('aria-valuenow', pct.toFixed(0));
+    bar.style.transform = `scaleX(${pct / 100})`;
+    // Said in whole percents: changed only when it changes (each change restyles the page).
+    const said = pct.toFixed(0);
+    if (progress.getAttribute('aria-valuenow') !== said) progress.setAttribute('aria-valuenow', said);
   };
 
   /** Shows the row running longest ("Grading row 12: Ada, step 40,000, 3.2 s"), the one Skip skips. */
@@ -83,7 +91,8 @@ export function setupGrade(page: PageContext) {
     const name = nameText(students[r.index] ?? '').shown;
     const seconds = (performance.now() - r.since) / 1000;
     const step = r.steps === null ? '' : `, step ${r.steps.toLocaleString('en-US')}`;
-    running.textContent = `Grading row ${(r.index + 1).toLocaleString('en-US')}: ${name}${step}${seconds >= 1 ? `, ${seconds.toFixed(0)} s` : ''}`;
+    const text = `Grading row ${(r.index + 1).toLocaleString('en-US')}: ${name}${step}${seconds >= 1 ? `, ${seconds.toFixed(0)} s` : ''}`;
+    if (running.textContent !== text) running.textContent = text;
   };
 
   const finish = (text: string) => {
@@ -91,7 +100,7 @@ export function setupGrade(page: PageContext) {
     pool = null;
     start.disabled = false;
     cancel.disabled = true;
-    exportCsv.disabled = !rows.some(Boolean);
+    exportCsv.disabled = rows.done === 0;
     showRunning();
     table.setGrading(false);
     status.textContent = text;
@@ -101,7 +110,7 @@ export function setupGrade(page: PageContext) {
   const refuse = (message: string) => {
     pool?.stop();
     pool = null;
-    rows = [];
+    rows = new GradedRows(0);
     graded = null;
     table.reset(rows, false);
     setProgress(0, 0);
@@ -184,10 +193,20 @@ export function setupGrade(page: PageContext) {
     let read: ReadClass;
     start.disabled = true;
     status.textContent = 'Reading the hand-ins…';
+    // A worker a core, started now: the first reads the file while the others load, then all grade.
+    const size = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
+    /** What the pool hears, set once the class is read. */
+    let heard = (_batch: GradedRow[]) => {};
+    pool?.stop();
+    const reading = new GradePool({
+      rows: (batch) => heard(batch),
+      failed: (message) => finish(`Grading stopped: ${message}`),
+    });
+    pool = reading;
     try {
-      read = await readClass(opened ? opened.bytes : new TextEncoder().encode(input.value), exerciseInput.value.trim() || null);
+      read = await reading.read(opened ? opened.bytes : new TextEncoder().encode(input.value), exerciseInput.value.trim() || null, size);
     } catch (e) {
-      refuse(`Not graded: ${core.message(e)}`);
+      if (pool === reading) refuse(`Not graded: ${core.message(e)}`);
       return;
     }
     if (read.type === 'refused') {
@@ -204,10 +223,9 @@ export function setupGrade(page: PageContext) {
     }
     showExercise(cls);
     graded = cls;
-    rows = new Array(handins.length);
-    let done = 0;
     const total = handins.length;
-    const tally = emptyTally();
+    const classRows = new GradedRows(total);
+    rows = classRows;
     // The page shows progress ten times a second, not once a batch of rows nor once a frame (each
     // frame drawn is the compositor's work too, on the cores the workers grade on): the table
     // draws only the rows in view, and the status and progress bar change then.
@@ -218,6 +236,7 @@ export function setupGrade(page: PageContext) {
     const draw = () => {
       // Finished or cancelled meanwhile: the final status stays.
       if (!pool) return;
+      const done = classRows.done;
       if (done !== shown) {
         shown = done;
         setProgress(done, total);
@@ -227,10 +246,11 @@ export function setupGrade(page: PageContext) {
       if (told !== done && performance.now() - said > 1000) {
         said = performance.now();
         told = done;
-        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(tally)}.`;
+        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(classRows.tally)}.`;
       }
-      // The row running longest changes its seconds, not its frames: shown four times a second.
-      if (performance.now() - ran > 250) {
+      // The row running longest changes its seconds, not its frames: shown twice a second (each
+      // change of text lays out and paints the page).
+      if (performance.now() - ran > 500) {
         ran = performance.now();
         showRunning();
       }
@@ -243,40 +263,27 @@ export function setupGrade(page: PageContext) {
     let told = 0;
     /** When the row running longest was last shown. */
     let ran = 0;
-    const record = (index: number, row: GradeRow) => {
-      if (rows[index]) return;
-      rows[index] = row;
-      count(tally, row);
-      done++;
-    };
-    const heard = (batch: { index: number; row: GradeRow }[]) => {
-      for (const { index, row } of batch) record(index, row);
-      if (done === total) {
+    heard = (batch) => {
+      for (const r of batch) classRows.record(r.index, r.json, r.verdict);
+      if (classRows.done === total) {
         clearTimeout(drawing);
-        setProgress(done, total);
-        finish(`${total.toLocaleString('en-US')} hand-ins: ${tallyText(tally)}.`);
+        setProgress(total, total);
+        finish(`${total.toLocaleString('en-US')} hand-ins: ${tallyText(classRows.tally)}.`);
       }
     };
     skipRow = () => {
       const index = current;
       const row = index === null ? null : pool?.skip(index);
-      if (index !== null && row) heard([{ index, row }]);
+      if (index !== null && row) heard([{ index, json: JSON.stringify(row), verdict: verdict(row) }]);
       if (pool) showRunning();
     };
-    start.disabled = true;
     cancel.disabled = false;
     exportCsv.disabled = true;
     setProgress(0, total);
-    // A worker a core: the page's thread only draws the table, once a frame.
-    const size = Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2));
-    pool = new GradePool(handins, cls.teacher, {
-      rows: heard,
-      failed: (message) => finish(`Grading stopped: ${message}`),
-    });
-    table.reset(rows, true);
+    table.reset(classRows, true);
     tick();
     status.textContent = `Grading ${total.toLocaleString('en-US')} hand-ins on this machine…`;
-    pool.start(size).catch((e: unknown) => finish(`Grading could not start: ${core.message(e)}`));
+    reading.grade(handins, cls.teacher);
   });
 
   /** Skips the row shown as being graded (set for each grading). */
@@ -284,7 +291,7 @@ export function setupGrade(page: PageContext) {
   skip.addEventListener('click', () => skipRow());
 
   cancel.addEventListener('click', () => {
-    const done = rows.reduce((n, r) => n + (r ? 1 : 0), 0);
+    const done = rows.done;
     finish(`Cancelled after ${done.toLocaleString('en-US')} of ${rows.length.toLocaleString('en-US')} hand-ins; those graded are in the table and the export.`);
   });
   dialog.addEventListener('close', () => {
@@ -294,6 +301,6 @@ export function setupGrade(page: PageContext) {
   exportCsv.addEventListener('click', async () => {
     // The rows were read and graded in workers: the page's own copy of the lab writes the CSV.
     await loadLab();
-    if (graded) download('kumiki-grades.csv', gradeTableCsv(JSON.stringify(rows.filter(Boolean)), graded.teacher), 'text/csv');
+    if (graded) download('kumiki-grades.csv', gradeTableCsv(rows.toJson(), graded.teacher), 'text/csv');
   });
 }

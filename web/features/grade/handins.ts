@@ -22,8 +22,11 @@ export const isGraded = (r: GradeRow): r is GradedRow => !('error' in r);
 /** How a row the teacher skipped says so: its error starts with it (in the table and the CSV). */
 export const SKIPPED = 'skipped: ';
 
+/** A row's verdict in words. */
+export type Verdict = 'met' | 'not met' | 'over budget' | 'could not be graded' | 'skipped';
+
 /** The verdict in words: met, not met, over budget (stopped at the exercise's budget), could not be graded, or skipped by the teacher. */
-export function verdict(r: GradeRow): 'met' | 'not met' | 'over budget' | 'could not be graded' | 'skipped' {
+export function verdict(r: GradeRow): Verdict {
   if (!isGraded(r)) return r.error.startsWith(SKIPPED) ? 'skipped' : 'could not be graded';
   if (r.over_budget) return 'over budget';
   return r.met ? 'met' : 'not met';
@@ -82,7 +85,11 @@ export const emptyTally = (): Tally => ({ met: 0, unmet: 0, over: 0, errors: 0, 
 
 /** Counts a row in the tally. */
 export function count(tally: Tally, r: GradeRow) {
-  const v = verdict(r);
+  countVerdict(tally, verdict(r));
+}
+
+/** Counts a row of verdict `v` in the tally. */
+export function countVerdict(tally: Tally, v: Verdict) {
   if (v === 'met') tally.met++;
   else if (v === 'not met') tally.unmet++;
   else if (v === 'over budget') tally.over++;

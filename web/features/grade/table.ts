@@ -13,6 +13,12 @@ const OVERSCAN = 12;
 /** A row's height in pixels until one is drawn and measured (static/style.css fixes it). */
 const GUESS_PX = 45;
 
+/** The rows a table shows: row `i`, or undefined while it is not graded. */
+export interface TableRows {
+  readonly length: number;
+  at(index: number): GradeRow | undefined;
+}
+
 /** A drawn row: its element and what it shows (the row, or which kind of row not graded yet). */
 interface Drawn {
   tr: HTMLTableRowElement;
@@ -20,7 +26,7 @@ interface Drawn {
 }
 
 export class GradeTable {
-  private rows: (GradeRow | undefined)[] = [];
+  private rows: TableRows = { length: 0, at: () => undefined };
   private grading = false;
   private drawn = new Map<number, Drawn>();
   private readonly top = spacer();
@@ -38,8 +44,8 @@ export class GradeTable {
     this.table.setAttribute('aria-rowcount', '1');
   }
 
-  /** A new table of `rows` (holes: not graded yet), scrolled to its top. */
-  reset(rows: (GradeRow | undefined)[], grading: boolean) {
+  /** A new table of `rows`, scrolled to its top. */
+  reset(rows: TableRows, grading: boolean) {
     this.rows = rows;
     this.grading = grading;
     for (const d of this.drawn.values()) d.tr.remove();
@@ -77,7 +83,7 @@ export class GradeTable {
     }
     let after: ChildNode = this.top;
     for (let i = first; i < end; i++) {
-      const shows = this.rows[i] ?? (this.grading ? 'pending' : 'not graded');
+      const shows = this.rows.at(i) ?? (this.grading ? 'pending' : 'not graded');
       let d = this.drawn.get(i);
       if (d && d.shows !== shows) {
         const tr = rowElement(i, shows);

@@ -3,15 +3,25 @@
 // in slices, and judged by the class's exercise. Between slices it reads its clock (the time
 // budget) and, for a row that runs long, tells the page which row and which step, so the teacher
 // sees a stuck row and can skip it (the page then ends this worker). Graded rows go back in
-// batches, not one message a row. It runs the page's compiled lab module, handed over at setup:
-// nothing is downloaded, and no hand-in leaves the machine.
+// batches, not one message a row, each row as JSON with its verdict: the page parses only the rows
+// it shows. The first worker of a pool reads the class's file first. It runs the page's compiled
+// lab module, handed over at setup: nothing is downloaded, and no hand-in leaves the machine.
 import type { ClassExercise, Handin2 } from '../../contract.gen';
 import init, { class_exercise, panic_message, RowReplay, read_handins } from '../../pkg/kumiki_lab.js';
-import type { GradeRow } from './handins';
+import { type GradeRow, type Verdict, verdict } from './handins';
+
+/** A graded row as it crosses to the page: its place in the table, the row as JSON, and its verdict (for the tally). */
+export interface GradedRow {
+  index: number;
+  json: string;
+  verdict: Verdict;
+}
 
 export type ToGradeWorker =
-  /** The lab module, and the class's exercise (its `ClassExercise.teacher`). */
-  | { type: 'setup'; module: WebAssembly.Module; teacher: string }
+  /** The lab module. */
+  | { type: 'setup'; module: WebAssembly.Module }
+  /** The class's exercise (its `ClassExercise.teacher`), before the first rows. */
+  | { type: 'teacher'; teacher: string }
   /** Rows of the class's file (`Handin2` records as JSON), each with its place in the table. */
   | { type: 'grade'; rows: { index: number; handin: string }[] }
   /** A class's file to read, and the teacher's exercise (null: the one most hand-ins carry). */
@@ -19,20 +29,20 @@ export type ToGradeWorker =
 export type FromGradeWorker =
   | { type: 'ready' }
   /** Rows graded since the last batch, in the order they were handed out. */
-  | { type: 'graded'; rows: { index: number; row: GradeRow }[] }
+  | { type: 'graded'; rows: GradedRow[] }
   /** The row this worker has been replaying for a while, and its step. */
   | { type: 'running'; index: number; steps: number }
   | { type: 'failed'; message: string }
   /**
-   * The file's hand-ins (each `Handin2` as JSON: strings cross to the page far faster than 10,000
-   * objects), their students' names, and the class's exercise; or why not (`exercise`: the
-   * exercise is what is wrong).
+   * The file's hand-ins (each `Handin2` as JSON, one after another in one text, `ends` saying
+   * where each ends), their students' names, and the class's exercise; or why not (`exercise`:
+   * the exercise is what is wrong).
    */
-  | { type: 'read'; handins: string[]; students: string[]; cls: ClassExercise | null }
+  | { type: 'read'; handins: string; ends: Uint32Array; students: string[]; cls: ClassExercise | null }
   | { type: 'refused'; message: string; exercise: boolean };
 
 /** Graded rows are sent at least this often, in milliseconds (and whenever the worker runs out of rows). */
-const BATCH_MS = 50;
+const BATCH_MS = 100;
 /** A row running longer than this, in milliseconds, is reported, and again this often. */
 const REPORT_MS = 250;
 /** The first slice of a row, in steps; a slice shorter than SLICE_MS doubles the next, up to MAX_SLICE. */
@@ -43,10 +53,12 @@ const MAX_SLICE = 1 << 16;
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 const post = (m: FromGradeWorker) => scope.postMessage(m);
 let teacher = '';
+/** The lab module's instantiation (a file to read may arrive before it is done). */
+let loaded: Promise<unknown> = Promise.resolve();
 /** Rows handed out and not graded yet, in order. */
 const queue: { index: number; handin: string }[] = [];
 /** Rows graded and not sent yet. */
-let graded: { index: number; row: GradeRow }[] = [];
+let graded: GradedRow[] = [];
 let sent = 0;
 let working = false;
 
@@ -79,6 +91,11 @@ function gradeOne(index: number, handin: string): GradeRow {
   }
 }
 
+/** Adds a graded row to the next batch. */
+function add(index: number, row: GradeRow) {
+  graded.push({ index, json: JSON.stringify(row), verdict: verdict(row) });
+}
+
 /** Grades the queue; messages that arrive meanwhile (more rows) wait for it, as the page expects. */
 function work() {
   working = true;
@@ -86,8 +103,7 @@ function work() {
     const { index, handin } = queue.shift() as { index: number; handin: string };
     try {
       // Graded first, then added: a long row sends the rows before it (and replaces `graded`) as it runs.
-      const row = gradeOne(index, handin);
-      graded.push({ index, row });
+      add(index, gradeOne(index, handin));
     } catch (err) {
       // A panic stops this instance: the row is named, and the worker is not reused.
       const panic = panic_message();
@@ -97,7 +113,7 @@ function work() {
         queue.length = 0;
         break;
       }
-      graded.push({ index, row: { handin: index + 1, error: err instanceof Error ? err.message : String(err) } });
+      add(index, { handin: index + 1, error: err instanceof Error ? err.message : String(err) });
     }
     if (performance.now() - sent > BATCH_MS) flush();
   }
@@ -115,14 +131,21 @@ function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
     return { type: 'refused', message: why(err), exercise: false };
   }
   const rows = handins.map((h) => JSON.stringify(h));
+  const ends = new Uint32Array(rows.length);
+  let end = 0;
+  for (const [i, r] of rows.entries()) {
+    end += r.length;
+    ends[i] = end;
+  }
   const students = handins.map((h) => h.student);
-  if (!handins.length) return { type: 'read', handins: rows, students, cls: null };
+  const read = { type: 'read' as const, handins: rows.join(''), ends, students };
+  if (!handins.length) return { ...read, cls: null };
   try {
     const cls = class_exercise(
       exercise,
       handins.flatMap((h) => (h.link ? [h.link] : [])),
     ) as ClassExercise;
-    return { type: 'read', handins: rows, students, cls };
+    return { ...read, cls };
   } catch (err) {
     return { type: 'refused', message: why(err), exercise: true };
   }
@@ -132,16 +155,28 @@ scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
   const msg = e.data;
   if (msg.type === 'setup') {
     try {
-      await init({ module_or_path: msg.module });
-      teacher = msg.teacher;
+      loaded = init({ module_or_path: msg.module });
+      await loaded;
       post({ type: 'ready' });
     } catch (err) {
       post({ type: 'failed', message: err instanceof Error ? err.message : String(err) });
     }
     return;
   }
+  if (msg.type === 'teacher') {
+    teacher = msg.teacher;
+    return;
+  }
   if (msg.type === 'read') {
-    post(read(msg.bytes, msg.exercise));
+    try {
+      await loaded;
+    } catch {
+      // Said at setup.
+      return;
+    }
+    const answer = read(msg.bytes, msg.exercise);
+    if (answer.type === 'read') scope.postMessage(answer, [answer.ends.buffer]);
+    else post(answer);
     return;
   }
   queue.push(...msg.rows);
