@@ -5,17 +5,30 @@
 // Meanwhile the page's main thread is watched: every long task (a PerformanceObserver of
 // "longtask": any task over 50 ms), and a key pressed every 100 ms whose delay until its
 // handler ran is read from the Event Timing API (events slower than 16 ms are reported) and
-// from the round trip of the key press itself.
+// from the round trip of the key press itself. Under load (`busy`), as many processes as the
+// machine has cores spin meanwhile, as another program (a build, a video call) would: the page's
+// thread must still answer.
+import { spawn } from 'node:child_process';
+import { availableParallelism } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import { launch, openPage, serve } from '../tests/e2e/harness.mjs';
 
 /** How often a key is pressed while the class grades, in milliseconds. */
 const PRESS_MS = 100;
 
-/** Grades `file` (a form's export of `count` hand-ins) in the page by `exercise`; its seconds and the main thread's delays. */
-export async function gradeInPage(file, count, exercise) {
+/** Processes that spin on every core until killed. */
+function spinners() {
+  return Array.from({ length: availableParallelism() }, () => spawn(process.execPath, ['-e', 'for (;;) {}'], { stdio: 'ignore' }));
+}
+
+/**
+ * Grades `file` (a form's export of `count` hand-ins) in the page by `exercise`; its seconds and the
+ * main thread's delays. `busy`: with every core kept busy by other processes meanwhile.
+ */
+export async function gradeInPage(file, count, exercise, { busy = false } = {}) {
   const server = await serve('/');
   const browser = await launch();
+  let spinning = [];
   try {
     const { page, context } = await openPage(browser, server.url);
     await page.click('#open-gallery');
@@ -46,6 +59,7 @@ export async function gradeInPage(file, count, exercise) {
       document.querySelector('#grade-exercise').addEventListener('keydown', () => undefined);
     });
     const done = `${count.toLocaleString('en-US')} hand-ins:`;
+    if (busy) spinning = spinners();
     const t0 = performance.now();
     await page.click('#grade-start');
     // Keys pressed while it grades (Shift: it types nothing), each press's round trip timed.
@@ -69,6 +83,7 @@ export async function gradeInPage(file, count, exercise) {
       { timeout: 1_800_000, polling: 200 },
     );
     const seconds = (performance.now() - t0) / 1000;
+    for (const p of spinning) p.kill();
     pressing = false;
     await presses;
     const status = await page.textContent('#grade-status');
@@ -77,6 +92,8 @@ export async function gradeInPage(file, count, exercise) {
     await context.close();
     return {
       count,
+      busy,
+      spinners: spinning.length,
       seconds,
       workers,
       status,
@@ -90,6 +107,7 @@ export async function gradeInPage(file, count, exercise) {
       keyRoundTripMs: Math.max(0, ...roundTrips),
     };
   } finally {
+    for (const p of spinning) p.kill();
     await browser.close();
     await server.close();
   }

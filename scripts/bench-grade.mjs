@@ -4,8 +4,9 @@
 // (native, on every core): a hand-in's time in both, and a class of 10,000 graded by `kumiki check`
 // from a form's CSV export, the whole command timed (reading the file, finding the class's
 // exercise, grading, writing the table), and the same file graded in the page's Grade view
-// (scripts/bench-grade-page.mjs): the page's time over the CLI's, and the page's main thread's
-// longest task and input delay while it grades, against their goals (issue 39).
+// (scripts/bench-grade-page.mjs), once on the machine as it is and once with every core kept busy
+// by other processes: the page's time over the CLI's, and the page's main thread's longest task
+// and input delay while it grades, against their goals (issue 39).
 // Alone: node scripts/bench-grade.mjs (KUMIKI_BIN: the CLI to time, default target/release/kumiki).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
@@ -78,16 +79,21 @@ export async function benchGrade(wasm, lab, root, count = 60) {
   const classSeconds = median(3, () => check(form)) / 1000;
   const { gradeInPage } = await import('./bench-grade-page.mjs');
   const page = await gradeInPage(form, CLASS, LESSON);
+  const busy = await gradeInPage(form, CLASS, LESSON, { busy: true });
   rmSync(dir, { recursive: true });
   const pageOverCli = page.seconds / classSeconds;
-  const mainThreadMs = Math.max(page.longestTaskMs, page.inputDelayMs);
+  // On a machine as it is, no task over the goal and no input waiting that long; with every core
+  // busy, a task is stretched by the other processes' turns, but input must still be answered.
+  const mainThreadMs = Math.max(page.longestTaskMs, page.inputDelayMs, busy.inputDelayMs);
   return {
     count,
     wasmMs,
     nativeMs,
     classCount: CLASS,
     classSeconds,
+    cli: process.env.KUMIKI_BIN ?? 'target/release/kumiki',
     page,
+    busy,
     pageOverCli,
     mainThreadMs,
     goals: { pageOverCli: PAGE_OVER_CLI_GOAL, mainThreadMs: MAIN_THREAD_GOAL_MS },
@@ -99,16 +105,20 @@ export async function benchGrade(wasm, lab, root, count = 60) {
 export function gradingReport(g) {
   const p = g.page;
   const verdict = (ok) => (ok ? 'met' : 'NOT met');
+  const mainThread = (p) =>
+    `longest task ${p.longestTaskMs.toFixed(0)} ms (${p.longTasks} over 50 ms), ` +
+    `(at ${p.tasks.map(([t, d]) => `${(t / 1000).toFixed(1)} s: ${d} ms`).join(', ') || 'none'}), ` +
+    `longest input delay ${p.inputDelayMs.toFixed(0)} ms (${p.slowInputs} input events over 16 ms, of ${p.keyPresses} key presses; longest round trip of a press ${p.keyRoundTripMs.toFixed(0)} ms)`;
   return [
     `grading (${g.count} hand-ins of lesson-amas-robots): ${g.wasmMs.toFixed(1)} ms a hand-in in wasm (one worker's share), ` +
       `${g.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core`,
-    `a class of ${g.classCount.toLocaleString('en-US')} from a form's CSV export: ${g.classSeconds.toFixed(2)} s with kumiki check (median of 3), ` +
+    `a class of ${g.classCount.toLocaleString('en-US')} from a form's CSV export: ${g.classSeconds.toFixed(2)} s with kumiki check (${g.cli}, median of 3), ` +
       `${p.seconds.toFixed(2)} s in the page on ${p.workers} workers (one run): ${g.pageOverCli.toFixed(2)} times the CLI's ` +
       `(goal: at most ${g.goals.pageOverCli}, ${verdict(g.pageOverCli <= g.goals.pageOverCli)})`,
-    `  the page's main thread while grading: longest task ${p.longestTaskMs.toFixed(0)} ms (${p.longTasks} over 50 ms), ` +
-      `(at ${p.tasks.map(([t, d]) => `${(t / 1000).toFixed(1)} s: ${d} ms`).join(', ') || 'none'}), ` +
-      `longest input delay ${p.inputDelayMs.toFixed(0)} ms (${p.slowInputs} input events over 16 ms, of ${p.keyPresses} key presses; longest round trip of a press ${p.keyRoundTripMs.toFixed(0)} ms) ` +
-      `(goal: under ${g.goals.mainThreadMs} ms, ${verdict(g.mainThreadMs < g.goals.mainThreadMs)})`,
+    `  the page's main thread while grading: ${mainThread(p)}`,
+    `  with ${g.busy.spinners} processes spinning on the machine's cores meanwhile: ${g.busy.seconds.toFixed(2)} s in the page, ${mainThread(g.busy)}`,
+    `  goal: the page's tasks and input delays under ${g.goals.mainThreadMs} ms, and its input delay with the cores busy: ` +
+      `${g.mainThreadMs.toFixed(0)} ms, ${verdict(g.mainThreadMs < g.goals.mainThreadMs)}`,
     `  the page's tally: ${p.status}`,
   ].join('\n');
 }

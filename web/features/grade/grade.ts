@@ -17,8 +17,10 @@ import { GradedRows } from './rows';
 import type { GradedRow } from './worker';
 import { GradeTable } from './table';
 
-/** How often the table, the progress bar and the running row are drawn while grading, in milliseconds. */
-const DRAW_MS = 100;
+/** How often the progress bar and the rows in view are drawn while grading, in milliseconds. */
+const DRAW_MS = 250;
+/** How often the tally and the row running longest are said while grading, in milliseconds. */
+const SAY_MS = 1000;
 /** The largest text file shown in the box, in bytes; a larger one is graded as it is, unshown. */
 const BOX_BYTES = 1 << 20;
 
@@ -226,9 +228,10 @@ export function setupGrade(page: PageContext) {
     const total = handins.length;
     const classRows = new GradedRows(total);
     rows = classRows;
-    // The page shows progress ten times a second, not once a batch of rows nor once a frame (each
-    // frame drawn is the compositor's work too, on the cores the workers grade on): the table
-    // draws only the rows in view, and the status and progress bar change then.
+    // The page shows progress four times a second, not once a batch of rows nor once a frame: each
+    // change is the page's thread's work (style, layout, paint) and the compositor's, on the cores
+    // the workers grade on, and a key pressed meanwhile waits for it. The bar scales on its own
+    // layer; the table redraws only when a row in view was graded; the texts change once a second.
     let drawing = 0;
     const tick = () => {
       drawing = window.setTimeout(() => requestAnimationFrame(draw), DRAW_MS);
@@ -240,18 +243,15 @@ export function setupGrade(page: PageContext) {
       if (done !== shown) {
         shown = done;
         setProgress(done, total);
-        table.draw();
+        table.refresh();
       }
-      // The tally is a live region: said at most once a second, not once a frame.
-      if (told !== done && performance.now() - said > 1000) {
+      // The tally (a live region) and the row running longest (its seconds): once a second.
+      if (performance.now() - said > SAY_MS) {
         said = performance.now();
-        told = done;
-        status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(classRows.tally)}.`;
-      }
-      // The row running longest changes its seconds, not its frames: shown twice a second (each
-      // change of text lays out and paints the page).
-      if (performance.now() - ran > 500) {
-        ran = performance.now();
+        if (told !== done) {
+          told = done;
+          status.textContent = `Graded ${done.toLocaleString('en-US')} of ${total.toLocaleString('en-US')}: ${tallyText(classRows.tally)}.`;
+        }
         showRunning();
       }
       tick();
@@ -261,8 +261,6 @@ export function setupGrade(page: PageContext) {
     let said = 0;
     /** The rows graded when the tally was last said. */
     let told = 0;
-    /** When the row running longest was last shown. */
-    let ran = 0;
     heard = (batch) => {
       for (const r of batch) classRows.record(r.index, r.json, r.verdict);
       if (classRows.done === total) {

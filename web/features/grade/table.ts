@@ -66,6 +66,16 @@ export class GradeTable {
     if (!this.frame) this.frame = requestAnimationFrame(() => this.draw());
   }
 
+  /** Draws now if a row in view was graded since it was drawn (the rows in view only are looked at). */
+  refresh() {
+    for (const [i, d] of this.drawn) {
+      if ((this.rows.at(i) ?? d.shows) !== d.shows) {
+        this.draw();
+        return;
+      }
+    }
+  }
+
   /** Draws the rows in view now: new ones added, those scrolled away removed, those graded since redrawn. */
   draw() {
     if (this.frame) cancelAnimationFrame(this.frame);

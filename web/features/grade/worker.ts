@@ -34,11 +34,11 @@ export type FromGradeWorker =
   | { type: 'running'; index: number; steps: number }
   | { type: 'failed'; message: string }
   /**
-   * The file's hand-ins (each `Handin2` as JSON, one after another in one text, `ends` saying
+   * The file's hand-ins (each `Handin2` as JSON, one after another as UTF-8, `ends` saying
    * where each ends), their students' names, and the class's exercise; or why not (`exercise`:
    * the exercise is what is wrong).
    */
-  | { type: 'read'; handins: string; ends: Uint32Array; students: string[]; cls: ClassExercise | null }
+  | { type: 'read'; handins: Uint8Array; ends: Uint32Array; students: string[]; cls: ClassExercise | null }
   | { type: 'refused'; message: string; exercise: boolean };
 
 /** Graded rows are sent at least this often, in milliseconds (and whenever the worker runs out of rows). */
@@ -130,15 +130,18 @@ function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
   } catch (err) {
     return { type: 'refused', message: why(err), exercise: false };
   }
-  const rows = handins.map((h) => JSON.stringify(h));
+  const encoder = new TextEncoder();
+  const rows = handins.map((h) => encoder.encode(JSON.stringify(h)));
   const ends = new Uint32Array(rows.length);
   let end = 0;
   for (const [i, r] of rows.entries()) {
     end += r.length;
     ends[i] = end;
   }
+  const utf8 = new Uint8Array(end);
+  for (const [i, r] of rows.entries()) utf8.set(r, i ? ends[i - 1] : 0);
   const students = handins.map((h) => h.student);
-  const read = { type: 'read' as const, handins: rows.join(''), ends, students };
+  const read = { type: 'read' as const, handins: utf8, ends, students };
   if (!handins.length) return { ...read, cls: null };
   try {
     const cls = class_exercise(
@@ -175,7 +178,7 @@ scope.onmessage = async (e: MessageEvent<ToGradeWorker>) => {
       return;
     }
     const answer = read(msg.bytes, msg.exercise);
-    if (answer.type === 'read') scope.postMessage(answer, [answer.ends.buffer]);
+    if (answer.type === 'read') scope.postMessage(answer, [answer.handins.buffer, answer.ends.buffer]);
     else post(answer);
     return;
   }
