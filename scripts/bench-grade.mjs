@@ -10,7 +10,7 @@
 // Alone: node scripts/bench-grade.mjs (KUMIKI_BIN: the CLI to time, default target/release/kumiki).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { loadavg, tmpdir } from 'node:os';
 import { join } from 'node:path';
 
 const LESSON = 'lesson-amas-robots';
@@ -76,10 +76,13 @@ export async function benchGrade(wasm, lab, root, count = 60) {
   const nativeMs = (performance.now() - t0) / count;
   const form = join(dir, 'class.csv');
   writeFileSync(form, formExport(handins(wasm, CLASS)));
+  // The machine's load average (one minute) before each timing: on a shared machine the CLI's and
+  // the page's times, and the page's delays, follow what else runs.
+  const cliLoad = loadavg()[0];
   const classSeconds = median(3, () => check(form)) / 1000;
   const { gradeInPage } = await import('./bench-grade-page.mjs');
-  const page = await gradeInPage(form, CLASS, LESSON);
-  const busy = await gradeInPage(form, CLASS, LESSON, { busy: true });
+  const page = { load: loadavg()[0], ...(await gradeInPage(form, CLASS, LESSON)) };
+  const busy = { load: loadavg()[0], ...(await gradeInPage(form, CLASS, LESSON, { busy: true })) };
   rmSync(dir, { recursive: true });
   const pageOverCli = page.seconds / classSeconds;
   // On a machine as it is, no task over the goal and no input waiting that long; with every core
@@ -92,6 +95,7 @@ export async function benchGrade(wasm, lab, root, count = 60) {
     classCount: CLASS,
     classSeconds,
     cli: process.env.KUMIKI_BIN ?? 'target/release/kumiki',
+    cliLoad,
     page,
     busy,
     pageOverCli,
@@ -112,11 +116,11 @@ export function gradingReport(g) {
   return [
     `grading (${g.count} hand-ins of lesson-amas-robots): ${g.wasmMs.toFixed(1)} ms a hand-in in wasm (one worker's share), ` +
       `${g.nativeMs.toFixed(1)} ms a hand-in with kumiki check on every core`,
-    `a class of ${g.classCount.toLocaleString('en-US')} from a form's CSV export: ${g.classSeconds.toFixed(2)} s with kumiki check (${g.cli}, median of 3), ` +
-      `${p.seconds.toFixed(2)} s in the page on ${p.workers} workers (one run): ${g.pageOverCli.toFixed(2)} times the CLI's ` +
+    `a class of ${g.classCount.toLocaleString('en-US')} from a form's CSV export: ${g.classSeconds.toFixed(2)} s with kumiki check (${g.cli}, median of 3, load average ${g.cliLoad.toFixed(1)}), ` +
+      `${p.seconds.toFixed(2)} s in the page on ${p.workers} workers (one run, load average ${p.load.toFixed(1)}): ${g.pageOverCli.toFixed(2)} times the CLI's ` +
       `(goal: at most ${g.goals.pageOverCli}, ${verdict(g.pageOverCli <= g.goals.pageOverCli)})`,
     `  the page's main thread while grading: ${mainThread(p)}`,
-    `  with ${g.busy.spinners} processes spinning on the machine's cores meanwhile: ${g.busy.seconds.toFixed(2)} s in the page, ${mainThread(g.busy)}`,
+    `  with ${g.busy.spinners} processes spinning on the machine's cores meanwhile (load average ${g.busy.load.toFixed(1)} before): ${g.busy.seconds.toFixed(2)} s in the page, ${mainThread(g.busy)}`,
     `  goal: the page's tasks and input delays under ${g.goals.mainThreadMs} ms, and its input delay with the cores busy: ` +
       `${g.mainThreadMs.toFixed(0)} ms, ${verdict(g.mainThreadMs < g.goals.mainThreadMs)}`,
     `  the page's tally: ${p.status}`,
