@@ -164,8 +164,11 @@ export class GradePool {
   private handOut(member: Member) {
     const handins = this.handins;
     if (this.stopped || !handins || member.held.length >= AHEAD) return;
+    // Near the end, smaller chunks: no worker is left holding rows while another has none.
+    const left = this.returned.length + handins.length - this.next;
+    const size = Math.max(1, Math.min(CHUNK, Math.ceil(left / (2 * this.members.length))));
     const rows: { index: number; handin: string }[] = [];
-    while (rows.length < CHUNK) {
+    while (rows.length < size) {
       const index = this.take();
       if (index === undefined) break;
       rows.push({ index, handin: handins.at(index) });

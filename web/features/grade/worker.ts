@@ -144,10 +144,9 @@ function read(bytes: Uint8Array, exercise: string | null): FromGradeWorker {
   const read = { type: 'read' as const, handins: utf8, ends, students };
   if (!handins.length) return { ...read, cls: null };
   try {
-    const cls = class_exercise(
-      exercise,
-      handins.flatMap((h) => (h.link ? [h.link] : [])),
-    ) as ClassExercise;
+    // The links are read only to find the exercise most of them carry: none when the teacher names it.
+    const links = exercise?.trim() ? [] : handins.flatMap((h) => (h.link ? [h.link] : []));
+    const cls = class_exercise(exercise, links) as ClassExercise;
     return { ...read, cls };
   } catch (err) {
     return { type: 'refused', message: why(err), exercise: true };
