@@ -275,13 +275,21 @@ export function setupGrade(page: PageContext) {
       if (index !== null && row) heard([{ index, json: JSON.stringify(row), verdict: verdict(row) }]);
       if (pool) showRunning();
     };
+    // The workers first; the table in a task of its own, so the page's thread never holds
+    // receiving the class and drawing its first rows in one.
+    reading.grade(handins, cls.teacher);
+    await new Promise((r) => setTimeout(r));
+    if (pool !== reading) {
+      // Finished or stopped meanwhile: its status stays.
+      table.reset(classRows, false);
+      return;
+    }
     cancel.disabled = false;
     exportCsv.disabled = true;
     setProgress(0, total);
     table.reset(classRows, true);
     tick();
     status.textContent = `Grading ${total.toLocaleString('en-US')} hand-ins on this machine…`;
-    reading.grade(handins, cls.teacher);
   });
 
   /** Skips the row shown as being graded (set for each grading). */
