@@ -19,12 +19,24 @@ function openAddress(page: PageContext): Promise<boolean> {
   return claim.opened ?? Promise.resolve(false);
 }
 
+/** Mounts the features that come `later` once the first frame is drawn, each as its code arrives. */
+function mountLater(page: PageContext, features: readonly Feature[]) {
+  let started = false;
+  page.session.on('frame', () => {
+    if (started) return;
+    started = true;
+    for (const feature of features.filter((f) => f.later))
+      Promise.resolve(feature.mount(page)).catch((e: unknown) => page.banner.report(`Part of the page could not be loaded: ${core.message(e)}`));
+  });
+}
+
 export async function start(page: PageContext, features: readonly Feature[]) {
   const { session, banner, prefs, embedded } = page;
   await core.loadCore();
   // The worker reports its renderer when its view is ready; the first scenario need not wait.
   void page.useRenderer(prefs.renderer);
-  for (const feature of features) feature.mount(page);
+  for (const feature of features) if (!feature.later) void feature.mount(page);
+  mountLater(page, features);
   page.tabs.select(!embedded && page.tabs.all.includes(prefs.tab) ? prefs.tab : 'run');
   // An embedded page shows its link or the default scenario, never what this browser last edited.
   if (embedded) {

@@ -2,10 +2,24 @@
 // metrics (kumiki_core::series) and sends the charted one merged into about one point per pixel:
 // per point, the least and greatest value over its steps, drawn as a band, so a one-step dip
 // still shows however fast the run went. Comparing two runs (web/features/compare/), it draws the
-// second run's band beside the first's, each named in words in the legend under it.
-import uPlot from 'uplot';
-import 'uplot/dist/uPlot.min.css';
+// second run's band beside the first's, each named in words in the legend under it. uPlot (code
+// and style) is fetched when the first chart is drawn, after the first frame: not part of the
+// page's first load.
+import type uPlot from 'uplot';
 import type { ChartBand } from '../contract.gen';
+
+type UPlot = typeof uPlot;
+/** uPlot once fetched; `loading` while it is being fetched. */
+let UPlotClass: UPlot | null = null;
+let loading: Promise<unknown> | null = null;
+
+/** uPlot, or null while it is still arriving (then `loading` resolves when it has). */
+function loadedUPlot(): UPlot | null {
+  loading ??= Promise.all([import('uplot'), import('uplot/dist/uPlot.min.css')]).then(([m]) => {
+    UPlotClass = m.default;
+  });
+  return UPlotClass;
+}
 
 const COLOR = '#2b6cb0';
 /** The second run of a comparison; its name in the legend says which is which, not the colour alone. */
@@ -110,6 +124,12 @@ export class MetricChart {
 
   render() {
     if (!this.dirty || !this.root.isConnected || this.root.offsetParent === null) return;
+    const uPlot = loadedUPlot();
+    if (!uPlot) {
+      // Drawn once uPlot has arrived, with the band as it stands then.
+      void loading?.then(() => this.render());
+      return;
+    }
     this.dirty = false;
     const aligned = (b: ChartBand | null): uPlot.AlignedData => (b ? [Array.from(b.steps), Array.from(b.max), Array.from(b.min)] : [[], [], []]);
     const runs = this.runs;
