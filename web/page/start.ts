@@ -5,11 +5,9 @@ import * as core from '../wasm';
 import type { Feature, PageContext } from './context';
 import { openedScenario, openingScenario, savedScenario } from './store';
 
-const DEFAULT_PRESET = 'amas-L';
-
-/** Opens the default preset, as a fresh start (not an edit, not in the undo history). */
+/** Opens the default preset (amas-L: scripts/catalog.mjs), as a fresh start (not an edit, not in the undo history). */
 export function openDefault(page: PageContext): Promise<boolean> {
-  return page.session.open(core.presetJson(DEFAULT_PRESET), { record: false, opens: true });
+  return page.session.open(core.defaultScenario(), { record: false, opens: true });
 }
 
 /** Opens the link in the address, if a feature takes it; true when one did. */
