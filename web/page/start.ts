@@ -2,6 +2,7 @@
 // link in the address, else the one being edited before the page was closed, else the default.
 // A first visit opens on what Kumiki is and where to start (the welcome feature's).
 import * as core from '../wasm';
+import { whenIdle } from '../widgets/idle';
 import type { Feature, PageContext } from './context';
 import { openedScenario, openingScenario, savedScenario } from './store';
 
@@ -17,14 +18,30 @@ function openAddress(page: PageContext): Promise<boolean> {
   return claim.opened ?? Promise.resolve(false);
 }
 
-/** Mounts the features that come `later` once the first frame is drawn, each as its code arrives. */
+/** The longest the features that come `later` wait, after the first frame, for an idle moment. */
+const LATER_MS = 1000;
+
+/**
+ * Mounts the features that come `later`, each as its code arrives: in the first idle moment after
+ * the first frame, so that their code does not compete with it; at once after it when the address
+ * holds a link (it may be theirs) or a tab is shown meanwhile (it may be theirs).
+ */
 function mountLater(page: PageContext, features: readonly Feature[]) {
-  let started = false;
-  page.session.on('frame', () => {
-    if (started) return;
-    started = true;
+  let state: 'loading' | 'drawn' | 'mounted' = 'loading';
+  const mount = () => {
+    if (state === 'mounted') return;
+    state = 'mounted';
     for (const feature of features.filter((f) => f.later))
       Promise.resolve(feature.mount(page)).catch((e: unknown) => page.banner.report(`Part of the page could not be loaded: ${core.message(e)}`));
+  };
+  page.session.on('frame', () => {
+    if (state !== 'loading') return;
+    state = 'drawn';
+    if (location.hash) mount();
+    else whenIdle(mount, LATER_MS);
+  });
+  page.events.on('tab', () => {
+    if (state === 'drawn') mount();
   });
 }
 

@@ -3,21 +3,26 @@
 // per point, the least and greatest value over its steps, drawn as a band, so a one-step dip
 // still shows however fast the run went. Comparing two runs (web/features/compare/), it draws the
 // second run's band beside the first's, each named in words in the legend under it. uPlot (code
-// and style) is fetched when the first chart is drawn, after the first frame: not part of the
-// page's first load.
+// and style) is fetched in the first idle moment after the first chart is asked for (the first
+// frame): not part of the page's first load, and not competing with it.
 import type uPlot from 'uplot';
 import type { ChartBand } from '../contract.gen';
+import { whenIdle } from './idle';
 
 type UPlot = typeof uPlot;
+/** The longest uPlot waits, after the first chart is asked for, for an idle moment. */
+const UPLOT_MS = 500;
 /** uPlot once fetched; `loading` while it is being fetched. */
 let UPlotClass: UPlot | null = null;
 let loading: Promise<unknown> | null = null;
 
 /** uPlot, or null while it is still arriving (then `loading` resolves when it has). */
 function loadedUPlot(): UPlot | null {
-  loading ??= Promise.all([import('uplot'), import('uplot/dist/uPlot.min.css')]).then(([m]) => {
-    UPlotClass = m.default;
-  });
+  loading ??= new Promise<void>((idle) => whenIdle(idle, UPLOT_MS))
+    .then(() => Promise.all([import('uplot'), import('uplot/dist/uPlot.min.css')]))
+    .then(([m]) => {
+      UPlotClass = m.default;
+    });
   return UPlotClass;
 }
 
