@@ -26,7 +26,7 @@ const LATER_MS = 1000;
  * the first frame, so that their code does not compete with it; at once after it when the address
  * holds a link (it may be theirs) or a tab is shown meanwhile (it may be theirs).
  */
-function mountLater(page: PageContext, features: readonly Feature[]) {
+function mountLater(page: PageContext, features: readonly Feature[], linked: boolean) {
   let state: 'loading' | 'drawn' | 'mounted' = 'loading';
   const mount = () => {
     if (state === 'mounted') return;
@@ -37,7 +37,7 @@ function mountLater(page: PageContext, features: readonly Feature[]) {
   page.session.on('frame', () => {
     if (state !== 'loading') return;
     state = 'drawn';
-    if (location.hash) mount();
+    if (linked) mount();
     else whenIdle(mount, LATER_MS);
   });
   page.events.on('tab', () => {
@@ -51,7 +51,8 @@ export async function start(page: PageContext, features: readonly Feature[]) {
   // The worker reports its renderer when its view is ready; the first scenario need not wait.
   void page.useRenderer(prefs.renderer);
   for (const feature of features) if (!feature.later) void feature.mount(page);
-  mountLater(page, features);
+  // The address as the page opened it: the first scenario may take it.
+  mountLater(page, features, location.hash !== '');
   page.tabs.select(!embedded && page.tabs.all.includes(prefs.tab) ? prefs.tab : 'run');
   // An embedded page shows its link or the default scenario, never what this browser last edited.
   if (embedded) {

@@ -22,7 +22,7 @@ import { explain } from './suggest';
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
 
-export function setupExperiments(page: PageContext) {
+export function setupExperiments(page: PageContext, address = location.hash) {
   const { prefs, events } = page;
   page.tabs.section('experiments', panelHtml, 10);
   const savePrefs = page.persistPrefs;
@@ -132,7 +132,7 @@ export function setupExperiments(page: PageContext) {
 
   // Until the lab module is loaded, nothing can run, be shared, be chosen or be typed: the load
   // fills the editor, and would overwrite what was typed meanwhile.
-  const startLink = location.hash.startsWith('#x1.') ? location.hash : null;
+  const startLink = address.startsWith('#x1.') ? address : null;
   runButton.disabled = select.disabled = linkButton.disabled = true;
   editor.readOnly = true;
   let loaded: Promise<boolean> | null = null;
