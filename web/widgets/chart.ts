@@ -40,6 +40,8 @@ export class MetricChart {
   private runs: RunLabels | null = null;
   private label = '';
   private dirty = false;
+  /** A render is asked for once uPlot has arrived. */
+  private awaitingUPlot = false;
 
   /** `legend` names the two runs' series while comparing. */
   constructor(
@@ -132,7 +134,8 @@ export class MetricChart {
     const uPlot = loadedUPlot();
     if (!uPlot) {
       // Drawn once uPlot has arrived, with the band as it stands then.
-      void loading?.then(() => this.render());
+      if (!this.awaitingUPlot) void loading?.then(() => this.render());
+      this.awaitingUPlot = true;
       return;
     }
     this.dirty = false;
