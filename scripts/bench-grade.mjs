@@ -9,7 +9,7 @@
 // and input delay while it grades, against their goals (issue 39).
 // Alone: node scripts/bench-grade.mjs (KUMIKI_BIN: the CLI to time, default target/release/kumiki).
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { join } from 'node:path';
 
@@ -21,9 +21,10 @@ export const PAGE_OVER_CLI_GOAL = 3;
 /** ...its main thread's tasks and input delays below this, in milliseconds. */
 export const MAIN_THREAD_GOAL_MS = 100;
 
-/** `count` hand-in links of the lesson, made with the loaded wasm module. */
+/** `count` hand-in links of the lesson (its text as the page fetches it: scripts/catalog.mjs), made with the loaded wasm module. */
 export function handins(wasm, count) {
-  const lesson = JSON.parse(wasm.lesson_json(LESSON));
+  const catalog = JSON.parse(readFileSync(new URL('../web/pkg/catalog.json', import.meta.url), 'utf8'));
+  const lesson = JSON.parse(catalog.lessonText[LESSON]);
   return Array.from({ length: count }, (_, i) => {
     const doc = structuredClone(lesson);
     doc.name = `Student ${i + 1}`;

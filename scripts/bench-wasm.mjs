@@ -11,6 +11,8 @@ import * as wasmRules from '../web/pkg/kumiki_wasm_rules.js';
 
 const root = new URL('..', import.meta.url);
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_bg.wasm', root))) });
+/** The built-in scenarios' texts, as the page fetches them (its module leaves them out: scripts/catalog.mjs). */
+const presetText = JSON.parse(readFileSync(fileURLToPath(new URL('web/pkg/catalog.json', root)), 'utf8')).presetText;
 // The page's second simulation module, with the rule scripts' engine: the workloads with rules
 // run in it, as the page runs a scenario with rules.
 wasmRules.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_rules_bg.wasm', root))) });
@@ -28,7 +30,7 @@ const median = (xs) => {
  * way the page's form changes them (a Draft, which checks the result) and `kumiki bench` does.
  */
 export function scenarioJson(spec) {
-  const json = typeof spec.scenario === 'string' ? wasm.preset_json(spec.scenario) : JSON.stringify(spec.scenario);
+  const json = typeof spec.scenario === 'string' ? presetText[spec.scenario] : JSON.stringify(spec.scenario);
   const set = { ...spec.set };
   if (spec.rules) {
     // "paper": every slot of the model; a list: the slots it names.

@@ -57,7 +57,7 @@ console.log(`\npage's wasm: ${(wasmBytes.length / 1024).toFixed(1)} KB, ${gzKb.t
 const rulesBytes = readFileSync(`${root}web/pkg/kumiki_wasm_rules_bg.wasm`);
 const rulesGzKb = gzipSync(rulesBytes, { level: 9 }).length / 1024;
 console.log(
-  `rules module's wasm: ${(rulesBytes.length / 1024).toFixed(1)} KB, ${rulesGzKb.toFixed(1)} KB gzipped: the engine adds ` +
+  `rules module's wasm: ${(rulesBytes.length / 1024).toFixed(1)} KB, ${rulesGzKb.toFixed(1)} KB gzipped: the engine and the built-in scenarios add ` +
     `${((rulesBytes.length - wasmBytes.length) / 1024).toFixed(1)} KB, ${(rulesGzKb - gzKb).toFixed(1)} KB gzipped (loaded only for a scenario with rules)`,
 );
 for (const { spec, native, wasm: w } of rows.filter((r) => r.spec.rules)) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the three wasm packages into web/pkg/: the page's module, kumiki_wasm{.js,_bg.wasm} (what
-# the page needs to open: runs, the view, the scenario in view, links, presets, lessons); the same
-# module with the rule scripts' engine, kumiki_wasm_rules{.js,_bg.wasm}, which the page loads only
+# the page needs to open: runs, the view, the scenario in view, links; without the built-in
+# scenarios and lessons, which scripts/catalog.mjs writes as JSON for the page to fetch when it
+# needs them: --no-default-features leaves out crate/wasm's `catalog`); the same module with the
+# built-in scenarios and the rule scripts' engine, kumiki_wasm_rules{.js,_bg.wasm}, which the page loads only
 # for a scenario that carries rules (docs/rules.md); and the lab module, kumiki_lab{.js,_bg.wasm}
 # (experiments, the report's claims, grading, with the engine), which the page loads only when it
 # needs it. Two cargo builds: the page's module alone, without the engine, then the rules module
@@ -21,8 +23,9 @@ package() {
   echo "wasm: web/pkg/$2_bg.wasm ($(wc -c < "web/pkg/$2_bg.wasm") bytes)"
 }
 
-cargo build -p kumiki-wasm --target wasm32-unknown-unknown --release --quiet
+cargo build -p kumiki-wasm --no-default-features --target wasm32-unknown-unknown --release --quiet
 package kumiki_wasm kumiki_wasm
 cargo build -p kumiki-wasm -p kumiki-lab --features kumiki-wasm/rules --target wasm32-unknown-unknown --release --quiet
 package kumiki_wasm kumiki_wasm_rules
 package kumiki_lab kumiki_lab
+node scripts/catalog.mjs

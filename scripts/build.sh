@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the static site into dist/ (relative URLs: it works from any sub-path) and prints the
-# gzipped sizes of the two wasm modules (the page's against its budget, and the lab's) and the JavaScript.
+# gzipped sizes of its wasm modules and JavaScript (scripts/sizes.mjs). The first load's budget is
+# one number of bytes on the wire before interactive (scripts/budget.mjs), which `npm run bench`
+# measures in a browser (scripts/bench-load.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

@@ -13,7 +13,9 @@ import { launch, serve } from '../tests/e2e/harness.mjs';
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
 const [preset = 'amas-L', steps = '120', overlay = '', file = 'docs/screenshot.png', size = '1366x768'] = process.argv.slice(2);
 const [width, height] = size.split('x').map(Number);
-const link = wasm.encode_link(preset.startsWith('lesson-') ? wasm.lesson_json(preset) : wasm.preset_json(preset));
+// The built-in scenarios and lessons, as the page fetches them (its module leaves them out: scripts/catalog.mjs).
+const catalog = JSON.parse(readFileSync(fileURLToPath(new URL('../web/pkg/catalog.json', import.meta.url)), 'utf8'));
+const link = wasm.encode_link(preset.startsWith('lesson-') ? catalog.lessonText[preset] : catalog.presetText[preset]);
 const server = await serve('/');
 const browser = await launch();
 const page = await (await browser.newContext({ viewport: { width, height }, deviceScaleFactor: 1 })).newPage();

@@ -24,6 +24,8 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 
 const root = new URL('..', import.meta.url).pathname;
+/** The built-in scenarios, as the page fetches them (its module leaves them out: scripts/catalog.mjs). */
+const catalog = JSON.parse(readFileSync(`${root}web/pkg/catalog.json`, 'utf8'));
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(`--${name}`);
   return i > 0 ? process.argv[i + 1] : fallback;
@@ -87,8 +89,8 @@ function nativeSoak() {
 }
 
 function wasmSoak(model, preset, exports) {
-  let seed = JSON.parse(wasm.preset_json(preset)).seed;
-  const open = () => new wasm.Sim(JSON.stringify({ ...JSON.parse(wasm.preset_json(preset)), seed }));
+  let seed = JSON.parse(catalog.presetText[preset]).seed;
+  const open = () => new wasm.Sim(JSON.stringify({ ...JSON.parse(catalog.presetText[preset]), seed }));
   let sim = open();
   let taken = 0;
   let runs = 1;
@@ -121,9 +123,9 @@ function wasmSoak(model, preset, exports) {
 /** Each model's preset with the most lattice cells, the first by name on a tie (as `kumiki soak`). */
 function largestPresets() {
   const best = new Map();
-  for (const { name, model } of wasm.presets()) {
+  for (const { name, model } of catalog.presets) {
     if (only && model !== only) continue;
-    const sim = new wasm.Sim(wasm.preset_json(name));
+    const sim = new wasm.Sim(catalog.presetText[name]);
     const cells = sim.layout().dims.reduce((a, d) => a * Math.max(1, d), 1);
     sim.free();
     if (!best.has(model) || cells > best.get(model).cells) best.set(model, { model, preset: name, cells });

@@ -1,11 +1,14 @@
 // The main thread's own wasm instance, for what the page asks beside the scenario in view:
-// presets, lessons, links unpacked, metric tables, the models' helper calls and the lattices'
+// links unpacked, metric tables, the models' helper calls and the lattices'
 // geometry for the editors. The scenario in view and its runs live in the simulation worker
 // (web/sim/); experiments, the report's claims and grading are the lab module's (web/lab/),
-// loaded when a panel needs them.
+// loaded when a panel needs them. The built-in scenarios and lessons are not in the page's module:
+// they come as JSON (web/pkg/catalog.json, scripts/catalog.mjs), imported when first asked for,
+// and the scenario a first visit opens with the page's script.
 import init, * as core from './pkg/kumiki_wasm.js';
 import wasmUrl from './pkg/kumiki_wasm_bg.wasm?url';
 import type { Cells, LatticeKind, LessonInfo, MetricInfo, PresetInfo, Unpacked } from './contract.gen';
+import defaultScenarioText from './pkg/default-scenario.json?raw';
 import scenarioSchema from './scenario.schema.gen.json';
 import { LARGE_CELLS } from './sim/protocol';
 
@@ -42,10 +45,34 @@ export function message(e: unknown): string {
 
 /** A number as every figure, table and export shows it: the core's one rule (crate/core/src/plot/number.rs). */
 export const formatNumber = (v: number): string => core.format_number(v);
-export const presets = (): PresetInfo[] => core.presets() as PresetInfo[];
-export const presetJson = (name: string): string => core.preset_json(name);
-export const lessons = (): LessonInfo[] => core.lessons() as LessonInfo[];
-export const lessonJson = (name: string): string => core.lesson_json(name);
+
+/** The built-in scenarios and lessons: the gallery's lists, and each one's text by name. */
+export interface Catalogue {
+  presets: PresetInfo[];
+  lessons: LessonInfo[];
+  presetText: Record<string, string>;
+  lessonText: Record<string, string>;
+}
+let catalogue: Promise<Catalogue> | null = null;
+/** The built-in scenarios and lessons, fetched once, when first asked for: no part of the first load. */
+export function loadCatalogue(): Promise<Catalogue> {
+  catalogue ??= import('./pkg/catalog.json').then(
+    (m) => m.default as Catalogue,
+    (e: unknown) => {
+      catalogue = null;
+      throw e;
+    },
+  );
+  return catalogue;
+}
+/** The text of the scenario a first visit opens (web/page/start.ts), which comes with the page's script. */
+export const defaultScenario = (): string => defaultScenarioText;
+/** The text of the lesson `name`. */
+export async function lessonJson(name: string): Promise<string> {
+  const text = (await loadCatalogue()).lessonText[name];
+  if (text === undefined) throw new Error(`no lesson is named '${name}'`);
+  return text;
+}
 /** The most cells a shape may span in the page; a scenario over it is refused. */
 export const pageShapeCells = (): number => core.page_shape_cells();
 /** A link's scenario JSON, not yet validated, and the model versions that made and read it. */
@@ -55,11 +82,16 @@ export const freshSeed = (): number => core.fresh_seed();
 /** A goal in words, for students; undefined when it does not parse. */
 export const goalWords = (text: string): string | undefined => core.goal_words(text);
 /**
- * How a scenario (its JSON) differs from the preset it is named after, each change in words
- * (`robots: 10 → 3`); null when no preset has its name, or when it is too large to read on the
- * page's thread (its worker reads it).
+ * How a scenario (its JSON, named `name`) differs from the preset it is named after, each change
+ * in words (`robots: 10 → 3`), with that preset's text; null when no preset has its name, or when
+ * it is too large to read on the page's thread (its worker reads it).
  */
-export const presetChanges = (json: string): string[] | null => (core.preset_changes(json, LARGE_CELLS) as string[] | undefined) ?? null;
+export async function presetChanges(json: string, name: string): Promise<{ changes: string[]; preset: string } | null> {
+  const preset = (await loadCatalogue()).presetText[name];
+  if (preset === undefined) return null;
+  const changes = (core.scenario_changes(preset, json, LARGE_CELLS) as string[] | undefined) ?? null;
+  return changes && { changes, preset };
+}
 
 /** A model's metrics: name, unit and a one-sentence explanation (docs/metrics.md). */
 export const metricTable = (model: string): MetricInfo[] => core.metric_table(model) as MetricInfo[];

@@ -173,6 +173,8 @@ test('an edited experiment travels by link and by file, survives a reload, and e
   assert.match(link, /#x1\./);
   const other = await openPage(s.browser, link);
   await other.page.waitForFunction(() => document.querySelector('#tab-experiments').getAttribute('aria-selected') === 'true');
+  // The tab shows as soon as the experiments are mounted (after the first frame); the lab module fills it once it has arrived.
+  await other.page.waitForFunction(() => document.querySelector('#experiment-json').value !== '');
   assert.deepEqual(JSON.parse(await other.page.inputValue('#experiment-json')), edited);
   const linked = await runToCsv(other.page);
   assert.match(

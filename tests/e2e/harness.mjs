@@ -9,7 +9,8 @@ import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { after, before } from 'node:test';
 import { chromium } from 'playwright-core';
-import * as wasm from '../../web/pkg/kumiki_wasm.js';
+// The rules module: the page's module with the built-in scenarios and lessons (the page's own leaves them out).
+import * as wasm from '../../web/pkg/kumiki_wasm_rules.js';
 import { DIST, TYPES } from '../../scripts/serve.mjs';
 
 export { DIST };
@@ -162,7 +163,7 @@ export function session(prefix = '/') {
 
 /** The wasm package, loaded in Node, for tests that build scenarios and links themselves. */
 export function loadWasm() {
-  wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
+  wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../../web/pkg/kumiki_wasm_rules_bg.wasm', import.meta.url))) });
   return wasm;
 }
 

@@ -19,6 +19,7 @@ import type { View } from '../../web/render/view';
 import type { SimClient, SimEvents } from '../../web/sim/client';
 import type { ClickState, Proposed, ToWorker } from '../../web/sim/protocol';
 import { Banner } from '../../web/widgets/banner';
+import type { Catalogue } from '../../web/wasm';
 
 const root = (path: string) => resolve(__dirname, '../..', path);
 
@@ -291,8 +292,10 @@ export function testPage(features: Feature[], { rules = false }: { rules?: boole
   return { page, worker, until };
 }
 
+/** The built-in scenarios and lessons as the page fetches them (web/pkg/catalog.json: scripts/catalog.mjs). */
+export const catalog = JSON.parse(readFileSync(root('web/pkg/catalog.json'), 'utf8')) as Catalogue;
+
 /** A built-in scenario's text. */
-export const preset = (name: string): string => {
-  startCore();
-  return wasm.preset_json(name);
-};
+export const preset = (name: string): string => catalog.presetText[name] ?? '';
+/** A lesson's text. */
+export const lesson = (name: string): string => catalog.lessonText[name] ?? '';

@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { FEATURES } from '../../web/features/index';
 import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { preset, startCore, testPage } from './page';
+import { catalog, preset, startCore, testPage } from './page';
 
 const $ = <T extends HTMLElement = HTMLElement>(selector: string) => {
   const e = document.querySelector<T>(selector);
@@ -26,12 +26,12 @@ async function page(text = preset('amas-L')) {
 
 describe('the gallery', () => {
   it('lists every lesson and built-in scenario, each titled in words with its code name beside it, and filters them', async () => {
-    await page();
+    const { until } = await page();
     $('#open-scenarios').click();
-    expect($<HTMLDialogElement>('#gallery').open).toBe(true);
-    startCore();
-    expect(all('#gallery-list [data-preset]').length).toBe(wasm.presets().length);
-    expect(all('#gallery-list [data-lesson]').length).toBe(wasm.lessons().length);
+    // It opens once the catalogue (web/pkg/catalog.json) has arrived.
+    await until(() => $<HTMLDialogElement>('#gallery').open, 'the gallery');
+    expect(all('#gallery-list [data-preset]').length).toBe(catalog.presets.length);
+    expect(all('#gallery-list [data-lesson]').length).toBe(catalog.lessons.length);
     const card = $('#gallery-list [data-preset="fracta-repair"]');
     expect([card.querySelector('strong')?.textContent, card.querySelector('.card-code')?.textContent]).toEqual(['A triangle repairs itself', 'fracta-repair']);
     // Each card has a place for its picture, for the picture worker to fill as it comes into view.
@@ -45,6 +45,7 @@ describe('the gallery', () => {
   it('opens a chosen scenario, and its name in words heads the page', async () => {
     const { until } = await page();
     $('#open-scenarios').click();
+    await until(() => $<HTMLDialogElement>('#gallery').open, 'the gallery');
     $('#gallery-list [data-preset="cubes-light"]').click();
     await until(() => $('#scenario-code').textContent === 'cubes-light', 'the scenario');
     expect([$('#scenario-name').textContent, $('#scenario-model').textContent, document.title]).toEqual([
@@ -146,7 +147,7 @@ describe('the About tab', () => {
 describe('every built-in scenario', () => {
   it('every chobie preset opens with its robots, terrain and no error', async () => {
     startCore();
-    const chobie = (wasm.presets() as { name: string; model: string }[]).filter((p) => p.model === 'chobie').map((p) => p.name);
+    const chobie = catalog.presets.filter((p) => p.model === 'chobie').map((p) => p.name);
     expect(chobie.length).toBeGreaterThanOrEqual(11);
     const { page: p, until } = await page();
     for (const name of chobie) {
@@ -166,7 +167,7 @@ describe('every built-in scenario', () => {
   it('each opens in the page with its legend, its key metrics and its chart, and no message', async () => {
     startCore();
     const { page: p, until } = await page();
-    for (const { name, model } of wasm.presets() as { name: string; model: string }[]) {
+    for (const { name, model } of catalog.presets) {
       expect(await p.session.open(preset(name), { opens: true }), name).toBe(true);
       await until(() => $('#scenario-code').textContent === name, name);
       expect($('#scenario-model').textContent, name).toBe(model);

@@ -6,7 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { handinRecord, partText } from '../../web/features/exercise/exercise';
 import { FEATURES } from '../../web/features/index';
 import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { testPage } from './page';
+import { lesson, testPage } from './page';
 
 const $ = <T extends HTMLElement = HTMLElement>(selector: string) => {
   const e = document.querySelector<T>(selector);
@@ -17,7 +17,7 @@ const parts = () => [...document.querySelectorAll('#exercise-parts li')].map((li
 
 /** lesson-amas-robots with points for three parts and a question. */
 function creditLesson() {
-  const doc = JSON.parse(wasm.lesson_json('lesson-amas-robots'));
+  const doc = JSON.parse(lesson('lesson-amas-robots'));
   doc.exercise.credit = [
     { goal: 'completed', points: 5 },
     { goal: 'steps <= 300', points: 3 },

@@ -6,8 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { FEATURES } from '../../web/features/index';
 import { toolText } from '../../web/features/inspect/tools';
-import * as wasm from '../../web/pkg/kumiki_wasm.js';
-import { preset, testPage } from './page';
+import { lesson, preset, testPage } from './page';
 
 const $ = <T extends HTMLElement = HTMLElement>(selector: string) => {
   const e = document.querySelector<T>(selector);
@@ -99,7 +98,7 @@ describe('click tools under an exercise', () => {
   });
 
   it("a lesson's locked tool says why and is not taken up; the scenario stays the teacher's", async () => {
-    const { page, worker, until } = await opened(wasm.lesson_json('lesson-amas-heatmap'));
+    const { page, worker, until } = await opened(lesson('lesson-amas-heatmap'));
     await until(() => tool('dismantle').getAttribute('aria-disabled') === 'true', 'the lock');
     const before = page.session.scenario;
     tool('dismantle').click();

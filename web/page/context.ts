@@ -75,6 +75,12 @@ export interface Feature {
   name: string;
   /** Its tab, when it has one (labelled so); other features may add sections to it. */
   tab?: string;
-  /** Sets the feature up, once, before the first scenario opens. */
-  mount(page: PageContext): void;
+  /**
+   * Not on the first screen: mounted once the first frame is drawn, its code fetched then (its
+   * `mount` imports it), so that it is no part of the first load. It catches up at mount with what
+   * happened before it: the scenario in view, the tab shown, the link in the address.
+   */
+  later?: true;
+  /** Sets the feature up, once: before the first scenario opens, or after its first frame when `later`. */
+  mount(page: PageContext): void | Promise<void>;
 }

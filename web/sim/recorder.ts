@@ -1,7 +1,7 @@
 // Recordings, in the simulation worker: each frame is stepped, drawn and encoded next to the view
-// (web/sim/encode.ts), and only the finished file goes to the page. While one is made, the worker
+// (web/sim/encode.ts, loaded with the first recording), and only the finished file goes to the page. While one is made, the worker
 // holds back every message but acks and cancels, so nothing moves the run or the view under it.
-import { encode, type RecordHost } from './encode';
+import type { RecordHost } from './encode';
 import { draw, inLaterTask, post, run, seekNow, setPlaying, stepped, tell, timedAdvance } from './pace';
 import type { ToWorker } from './protocol';
 import { Cancelled, type RecordSettings } from './record';
@@ -81,6 +81,8 @@ export async function record(id: number, settings: RecordSettings, handle: (msg:
     seekNow();
     if (!run.sim || !run.viewer) throw new Error('nothing is drawn yet');
     const progress = (done: number, total: number) => post({ type: 'record-progress', id, done, total });
+    // The encoders (GIF, WebM) are fetched with the first recording, not with the worker.
+    const { encode } = await import('./encode');
     const { blob, from, to } = await encode(recordHost, settings, recording.stop.signal, progress);
     post({ type: 'recorded', id, blob, from, to });
   } catch (e) {

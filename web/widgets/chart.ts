@@ -2,10 +2,29 @@
 // metrics (kumiki_core::series) and sends the charted one merged into about one point per pixel:
 // per point, the least and greatest value over its steps, drawn as a band, so a one-step dip
 // still shows however fast the run went. Comparing two runs (web/features/compare/), it draws the
-// second run's band beside the first's, each named in words in the legend under it.
-import uPlot from 'uplot';
-import 'uplot/dist/uPlot.min.css';
+// second run's band beside the first's, each named in words in the legend under it. uPlot (code
+// and style) is fetched in the first idle moment after the first chart is asked for (the first
+// frame): not part of the page's first load, and not competing with it.
+import type uPlot from 'uplot';
 import type { ChartBand } from '../contract.gen';
+import { whenIdle } from './idle';
+
+type UPlot = typeof uPlot;
+/** The longest uPlot waits, after the first chart is asked for, for an idle moment. */
+const UPLOT_MS = 500;
+/** uPlot once fetched; `loading` while it is being fetched. */
+let UPlotClass: UPlot | null = null;
+let loading: Promise<unknown> | null = null;
+
+/** uPlot, or null while it is still arriving (then `loading` resolves when it has). */
+function loadedUPlot(): UPlot | null {
+  loading ??= new Promise<void>((idle) => whenIdle(idle, UPLOT_MS))
+    .then(() => Promise.all([import('uplot'), import('uplot/dist/uPlot.min.css')]))
+    .then(([m]) => {
+      UPlotClass = m.default;
+    });
+  return UPlotClass;
+}
 
 const COLOR = '#2b6cb0';
 /** The second run of a comparison; its name in the legend says which is which, not the colour alone. */
@@ -21,6 +40,8 @@ export class MetricChart {
   private runs: RunLabels | null = null;
   private label = '';
   private dirty = false;
+  /** A render is asked for once uPlot has arrived. */
+  private awaitingUPlot = false;
 
   /** `legend` names the two runs' series while comparing. */
   constructor(
@@ -110,6 +131,13 @@ export class MetricChart {
 
   render() {
     if (!this.dirty || !this.root.isConnected || this.root.offsetParent === null) return;
+    const uPlot = loadedUPlot();
+    if (!uPlot) {
+      // Drawn once uPlot has arrived, with the band as it stands then.
+      if (!this.awaitingUPlot) void loading?.then(() => this.render());
+      this.awaitingUPlot = true;
+      return;
+    }
     this.dirty = false;
     const aligned = (b: ChartBand | null): uPlot.AlignedData => (b ? [Array.from(b.steps), Array.from(b.max), Array.from(b.min)] : [[], [], []]);
     const runs = this.runs;

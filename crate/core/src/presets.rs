@@ -54,21 +54,26 @@ pub fn scenario(name: &str) -> Result<Scenario> {
 /// this rather than with the preset's text alone.
 pub fn changes_from_preset(scenario: &Scenario) -> Option<Vec<String>> {
     let preset = scenario_in(PRESET_FILES, "preset", &scenario.name).ok()?;
+    Some(changes_between(&preset, scenario))
+}
+
+/// How `scenario` differs from `preset` (the built-in scenario it is named after), as
+/// [`changes_from_preset`] says it: for a caller that holds the preset's text itself (the page's
+/// first-load module, which leaves the built-in scenarios out and fetches them apart).
+pub fn changes_between(preset: &Scenario, scenario: &Scenario) -> Vec<String> {
     let (was, now) = (preset.to_value(), scenario.to_value());
-    Some(
-        crate::exercise::differences(&was, &now)
-            .into_iter()
-            .filter(|p| p != "description" && !p.starts_with("exercise"))
-            .map(|p| {
-                let at = |doc: &serde_json::Value| {
-                    crate::exercise::lookup_path(doc, &p)
-                        .cloned()
-                        .unwrap_or(serde_json::Value::Null)
-                };
-                crate::grading::change_text(&p, &at(&was), &at(&now))
-            })
-            .collect(),
-    )
+    crate::exercise::differences(&was, &now)
+        .into_iter()
+        .filter(|p| p != "description" && !p.starts_with("exercise"))
+        .map(|p| {
+            let at = |doc: &serde_json::Value| {
+                crate::exercise::lookup_path(doc, &p)
+                    .cloned()
+                    .unwrap_or(serde_json::Value::Null)
+            };
+            crate::grading::change_text(&p, &at(&was), &at(&now))
+        })
+        .collect()
 }
 
 /// The scenario `name` of `table` (presets or lessons), its errors naming which `kind` it is.

@@ -1,7 +1,10 @@
-//! What the core holds built in: the presets, the lessons, each model's metric table and its
-//! helper calls.
+//! What the core holds built in: the presets, the lessons (with the `catalog` feature only: the
+//! page's first-load module leaves them out, and the page fetches them as JSON that
+//! scripts/catalog.mjs writes from the rules module), each model's metric table and its helper calls.
 
-use kumiki_core::{json, lessons, models, presets};
+#[cfg(feature = "catalog")]
+use kumiki_core::lessons;
+use kumiki_core::{json, models, presets};
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
 
@@ -14,12 +17,14 @@ pub fn metric_table(model: &str) -> Result<JsValue, JsError> {
     to_js(models::metric_table(model).map_err(js_err)?)
 }
 
+#[cfg(feature = "catalog")]
 /// The built-in scenarios: name, model, title, description.
 #[wasm_bindgen]
 pub fn presets() -> Result<JsValue, JsError> {
     to_js(&presets::list().map_err(js_err)?)
 }
 
+#[cfg(feature = "catalog")]
 #[wasm_bindgen]
 pub fn preset_json(name: &str) -> Result<String, JsError> {
     presets::scenario(name)
@@ -27,12 +32,14 @@ pub fn preset_json(name: &str) -> Result<String, JsError> {
         .map_err(js_err)
 }
 
+#[cfg(feature = "catalog")]
 /// The built-in lessons: name, model, paper, section, exercise title and description.
 #[wasm_bindgen]
 pub fn lessons() -> Result<JsValue, JsError> {
     to_js(&lessons::list().map_err(js_err)?)
 }
 
+#[cfg(feature = "catalog")]
 #[wasm_bindgen]
 pub fn lesson_json(name: &str) -> Result<String, JsError> {
     lessons::scenario(name)
@@ -63,6 +70,7 @@ pub fn format_number(value: f64) -> String {
 /// span more than `check_up_to_cells` cells: what a shared edited scenario says beside the
 /// preset's description. The page asks it on its own thread, where a large scenario is never read
 /// (reading one of 4096 × 4096 cells takes a second and more; its worker reads it).
+#[cfg(feature = "catalog")]
 #[wasm_bindgen]
 pub fn preset_changes(scenario_json: &str, check_up_to_cells: f64) -> Result<JsValue, JsError> {
     let doc: Value = serde_json::from_str(scenario_json).map_err(js_err)?;
@@ -74,6 +82,24 @@ pub fn preset_changes(scenario_json: &str, check_up_to_cells: f64) -> Result<JsV
     }
     let s = kumiki_core::Scenario::from_value(doc).map_err(js_err)?;
     to_js(&presets::changes_from_preset(&s))
+}
+
+/// How a scenario (its JSON text) differs from `preset_json`, the built-in scenario it is named
+/// after (the page holds its text), each changed field in words, as [`preset_changes`] says it;
+/// `null` when its shapes span more than `check_up_to_cells` cells (never read on the page's thread).
+#[wasm_bindgen]
+pub fn scenario_changes(
+    preset_json: &str,
+    scenario_json: &str,
+    check_up_to_cells: f64,
+) -> Result<JsValue, JsError> {
+    let doc: Value = serde_json::from_str(scenario_json).map_err(js_err)?;
+    if kumiki_core::shape::estimate_cells(&doc) as f64 > check_up_to_cells {
+        return to_js(&None::<Vec<String>>);
+    }
+    let scenario = kumiki_core::Scenario::from_value(doc).map_err(js_err)?;
+    let preset = kumiki_core::Scenario::from_json(preset_json).map_err(js_err)?;
+    to_js(&Some(presets::changes_between(&preset, &scenario)))
 }
 
 /// Every model's rule slots: `[{model, slot: {name, title, about, input, output, paper, random}}]`

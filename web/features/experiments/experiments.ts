@@ -2,9 +2,8 @@
 // link (`#x1.…`) or a file, run it on a pool of workers with a progress bar, draw its figures
 // (the core's SVG, saved as SVG or PNG), and export the rows with their provenance, the same
 // bytes `kumiki sweep` writes. Each sweep that ends (or is cancelled) is kept in IndexedDB and
-// listed under "Saved sweeps" (./saved.ts), to reopen, compare or delete. Its content comes from
-// the lab module (web/lab/), loaded when the tab is first shown, an experiment link is opened or the
-// report opens an experiment.
+// listed under "Saved sweeps" (./saved.ts), to reopen, compare or delete. Its content comes from the
+// lab module (web/lab/), loaded when the tab is first shown, a link is opened or the report opens one.
 import type { ExperimentInfo } from '../../contract.gen';
 import { experimentExport, experimentInfo, experimentJson, experiments, loadLab, unpackExperiment } from '../../lab';
 import type { PageContext } from '../../page/context';
@@ -23,7 +22,7 @@ import { explain } from './suggest';
 /** The time a sweep started, as its provenance records it (RFC 3339, to the second). */
 const timestamp = () => new Date().toISOString().replace(/\.\d+Z$/, 'Z');
 
-export function setupExperiments(page: PageContext) {
+export function setupExperiments(page: PageContext, address = location.hash) {
   const { prefs, events } = page;
   page.tabs.section('experiments', panelHtml, 10);
   const savePrefs = page.persistPrefs;
@@ -133,8 +132,7 @@ export function setupExperiments(page: PageContext) {
 
   // Until the lab module is loaded, nothing can run, be shared, be chosen or be typed: the load
   // fills the editor, and would overwrite what was typed meanwhile.
-  const startLink = location.hash.startsWith('#x1.') ? location.hash : null;
-  if (startLink) prefs.tab = 'experiments';
+  const startLink = address.startsWith('#x1.') ? address : null;
   runButton.disabled = select.disabled = linkButton.disabled = true;
   editor.readOnly = true;
   let loaded: Promise<boolean> | null = null;
@@ -163,12 +161,15 @@ export function setupExperiments(page: PageContext) {
     );
     return loaded;
   };
-  if (startLink) void load();
-  events.on('tab', (tab) => {
+  const onTab = (tab: string) => {
     if (tab !== 'experiments') return;
     if (!loaded) status.textContent = 'Loading the experiments…';
     void load();
-  });
+  };
+  events.on('tab', onTab);
+  // Mounted after the first frame (./index.ts): a link shows the tab, which may be shown already.
+  if (startLink && !page.embedded) showTab();
+  else onTab(startLink ? 'experiments' : (document.body.dataset.tab ?? ''));
   window.addEventListener('hashchange', () => {
     if (!location.hash.startsWith('#x1.')) return;
     void load().then((ok) => {

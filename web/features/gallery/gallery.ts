@@ -2,11 +2,11 @@
 // then every built-in scenario grouped by model, each card with a picture of its first step and
 // its title in words; one filter for both. The Lessons button and the first screen's ways in open
 // it on one part.
-import type { LessonInfo, PresetInfo } from '../../contract.gen';
 import type { PageContext } from '../../page/context';
 import { byId, clear, el, markup } from '../../widgets/dom';
 import { scenarioTitle } from '../../models/index';
 import * as core from '../../wasm';
+import type { Catalogue } from '../../wasm';
 import dialogHtml from './dialog.html?raw';
 import { Pictures } from './pictures';
 
@@ -18,12 +18,12 @@ const TITLES: Record<GalleryPart, string> = { lessons: 'Lessons', scenarios: "Th
 export function setupGallery(page: PageContext) {
   const { session, events } = page;
   document.body.append(markup(dialogHtml));
-  // Listing them reads and checks every built-in scenario: done when the gallery first opens.
-  let lists: { presets: PresetInfo[]; lessons: LessonInfo[] } | null = null;
-  const choose = (name: string) => void session.open(core.presetJson(name), { opens: true });
+  // The built-in scenarios and lessons (web/wasm.ts's catalogue): fetched when the gallery first opens.
+  let lists: Catalogue | null = null;
+  const choose = (name: string) => void session.open(lists?.presetText[name] ?? '', { opens: true });
   // A lesson opens on the run tab, where its exercise panel is.
   const chooseLesson = (name: string) =>
-    void session.open(core.lessonJson(name), { opens: true }).then((opened) => {
+    void session.open(lists?.lessonText[name] ?? '', { opens: true }).then((opened) => {
       if (opened) page.tabs.select('run');
     });
   const dialog = byId<HTMLDialogElement>('gallery');
@@ -42,8 +42,8 @@ export function setupGallery(page: PageContext) {
   };
 
   const render = () => {
-    lists ??= { presets: core.presets(), lessons: core.lessons() };
-    const { presets, lessons } = lists;
+    if (!lists) return;
+    const { presets, lessons, presetText, lessonText } = lists;
     clear(list);
     const q = filter.value.trim().toLowerCase();
     const matches = (text: string) => !q || text.toLowerCase().includes(q);
@@ -54,7 +54,7 @@ export function setupGallery(page: PageContext) {
         card(
           { 'data-lesson': l.name, class: 'card lesson' },
           () => chooseLesson(l.name),
-          pictures.canvas(l.name, true),
+          pictures.canvas(l.name, lessonText[l.name], true),
           el('strong', { text: l.title }),
           el('span', { class: 'lesson-where', text: `${l.model} · ${l.section}` }),
           el('span', { text: l.paper }),
@@ -73,7 +73,7 @@ export function setupGallery(page: PageContext) {
         card(
           { 'data-preset': p.name },
           () => choose(p.name),
-          pictures.canvas(p.name, false),
+          pictures.canvas(p.name, presetText[p.name], false),
           el('strong', { text: scenarioTitle(p.name) ?? p.name }),
           el('code', { class: 'card-code', text: p.name }),
           el('span', { class: 'card-about', text: p.description }),
@@ -83,13 +83,18 @@ export function setupGallery(page: PageContext) {
     if (!shown.length && !shownLessons.length) list.append(el('p', { class: 'hint', text: 'No scenario matches.' }));
   };
   filter.addEventListener('input', render);
-  const open = (shown: GalleryPart) => {
-    part = shown;
-    byId('gallery-title').textContent = TITLES[shown];
-    render();
-    dialog.showModal();
-    filter.focus();
-  };
+  const open = (shown: GalleryPart) =>
+    void core.loadCatalogue().then(
+      (catalogue) => {
+        lists = catalogue;
+        part = shown;
+        byId('gallery-title').textContent = TITLES[shown];
+        render();
+        if (!dialog.open) dialog.showModal();
+        filter.focus();
+      },
+      (e: unknown) => page.banner.report(`The scenarios could not be loaded: ${core.message(e)}`),
+    );
   byId('open-gallery').addEventListener('click', () => open('all'));
   byId('open-scenarios').addEventListener('click', () => open('all'));
   byId('open-lessons').addEventListener('click', () => open('lessons'));

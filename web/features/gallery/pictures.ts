@@ -18,12 +18,16 @@ export class Pictures {
       if (!entry.isIntersecting) continue;
       this.seen.unobserve(entry.target);
       const canvas = entry.target as HTMLCanvasElement;
-      this.ask(canvas.dataset.picture ?? '', canvas.dataset.of === 'lesson');
+      this.ask(canvas.dataset.picture ?? '');
     }
   });
 
-  /** A canvas that shows the scenario's picture once drawn. */
-  canvas(name: string, lesson: boolean): HTMLCanvasElement {
+  /** The text of each scenario asked for, by name. */
+  private readonly texts = new Map<string, string>();
+
+  /** A canvas that shows the picture of the scenario `name` (its text `text`) once drawn. */
+  canvas(name: string, text: string, lesson: boolean): HTMLCanvasElement {
+    this.texts.set(name, text);
     const canvas = document.createElement('canvas');
     canvas.className = 'card-picture';
     canvas.width = PICTURE.width * 2;
@@ -40,10 +44,11 @@ export class Pictures {
     return canvas;
   }
 
-  private ask(name: string, lesson: boolean) {
-    if (!name || this.asked.has(name)) return;
+  private ask(name: string) {
+    const text = this.texts.get(name);
+    if (!name || text === undefined || this.asked.has(name)) return;
     this.asked.add(name);
-    this.start().postMessage({ type: 'draw', name, lesson, width: PICTURE.width * 2, height: PICTURE.height * 2 } satisfies ToPictureWorker);
+    this.start().postMessage({ type: 'draw', name, text, width: PICTURE.width * 2, height: PICTURE.height * 2 } satisfies ToPictureWorker);
   }
 
   private start(): Worker {

@@ -3,16 +3,11 @@
 // interactive (its first frame drawn) and idle: on a first visit its install fetches every file of
 // the build (the lab and rules modules, the rule editor), which must not compete with the first frame.
 import type { Feature } from '../../page/context';
+import { whenIdle } from '../../widgets/idle';
 import { registerOffline } from './offline';
 
 /** The longest the registration waits for an idle moment (a page kept busy still gets its worker). */
 const IDLE_TIMEOUT_MS = 10000;
-
-/** `run` in an idle moment of the main thread (after a second where the browser cannot say when). */
-function whenIdle(run: () => void) {
-  if ('requestIdleCallback' in window) requestIdleCallback(run, { timeout: IDLE_TIMEOUT_MS });
-  else setTimeout(run, 1000);
-}
 
 export const offline: Feature = {
   name: 'offline',
@@ -21,11 +16,13 @@ export const offline: Feature = {
     session.on('frame', () => {
       if (asked) return;
       asked = true;
-      whenIdle(() =>
-        registerOffline((reload) => {
-          banner.keep = true;
-          banner.report('A new version of Kumiki is ready.', { label: 'Reload', run: reload });
-        }),
+      whenIdle(
+        () =>
+          registerOffline((reload) => {
+            banner.keep = true;
+            banner.report('A new version of Kumiki is ready.', { label: 'Reload', run: reload });
+          }),
+        IDLE_TIMEOUT_MS,
       );
     });
   },

@@ -335,15 +335,18 @@ export function setupReproduction(page: PageContext) {
     void load().then((ok) => {
       if (ok) renderReproduction(root, model);
     });
-  session.on('loaded', () => {
+  const follow = () => {
     const now = String(session.doc().model ?? '');
     if (now === model) return;
     model = now;
     if (loaded || document.body.dataset.tab === 'about') show();
-  });
+  };
+  session.on('loaded', follow);
   events.on('tab', (tab) => {
     if (tab === 'about') show();
   });
+  // Mounted after the first frame (./index.ts): the scenario in view, and the tab shown, are already there.
+  follow();
   const open = () => {
     const id = idInAddress();
     if (id === null) return;

@@ -27,16 +27,18 @@ export function setupShare(page: PageContext) {
    * after, and whether the description it shows is still the preset's. False when it is no edited
    * preset (or an exercise, whose differences may give the answer away).
    */
-  function markModified(json: string, doc: { name?: string; description?: string }, exercise: boolean): boolean {
+  async function markModified(json: string, doc: { name?: string; description?: string }, exercise: boolean): Promise<boolean> {
     if (exercise) return false;
-    let changes: string[] | null;
+    let changes: string[];
+    let preset: { description?: string };
     try {
-      changes = core.presetChanges(json);
+      const found = await core.presetChanges(json, doc.name ?? '');
+      if (!found?.changes.length) return false;
+      changes = found.changes;
+      preset = JSON.parse(found.preset) as { description?: string };
     } catch {
       return false;
     }
-    if (!changes?.length) return false;
-    const preset = JSON.parse(core.presetJson(doc.name ?? '')) as { description?: string };
     const shown = changes.slice(0, 6).map((c) => displayText(c, 200));
     const words = `${shown.join('; ')}${changes.length > shown.length ? `; and ${changes.length - shown.length} more` : ''}`;
     const same = preset.description === doc.description ? ' The description below is the preset’s.' : '';
@@ -44,8 +46,8 @@ export function setupShare(page: PageContext) {
     return true;
   }
 
-  /** Whoever opens a shared link sees its name and description first. */
-  function introduce(json: string) {
+  /** Whoever opens a shared link sees its name and description first (once the catalogue says whether it is an edited preset). */
+  async function introduce(json: string) {
     if (embedded) return;
     const doc = JSON.parse(json) as { name?: string; description?: string; model?: string; exercise?: Exercise };
     const exercise = doc.exercise;
@@ -61,7 +63,7 @@ export function setupShare(page: PageContext) {
         el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`),
       );
     else description.append(el('p', { text: displayText(doc.description ?? '', 4000, true) || 'It comes with no description.' }));
-    byId('intro-modified').hidden = !markModified(json, doc, exercise !== undefined);
+    byId('intro-modified').hidden = !(await markModified(json, doc, exercise !== undefined));
     const dialog = byId<HTMLDialogElement>('intro');
     if (!dialog.open) dialog.showModal();
   }

@@ -56,9 +56,12 @@ export function setupWelcome(page: PageContext) {
     lesson: () => events.emit('open', { what: 'gallery', part: 'lessons' }),
     build: () => tabs.select('scenario', true),
     compare: () =>
-      void session.open(core.lessonJson(COMPARE_LESSON), { opens: true }).then((opened) => {
-        if (opened) tabs.select('run');
-      }),
+      void core
+        .lessonJson(COMPARE_LESSON)
+        .then((text) => session.open(text, { opens: true }))
+        .then((opened) => {
+          if (opened) tabs.select('run');
+        }),
   };
   const dialog = byId<HTMLDialogElement>('welcome');
   const box = byId('tour');
