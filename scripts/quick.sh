@@ -5,7 +5,8 @@
 # a change reaches the contract or the core. npm test runs all of it and the browser tests.
 #
 # KUMIKI_QUICK_BASE names another commit to compare with. The unit tests need the page's wasm
-# module (web/pkg): a checkout without it builds it once (scripts/build-wasm.sh, minutes).
+# module (web/pkg, with the catalogue it writes): a checkout without them builds them once
+# (scripts/build-wasm.sh, minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 step() { printf '\n\033[1m== %s ==\033[0m (at %d s)\n' "$*" "$SECONDS"; }
@@ -38,7 +39,7 @@ npx --no-install biome check --error-on-warnings .
 # The type check keeps what it learnt between runs (npm test checks from nothing).
 npx --no-install tsc --noEmit -p . --incremental --tsBuildInfoFile node_modules/.cache/kumiki-quick.tsbuildinfo
 
-if [ ! -f web/pkg/kumiki_wasm_bg.wasm ]; then
+if [ ! -f web/pkg/kumiki_wasm_bg.wasm ] || [ ! -f web/pkg/catalog.json ]; then
   step "the page's wasm module, once (scripts/build-wasm.sh)"
   bash scripts/build-wasm.sh
 fi
