@@ -147,16 +147,17 @@ async function wasmMb(page) {
  * The page's load and its workloads' runs. `stepperRate(spec)`, when given, times the workload's
  * bare stepper in wasm under Node just before the page plays it (the page open and paused), so
  * the two rates are taken under the same load of this shared machine: a run that plays at full
- * speed carries it as `wasmStepsPerSecond`, with `pageOverWasm`, the page's rate over it.
+ * speed carries it as `wasmStepsPerSecond`, with `pageOverWasm`, the page's rate over it. The
+ * default page is loaded `loadCount` times first (its load time, then its memory).
  */
-export async function benchPage(pageSpecs, linkFor, stepperRate) {
+export async function benchPage(pageSpecs, linkFor, stepperRate, loadCount = 5) {
   const server = await serve('/');
   const browser = await launch();
   try {
     const loads = [];
     // The default page's memory, once it has drawn: what a scenario's memory adds to.
     let idle;
-    for (let i = 0; i < 5; i++) {
+    for (let i = 0; i < loadCount; i++) {
       const before = await rendererIds(browser);
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
       const page = await context.newPage();
@@ -164,7 +165,7 @@ export async function benchPage(pageSpecs, linkFor, stepperRate) {
       await page.goto(server.url);
       await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
       loads.push(performance.now() - t);
-      if (i === 4) {
+      if (i === loadCount - 1) {
         await page.waitForTimeout(1000);
         idle = { residentMb: await residentMb(browser, before), wasmMb: await wasmMb(page) };
       }
@@ -274,6 +275,7 @@ if (process.argv[1] === new URL(import.meta.url).pathname) {
     specs,
     (s) => wasm.encode_link(scenarioJson(s)),
     (s) => measure(s).steps_per_second,
+    1,
   );
   for (const r of page.runs) {
     console.log(JSON.stringify(r));
