@@ -143,14 +143,21 @@ async function wasmMb(page) {
   }));
 }
 
-export async function benchPage(pageSpecs, linkFor) {
+/**
+ * The page's load and its workloads' runs. `stepperRate(spec)`, when given, times the workload's
+ * bare stepper in wasm under Node just before the page plays it (the page open and paused), so
+ * the two rates are taken under the same load of this shared machine: a run that plays at full
+ * speed carries it as `wasmStepsPerSecond`, with `pageOverWasm`, the page's rate over it. The
+ * default page is loaded `loadCount` times first (its load time, then its memory).
+ */
+export async function benchPage(pageSpecs, linkFor, stepperRate, loadCount = 5) {
   const server = await serve('/');
   const browser = await launch();
   try {
     const loads = [];
     // The default page's memory, once it has drawn: what a scenario's memory adds to.
     let idle;
-    for (let i = 0; i < 5; i++) {
+    for (let i = 0; i < loadCount; i++) {
       const before = await rendererIds(browser);
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
       const page = await context.newPage();
@@ -158,7 +165,7 @@ export async function benchPage(pageSpecs, linkFor) {
       await page.goto(server.url);
       await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
       loads.push(performance.now() - t);
-      if (i === 4) {
+      if (i === loadCount - 1) {
         await page.waitForTimeout(1000);
         idle = { residentMb: await residentMb(browser, before), wasmMb: await wasmMb(page) };
       }
@@ -189,6 +196,7 @@ export async function benchPage(pageSpecs, linkFor) {
         }));
       const renderer = await page.evaluate(() => document.body.dataset.renderer);
       if (!spec.page.orbit) {
+        const wasmStepsPerSecond = stepperRate?.(spec);
         await page.$eval('#speed', (s) => {
           s.value = '8';
           s.dispatchEvent(new Event('input'));
@@ -198,12 +206,15 @@ export async function benchPage(pageSpecs, linkFor) {
         const a = await read();
         await page.waitForTimeout(seconds * 1000);
         const b = await read();
+        const played = rates(a, b);
         runs.push({
           name: spec.name,
           seconds,
           renderer,
           moving: 'playing',
-          ...rates(a, b),
+          ...played,
+          wasmStepsPerSecond,
+          pageOverWasm: wasmStepsPerSecond ? played.stepsPerSecond / wasmStepsPerSecond : undefined,
           residentMb: await residentMb(browser, before),
           wasmMb: await wasmMb(page),
         });
@@ -238,5 +249,41 @@ export async function benchPage(pageSpecs, linkFor) {
   } finally {
     await browser.close();
     await server.close();
+  }
+}
+
+/** The least the page, playing at full speed and drawing, steps of the wasm stepper's rate under Node. */
+export const PAGE_OVER_WASM = 0.8;
+
+// Usage: node scripts/bench-page.mjs [tests/bench/a.json ...]   (default: every workload with a
+// "page" entry). Plays each workload in the page at full speed after timing its bare stepper in
+// wasm under Node, prints each run (JSON, a line each) and the page's rate over the stepper's, and
+// fails when a workload plays below PAGE_OVER_WASM of it.
+if (process.argv[1] === new URL(import.meta.url).pathname) {
+  const { readdirSync } = await import('node:fs');
+  const { measure, scenarioJson } = await import('./bench-wasm.mjs');
+  const wasm = await import('../web/pkg/kumiki_wasm.js');
+  const root = new URL('..', import.meta.url).pathname;
+  const files = process.argv.slice(2).length
+    ? process.argv.slice(2)
+    : readdirSync(`${root}tests/bench`)
+        .filter((f) => f.endsWith('.json'))
+        .sort()
+        .map((f) => `tests/bench/${f}`);
+  const specs = files.map((f) => JSON.parse(readFileSync(`${root}${f}`, 'utf8'))).filter((s) => s.page);
+  const page = await benchPage(
+    specs,
+    (s) => wasm.encode_link(scenarioJson(s)),
+    (s) => measure(s).steps_per_second,
+    1,
+  );
+  for (const r of page.runs) {
+    console.log(JSON.stringify(r));
+    if (r.pageOverWasm === undefined) continue;
+    console.log(
+      `${r.name}: the page ${r.stepsPerSecond.toPrecision(3)} steps/s drawing ${r.framesPerSecond.toPrecision(3)} frames/s, ` +
+        `the wasm stepper ${r.wasmStepsPerSecond.toPrecision(3)}: page/wasm ${r.pageOverWasm.toFixed(2)} (at least ${PAGE_OVER_WASM})`,
+    );
+    if (r.pageOverWasm < PAGE_OVER_WASM) process.exitCode = 1;
   }
 }

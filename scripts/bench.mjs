@@ -80,7 +80,7 @@ const labBytes = readFileSync(`${root}web/pkg/kumiki_lab_bg.wasm`);
 const labGzKb = gzipSync(labBytes, { level: 9 }).length / 1024;
 console.log(`lab's wasm: ${(labBytes.length / 1024).toFixed(1)} KB, ${labGzKb.toFixed(1)} KB gzipped (loaded when needed)`);
 
-const { benchPage } = await import('./bench-page.mjs');
+const { benchPage, PAGE_OVER_WASM } = await import('./bench-page.mjs');
 wasm.initSync({ module: wasmBytes });
 const { benchGrade, gradingReport } = await import('./bench-grade.mjs');
 lab.initSync({ module: labBytes });
@@ -90,9 +90,11 @@ console.log(gradingReport(grading));
 // time to interactive and the bytes before it, against the one budget (scripts/budget.mjs).
 const load = await benchLoad();
 const loadWithin = printLoad(load);
+// Each workload's bare stepper is timed again just before the page plays it, under the same load.
 const page = await benchPage(
   specs.filter((s) => s.page),
   (s) => wasm.encode_link(scenarioJson(s)),
+  (s) => measure(s).steps_per_second,
 );
 console.log(
   `page load to interactive from the test harness's uncompressed server, no throttling (median of ${page.loads.length}): ${page.loadMs.toFixed(0)} ms`,
@@ -108,6 +110,14 @@ for (const r of page.runs) {
     `in the page, ${r.name}: ${doing} while drawing ${fmt(r.framesPerSecond)} frames/s (${r.renderer}); worker per second: ` +
       `${fmt(r.stepMsPerSecond)} ms stepping; per frame: ${fmt(r.uploadMsPerFrame, 2)} ms upload, ${fmt(r.drawMsPerFrame, 2)} ms issuing draws`,
   );
+  if (r.pageOverWasm !== undefined) {
+    // Playing at max speed, against the wasm stepper timed just before (and the page's Sim/bare in Node).
+    const row = rows.find((x) => x.spec.name === r.name);
+    console.log(
+      `  page/wasm stepper: ${fmt(r.pageOverWasm, 2)} (the stepper ${fmt(r.wasmStepsPerSecond)} steps/s in Node just before; ` +
+        `at least ${PAGE_OVER_WASM}; the page's Sim/bare in Node ${fmt(row ? row.wasm.page_steps_per_second / row.wasm.steps_per_second : undefined, 2)})`,
+    );
+  }
   if (r.residentMb) {
     // Bytes a lattice cell the page holds: the renderer process (page, worker, wasm memory) over
     // the workload's cells (issue 27 asks at most 32 at 4096²); and what renderer and GPU process
@@ -149,6 +159,11 @@ writeFileSync(`${root}target/bench-results.json`, JSON.stringify(out, null, 1));
 console.log('\nfull results: target/bench-results.json');
 if (!grading.met) {
   console.error('\nbench: grading a class in the page missed its goals (see "a class of" above)');
+  process.exitCode = 1;
+}
+const slow = page.runs.filter((r) => r.pageOverWasm !== undefined && r.pageOverWasm < PAGE_OVER_WASM);
+if (slow.length) {
+  console.error(`\nbench: playing at max speed, the page steps below ${PAGE_OVER_WASM} of the wasm stepper: ${slow.map((r) => r.name).join(', ')}`);
   process.exitCode = 1;
 }
 if (!loadWithin) {

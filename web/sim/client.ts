@@ -248,10 +248,11 @@ export class SimClient implements ScenarioOwner {
         this.on.scenario(msg.scenario, msg.comparison);
         return;
       case 'viewer':
-        this.on.viewer(msg.kind);
-        return;
+        return this.on.viewer(msg.kind);
       case 'drew':
-        this.on.drew(msg.work);
+        return this.on.drew(msg.work);
+      case 'frame-wanted':
+        requestAnimationFrame(() => this.send({ type: 'frame-free' }));
         return;
       case 'answer': {
         const waiter = this.answers.get(msg.id);
@@ -271,8 +272,7 @@ export class SimClient implements ScenarioOwner {
         return;
       }
       case 'error':
-        this.on.error(msg.message, msg.context);
-        return;
+        return this.on.error(msg.message, msg.context);
       case 'panic':
         this.on.panic(msg.message);
         this.restart();

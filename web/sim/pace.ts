@@ -1,19 +1,13 @@
-// The simulation worker's pace: its play loop, moved here unchanged from worker.ts. It steps the
-// run at the requested speed, draws at most once per animation frame, reading the model's buffers
-// in place, and sends the page a frame of what its panels show, flow-controlled: the next is sent
-// only after the page has taken the last, so a fast simulation never floods the page. Timing here
-// paces the run; it never enters the model.
-import { panic_message, type Sim, type Viewer } from '../pkg/kumiki_wasm.js';
+// The simulation worker's pace: its play loop. It steps the run at the requested speed, draws at
+// most once per animation frame (at max speed, once per frame the page frees: stepping never
+// waits), reading the model's buffers in place, and sends the page a frame of what its panels
+// show, flow-controlled: the next is sent only after the page has taken the last, so a fast
+// simulation never floods the page. Timing here paces the run; it never enters the model.
+import type { Sim } from '../pkg/kumiki_wasm.js';
 import type { Frame, Verdict } from '../contract.gen';
-import type { Drawn, WorkerTiming } from '../types';
+import type { Drawn } from '../types';
 import type { RenderStats } from '../view.gen';
-import type { FromWorker } from './protocol';
-
-const scope = self as unknown as DedicatedWorkerGlobalScope;
-export const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessage(msg, transfer);
-
-/** Longest stretch of stepping between looks at the message queue. */
-export const SLICE_MS = 12;
+import { guard, inLaterTask, msPerStep, panicked, post, run, SLICE_MS, scope, timedAdvance, work } from './host';
 /**
  * The state hash costs a pass over the state: while playing it is refreshed at most this often,
  * and no more often than keeps it under HASH_SHARE of the time (a 16 M-cell AMAS takes 0.1 s to
@@ -30,16 +24,14 @@ const HASH_SHARE = 0.05;
 const FRAME_GAP_MS = 100;
 /** The longest stepping holds for an animation frame that does not come. */
 const HOLD_MAX_MS = 1000;
-
-/** The run and the view the worker holds, and what the page asked to see of them. */
-export const run = {
-  sim: null as Sim | null,
-  viewer: null as Viewer | null,
-  overlay: null as string | null,
-  /** The metric the page charts, and about how many points it draws. */
-  chartMetric: null as string | null,
-  chartPoints: 400,
-};
+/**
+ * At max speed, the least time between two drawn frames while the run steps. Stepping never
+ * waits for a frame there: the worker's own animation frames come only while its task queue is
+ * idle, so it asks the page for one (the page's animation frame says the compositor takes a new
+ * frame) and draws the state as it then stands, skipping the steps between. Each drawn frame of a
+ * large lattice costs the software rasteriser far more than the worker, on the same cores.
+ */
+const MAX_SPEED_FRAME_GAP_MS = 200;
 
 let playing = false;
 let stepsPerSecond = 30;
@@ -49,6 +41,8 @@ let dirty = false;
 /** The state changed since the view last drew it. */
 let changed = false;
 let drawScheduled = false;
+/** The page was asked for a frame (at max speed) and has not yet said one is free. */
+let frameAsked = false;
 /** When the last frame was drawn, or a hold stopped waiting for one: the next is due FRAME_GAP_MS after. */
 let lastDrawAt = 0;
 /** Stepping waits for the pending draw's animation frame. */
@@ -61,7 +55,6 @@ let drawn: RenderStats | null = null;
 let nextHashAt = 0;
 let budget = 0;
 let lastTick = 0;
-let msPerStep = 1;
 let rateWindow: { t: number; steps: number }[] = [];
 let tickScheduled = false;
 /** The run's end was judged by its exercise's goal (once per end reached). */
@@ -72,14 +65,6 @@ let seekTo: number | null = null;
 /** A step to follow (the first run of a comparison reached it); null when there is none. */
 let followTo: number | null = null;
 
-/** Calls waiting for a later task: after the messages already queued, and unthrottled (a timer is not). */
-const later: (() => void)[] = [];
-const channel = new MessageChannel();
-channel.port1.onmessage = () => later.shift()?.();
-export function inLaterTask(f: () => void) {
-  later.push(f);
-  channel.port2.postMessage(null);
-}
 export function schedule() {
   if (!tickScheduled) {
     tickScheduled = true;
@@ -90,21 +75,9 @@ export function schedule() {
   }
 }
 
-export function guard<T>(context: 'load' | 'apply' | 'step', f: () => T): T | undefined {
-  try {
-    return f();
-  } catch (e) {
-    const panic = memory.panicMessage();
-    if (panic) {
-      run.sim = null;
-      playing = false;
-      post({ type: 'panic', message: panic });
-    } else {
-      post({ type: 'error', message: e instanceof Error ? e.message : String(e), context });
-    }
-    return undefined;
-  }
-}
+panicked.stop = () => {
+  playing = false;
+};
 
 function measuredRate(): number {
   if (rateWindow.length < 2) return 0;
@@ -140,16 +113,6 @@ export function sendFrame(force = false) {
   } else if (!frame.finished) goalJudged = false;
 }
 
-/** Milliseconds spent in the model's steps since the worker started. */
-let stepMs = 0;
-/** The wasm instance in use (the page's module, or its rules module: worker.ts switches): its memory and panic. */
-export const memory = { wasm: null as WebAssembly.Memory | null, panicMessage: panic_message as () => string | undefined };
-
-function work(): WorkerTiming {
-  const [frames, uploadMs, drawMs] = run.viewer ? run.viewer.timing() : [0, 0, 0];
-  return { stepMs, frames, uploadMs, drawMs, wasmBytes: memory.wasm?.buffer.byteLength ?? 0 };
-}
-
 /** Draws the lattice as it stands, now. */
 export function draw() {
   if (!run.viewer || !run.sim) return;
@@ -167,26 +130,69 @@ export function draw() {
 const frameTimer: (f: () => void) => void =
   typeof scope.requestAnimationFrame === 'function' ? (f) => scope.requestAnimationFrame(f) : (f) => setTimeout(f, 16);
 
-/** Draws at the next animation frame, then tells the page (once it took the last frame). */
+/** Playing at max speed: stepping never waits for a frame, the page says when one is free. */
+function atMaxSpeed(): boolean {
+  return playing && !Number.isFinite(stepsPerSecond);
+}
+
+/** Draws at the next animation frame (at max speed, the next the page says is free), then tells the page (once it took the last frame). */
 export function redraw() {
-  if (drawScheduled) return;
   drawScheduled = true;
-  frameTimer(() => {
-    drawScheduled = false;
-    lastDrawAt = performance.now();
-    draw();
-    if (dirty) sendFrame();
-    else post({ type: 'drew', work: work() });
-    if (holding) {
-      holding = false;
-      schedule();
-    }
-  });
+  requestDraw();
+}
+
+/** The worker's animation frame was asked for and has not come. */
+let frameRequested = false;
+
+/** Makes sure a pending draw will come: from the page's frame at max speed, else from the worker's. */
+function requestDraw() {
+  if (!drawScheduled) return;
+  if (atMaxSpeed()) askFrame();
+  else if (!frameRequested) {
+    frameRequested = true;
+    frameTimer(() => {
+      frameRequested = false;
+      drawDue();
+    });
+  }
+}
+
+/** Draws the pending draw, if it is still pending, and tells the page. */
+function drawDue() {
+  if (!drawScheduled) return;
+  drawScheduled = false;
+  lastDrawAt = performance.now();
+  draw();
+  if (dirty) sendFrame();
+  else post({ type: 'drew', work: work() });
+  if (holding) {
+    holding = false;
+    schedule();
+  }
+}
+
+/**
+ * At max speed, asks the page for a frame once a draw is pending, the page is shown and the last
+ * frame is MAX_SPEED_FRAME_GAP_MS old (a camera move alone draws at once: it uploads nothing).
+ */
+function askFrame() {
+  if (frameAsked || !drawScheduled || !visible || !atMaxSpeed()) return;
+  if (changed && performance.now() - lastDrawAt < MAX_SPEED_FRAME_GAP_MS) return;
+  frameAsked = true;
+  post({ type: 'frame-wanted' });
+}
+
+/** The page's animation frame came after the worker asked for one: the view is drawn now. */
+export function frameFree() {
+  frameAsked = false;
+  // Play stopped or slowed since: the worker's own animation frame draws.
+  if (atMaxSpeed()) drawDue();
+  else requestDraw();
 }
 
 /** A draw is pending and the next step would end past its due time: stepping makes way for it. */
 function drawOverdue(): boolean {
-  return drawScheduled && visible && performance.now() + msPerStep - lastDrawAt > FRAME_GAP_MS;
+  return !atMaxSpeed() && drawScheduled && visible && performance.now() + msPerStep() - lastDrawAt > FRAME_GAP_MS;
 }
 
 /** Stops stepping until the pending draw's animation frame, or for HOLD_MAX_MS if none comes. */
@@ -241,6 +247,7 @@ export function setPlaying(on: boolean) {
   rateWindow = [];
   post({ type: 'playing', playing });
   if (!playing) touched();
+  requestDraw();
   schedule();
 }
 
@@ -266,10 +273,12 @@ export function setSpeed(rate: number) {
   stepsPerSecond = rate;
   budget = 0;
   lastTick = performance.now();
+  requestDraw();
 }
 
 export function setVisible(shown: boolean) {
   visible = shown;
+  requestDraw();
   schedule();
 }
 
@@ -314,16 +323,6 @@ export function seekNow(): boolean {
   return true;
 }
 
-/** Steps the run `count` steps, timing them for the page and for the pace; undefined if it failed. */
-export function timedAdvance(s: Sim, count: number): number | undefined {
-  const t0 = performance.now();
-  const n = guard('step', () => s.advance(count));
-  const dt = performance.now() - t0;
-  stepMs += dt;
-  if (n) msPerStep = 0.7 * msPerStep + 0.3 * (dt / n);
-  return n;
-}
-
 /**
  * Steps toward the step to follow for at most a slice, back by seeking, forward by stepping; a run
  * that ends first stays at its end. True while there is more to do.
@@ -341,7 +340,7 @@ function followNow(): boolean {
   const start = performance.now();
   let moved = false;
   while (s.steps() < target && !s.finished() && performance.now() - start < SLICE_MS) {
-    const n = timedAdvance(s, Math.min(target - s.steps(), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))));
+    const n = timedAdvance(s, Math.min(target - s.steps(), Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4)))));
     if (!n) break;
     moved = true;
   }
@@ -367,8 +366,8 @@ function tick() {
     let taken = 0;
     while (budget >= 1 && performance.now() - start < SLICE_MS && !drawOverdue()) {
       const want = unlimited
-        ? Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4)))
-        : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep, 1e-4))));
+        ? Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4)))
+        : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4))));
       const n = timedAdvance(s, want);
       if (n === undefined) return;
       taken += n;

@@ -90,6 +90,8 @@ export type ToWorker =
   | { type: 'apply'; action: string }
   | { type: 'inspect'; cell: number; id: number }
   | { type: 'ack' }
+  /** The page's animation frame came after the worker asked for one ('frame-wanted'): it draws now. */
+  | { type: 'frame-free' }
   | { type: 'crash' }
   | { type: 'ping'; id: number }
   /** Whether the page is shown (a hidden page draws nothing, so the run need not wait for it). */
@@ -131,6 +133,8 @@ export type FromWorker =
   | { type: 'viewer'; kind: 'webgl2' | 'canvas2d' }
   /** The view was drawn again with nothing new for the panels (a camera move). */
   | { type: 'drew'; work: WorkerTiming }
+  /** Playing at max speed, the worker asks to be told ('frame-free') at the page's next animation frame. */
+  | { type: 'frame-wanted' }
   | { type: 'answer'; id: number; value: unknown }
   | { type: 'record-progress'; id: number; done: number; total: number }
   /** A recording finished: the file, and the steps it shows. */

@@ -1,8 +1,10 @@
 // Recordings, in the simulation worker: each frame is stepped, drawn and encoded next to the view
-// (web/sim/encode.ts, loaded with the first recording), and only the finished file goes to the page. While one is made, the worker
-// holds back every message but acks and cancels, so nothing moves the run or the view under it.
+// (web/sim/encode.ts, loaded with the first recording), and only the finished file goes to the
+// page. While one is made, the worker holds back every message but acks and cancels, so nothing
+// moves the run or the view under it.
 import type { RecordHost } from './encode';
-import { draw, inLaterTask, post, run, seekNow, setPlaying, stepped, tell, timedAdvance } from './pace';
+import { inLaterTask, post, run, timedAdvance } from './host';
+import { draw, seekNow, setPlaying, stepped, tell } from './pace';
 import type { ToWorker } from './protocol';
 import { Cancelled, type RecordSettings } from './record';
 

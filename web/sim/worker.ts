@@ -1,31 +1,14 @@
 // The simulation worker: owns the scenario in view (the wasm Draft), the run built from it (Sim)
 // and the lattice view (a wasm Viewer drawing on the page's transferred OffscreenCanvas). An
 // opening or an edit is checked once by the Draft, and the run is built from the checked scenario
-// it holds: nothing is read or checked again. The play loop and the frames are web/sim/pace.ts's;
+// it holds: nothing is read or checked again. The play loop and the frames are web/sim/pace.ts's (with web/sim/host.ts, what they share);
 // recordings are web/sim/recorder.ts's. It starts with the page's module (kumiki_wasm); a scenario
 // that carries rule scripts switches it, for good, to the rules module (kumiki_wasm_rules, the same
 // calls with the script engine), fetched then and never for a scenario without scripts.
 import * as pageModule from '../pkg/kumiki_wasm.js';
 import type { Comparison, Facts, Proposal } from '../contract.gen';
-import {
-  acknowledged,
-  follow,
-  guard,
-  judge,
-  memory,
-  play,
-  post,
-  redraw,
-  run,
-  seek,
-  setPlaying,
-  setSpeed,
-  setVisible,
-  started,
-  stepNow,
-  touched,
-  untold,
-} from './pace';
+import { guard, memory, post, run } from './host';
+import { acknowledged, follow, frameFree, judge, play, redraw, seek, setPlaying, setSpeed, setVisible, started, stepNow, touched, untold } from './pace';
 import { clickStates } from './clicks';
 import { LARGE_CELLS, type Proposed, type ToWorker } from './protocol';
 import { cancelRecording, holdsBack, record } from './recorder';
@@ -190,6 +173,8 @@ function handle(msg: ToWorker) {
     }
     case 'ack':
       return acknowledged();
+    case 'frame-free':
+      return frameFree();
     case 'crash':
       guard('step', () => wasm.simulate_panic());
       return;

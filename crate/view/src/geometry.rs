@@ -108,7 +108,9 @@ impl Grid {
     }
 
     /// World bounds of the non-empty planar cells, two cells wider all round, or `None` when
-    /// every cell is empty: what a fitted view frames.
+    /// every cell is empty: what a fitted view frames. A row's cells share their height and lie
+    /// in order along it, so only each row's first and last non-empty cells are placed: the view
+    /// asks this at every frame it draws, and a filled 4096² lattice has 16 M cells.
     pub fn content_bounds(&self, cells: &[u8]) -> Option<Bounds> {
         let mut b = Bounds {
             x0: f64::INFINITY,
@@ -116,12 +118,19 @@ impl Grid {
             x1: f64::NEG_INFINITY,
             y1: f64::NEG_INFINITY,
         };
-        for (i, _) in cells.iter().enumerate().filter(|(_, &c)| c != 0) {
-            let [cx, cy] = self.centre(i);
-            b.x0 = b.x0.min(cx);
-            b.x1 = b.x1.max(cx);
-            b.y0 = b.y0.min(cy);
-            b.y1 = b.y1.max(cy);
+        let width = self.dims[0].max(1) as usize;
+        for (row, line) in cells.chunks(width).enumerate() {
+            let Some(first) = line.iter().position(|&c| c != 0) else {
+                continue;
+            };
+            let last = line.iter().rposition(|&c| c != 0).unwrap_or(first);
+            for x in [first, last] {
+                let [cx, cy] = self.centre(row * width + x);
+                b.x0 = b.x0.min(cx);
+                b.x1 = b.x1.max(cx);
+                b.y0 = b.y0.min(cy);
+                b.y1 = b.y1.max(cy);
+            }
         }
         if b.x1 < b.x0 {
             return None;
@@ -247,5 +256,48 @@ mod tests {
                 y1: 5.0
             })
         );
+    }
+
+    #[test]
+    fn content_bounds_are_those_of_every_occupied_cell() {
+        // The rows' ends give the bounds that placing every occupied cell gives, on both planar
+        // lattices (odd hex rows are shifted) and for cells scattered by a fixed pattern.
+        for kind in [LatticeKind::Square, LatticeKind::Hex] {
+            let g = Grid::new(kind, [7, 6, 1]);
+            for seed in 1..40u32 {
+                let cells: Vec<u8> = (0..42u32)
+                    .map(|i| u8::from((i * 7 + seed * 13) % (seed % 5 + 2) == 0 && i % seed != 3))
+                    .collect();
+                let mut want: Option<Bounds> = None;
+                for i in (0..cells.len()).filter(|&i| cells[i] != 0) {
+                    let [cx, cy] = g.centre(i);
+                    let b = want.get_or_insert(Bounds {
+                        x0: cx,
+                        y0: cy,
+                        x1: cx,
+                        y1: cy,
+                    });
+                    *b = Bounds {
+                        x0: b.x0.min(cx),
+                        y0: b.y0.min(cy),
+                        x1: b.x1.max(cx),
+                        y1: b.y1.max(cy),
+                    };
+                }
+                let pad = 2.0
+                    + if kind == LatticeKind::Hex {
+                        HEX_RADIUS
+                    } else {
+                        0.5
+                    };
+                let want = want.map(|b| Bounds {
+                    x0: b.x0 - pad,
+                    y0: b.y0 - pad,
+                    x1: b.x1 + pad,
+                    y1: b.y1 + pad,
+                });
+                assert_eq!(g.content_bounds(&cells), want, "{kind:?} {seed}");
+            }
+        }
     }
 }
