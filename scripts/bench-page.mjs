@@ -260,16 +260,10 @@ export const PAGE_OVER_WASM = 0.8;
 // wasm under Node, prints each run (JSON, a line each) and the page's rate over the stepper's, and
 // fails when a workload plays below PAGE_OVER_WASM of it.
 if (process.argv[1] === new URL(import.meta.url).pathname) {
-  const { readdirSync } = await import('node:fs');
-  const { measure, scenarioJson } = await import('./bench-wasm.mjs');
+  const { measure, scenarioJson, workloadFiles } = await import('./bench-wasm.mjs');
   const wasm = await import('../web/pkg/kumiki_wasm.js');
   const root = new URL('..', import.meta.url).pathname;
-  const files = process.argv.slice(2).length
-    ? process.argv.slice(2)
-    : readdirSync(`${root}tests/bench`)
-        .filter((f) => f.endsWith('.json'))
-        .sort()
-        .map((f) => `tests/bench/${f}`);
+  const files = workloadFiles(process.argv.slice(2));
   const specs = files.map((f) => JSON.parse(readFileSync(`${root}${f}`, 'utf8'))).filter((s) => s.page);
   const page = await benchPage(
     specs,

@@ -2,7 +2,7 @@
 // times them natively: fresh runs, warm-up steps, one uncounted repeat first (so V8 has tiered
 // the code up), median rate over the repeats (a repeat of a short workload sums several runs).
 // Usage: node scripts/bench-wasm.mjs tests/bench/a.json [more.json ...]   (one JSON line each)
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
 import * as lab from '../web/pkg/kumiki_lab.js';
@@ -24,6 +24,15 @@ const median = (xs) => {
   const n = s.length;
   return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
 };
+
+/** The workload files named on the command line (`args`), or else every tests/bench/*.json, sorted. */
+export function workloadFiles(args) {
+  if (args.length > 0) return args;
+  return readdirSync(new URL('../tests/bench/', import.meta.url))
+    .filter((f) => f.endsWith('.json'))
+    .sort()
+    .map((f) => `tests/bench/${f}`);
+}
 
 /**
  * The workload's scenario JSON: its preset or its own scenario, with its `set` paths changed the

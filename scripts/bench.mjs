@@ -3,20 +3,15 @@
 // its budget, the page's in-page rates, and the gzipped wasm sizes.
 // Usage: node scripts/bench.mjs [tests/bench/a.json ...]   (default: every workload)
 import { execFileSync } from 'node:child_process';
-import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
-import { measure, scenarioJson } from './bench-wasm.mjs';
+import { measure, scenarioJson, workloadFiles } from './bench-wasm.mjs';
 import { benchLoad, printLoad } from './bench-load.mjs';
 import * as lab from '../web/pkg/kumiki_lab.js';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 
 const root = new URL('..', import.meta.url).pathname;
-const files = process.argv.slice(2).length
-  ? process.argv.slice(2)
-  : readdirSync(`${root}tests/bench`)
-      .filter((f) => f.endsWith('.json'))
-      .sort()
-      .map((f) => `tests/bench/${f}`);
+const files = workloadFiles(process.argv.slice(2));
 const specs = files.map((f) => ({ file: f, ...JSON.parse(readFileSync(`${root}${f}`, 'utf8')) }));
 
 const fmt = (v, digits = 3) => (v === undefined || v === null || Number.isNaN(v) ? '–' : Number(v).toPrecision(digits));
