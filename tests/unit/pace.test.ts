@@ -70,13 +70,18 @@ beforeEach(async () => {
 
 afterEach(() => pace.setPlaying(false));
 
+/** The stand-ins held as the worker's run and view, the run started and its first frame taken. */
+function started<R extends { sim: unknown; viewer: unknown }>(run: R): R {
+  host.run.sim = run.sim as never;
+  host.run.viewer = run.viewer as never;
+  pace.started();
+  pace.acknowledged();
+  return run;
+}
+
 describe('the play loop', () => {
   it('at max speed steps on without waiting for a frame, and draws once for each frame the page frees', async () => {
-    const run = standIns(2);
-    host.run.sim = run.sim as never;
-    host.run.viewer = run.viewer as never;
-    pace.started();
-    pace.acknowledged();
+    const run = started(standIns(2));
     const drawsAtStart = run.drawnAt.length;
     pace.setSpeed(Infinity);
     pace.play();
@@ -104,11 +109,7 @@ describe('the play loop', () => {
   });
 
   it('below max speed draws on the worker animation frames, and pausing at max draws there too', async () => {
-    const run = standIns(1);
-    host.run.sim = run.sim as never;
-    host.run.viewer = run.viewer as never;
-    pace.started();
-    pace.acknowledged();
+    const run = started(standIns(1));
     pace.setSpeed(100);
     pace.play();
     await run.until(10);
