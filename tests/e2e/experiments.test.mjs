@@ -195,7 +195,8 @@ test('an edited experiment travels by link and by file, survives a reload, and e
   assert.equal(opened, cliCsv(file, opened));
 
   await page.reload();
-  await page.waitForFunction(() => document.querySelector('#experiment-json').value.includes('e2e-travel'));
+  // After a reload the experiments mount after the first frame: wait for them, then for the text.
+  await page.waitForFunction(() => document.querySelector('#experiment-json')?.value.includes('e2e-travel'));
   assert.equal(await page.inputValue('#experiment-json'), text);
   assert.deepEqual(problems, []);
   await context.close();

@@ -113,6 +113,7 @@ describe('a shared link', () => {
     await page.waitForSelector('#intro[open]');
     assert.equal(await page.textContent('#intro-title'), 'Class 3: exercise');
     assert.equal(await page.textContent('#intro-model'), 'amas');
+    await page.waitForSelector('#intro-modified[data-checked]', { state: 'attached' });
     assert.ok(await page.isHidden('#intro-modified'), 'a scenario named after no preset is not marked');
     // biome-ignore lint/performance/useDomNodeTextContent: innerText is the text as laid out, line breaks included.
     assert.equal(await page.$eval('#intro-description', (p) => p.innerText), 'Line one.\nLine two, with <b>markup</b> that stays text.');
@@ -127,6 +128,8 @@ describe('a shared link', () => {
     const edited = wasm.encode_link(withKeys({ robots: 3 }));
     const { page, context, problems } = await openPage(s.browser, `${s.server.url}#${edited}`, { keepIntro: true });
     await page.waitForSelector('#intro[open]');
+    // The dialog opens at once; the mark follows once the catalogue has said what differs.
+    await page.waitForSelector('#intro-modified[data-checked]', { state: 'attached' });
     assert.equal(await page.textContent('#intro-modified'), 'Modified from the preset “amas-L”: robots: 5 → 3. The description below is the preset’s.');
     assert.ok(await page.isVisible('#intro-modified'));
     assert.deepEqual(await audit(page, 'an edited preset introduced'), []);
@@ -136,6 +139,7 @@ describe('a shared link', () => {
     const same = await openPage(s.browser, `${s.server.url}#${wasm.encode_link(JSON.stringify(amas()))}`, { keepIntro: true });
     await same.page.waitForSelector('#intro[open]');
     assert.equal(await same.page.textContent('#intro-title'), 'amas-L');
+    await same.page.waitForSelector('#intro-modified[data-checked]', { state: 'attached' });
     assert.ok(await same.page.isHidden('#intro-modified'));
     await same.context.close();
   });

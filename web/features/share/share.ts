@@ -46,8 +46,15 @@ export function setupShare(page: PageContext) {
     return true;
   }
 
-  /** Whoever opens a shared link sees its name and description first (once the catalogue says whether it is an edited preset). */
-  async function introduce(json: string) {
+  /** The introduction whose mark is being worked out: a later one's mark is not overwritten by an earlier one's. */
+  let introductions = 0;
+
+  /**
+   * Whoever opens a shared link sees its name and description first, at once, as the page becomes
+   * interactive (a dialog that came later would take a click meant for the page); whether it is
+   * an edited preset is added when the catalogue has said so (`data-checked` then marks the line).
+   */
+  function introduce(json: string) {
     if (embedded) return;
     const doc = JSON.parse(json) as { name?: string; description?: string; model?: string; exercise?: Exercise };
     const exercise = doc.exercise;
@@ -63,7 +70,15 @@ export function setupShare(page: PageContext) {
         el('p', { class: 'exercise-goal' }, `Goal: ${core.goalWords(exercise.goal) ?? exercise.goal}`),
       );
     else description.append(el('p', { text: displayText(doc.description ?? '', 4000, true) || 'It comes with no description.' }));
-    byId('intro-modified').hidden = !(await markModified(json, doc, exercise !== undefined));
+    const modified = byId('intro-modified');
+    modified.hidden = true;
+    delete modified.dataset.checked;
+    const introduction = ++introductions;
+    void markModified(json, doc, exercise !== undefined).then((marked) => {
+      if (introduction !== introductions) return;
+      modified.hidden = !marked;
+      modified.dataset.checked = 'true';
+    });
     const dialog = byId<HTMLDialogElement>('intro');
     if (!dialog.open) dialog.showModal();
   }
