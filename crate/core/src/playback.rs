@@ -347,6 +347,16 @@ mod tests {
         || 0.0
     }
 
+    /// The steps of the clicks the scenario in play holds, in order.
+    fn click_steps(p: &Playback) -> Vec<u64> {
+        p.run()
+            .scenario()
+            .disturbances
+            .iter()
+            .map(|d| d.at)
+            .collect()
+    }
+
     #[test]
     fn going_back_reaches_the_state_passed_through() {
         let mut p = amas_l();
@@ -388,15 +398,8 @@ mod tests {
             .unwrap();
         assert_eq!(p.furthest(), 30, "the fork ends the timeline at the click");
         assert_eq!(p.series().last_step(), Some(30), "and the series");
-        let kept: Vec<u64> = p
-            .run()
-            .scenario()
-            .disturbances
-            .iter()
-            .map(|d| d.at)
-            .collect();
         assert_eq!(
-            kept,
+            click_steps(&p),
             [30, 90],
             "the later click is dropped, the authored one stays"
         );
@@ -443,15 +446,8 @@ mod tests {
         );
         p.seek(10);
         p.apply(remove()).unwrap();
-        let at: Vec<u64> = p
-            .run()
-            .scenario()
-            .disturbances
-            .iter()
-            .map(|d| d.at)
-            .collect();
         assert_eq!(
-            at,
+            click_steps(&p),
             [10],
             "the click made after rewinding replaced the later one"
         );

@@ -75,13 +75,13 @@ pub fn format_number(value: f64) -> String {
 pub fn preset_changes(scenario_json: &str, check_up_to_cells: f64) -> Result<JsValue, JsError> {
     let doc: Value = serde_json::from_str(scenario_json).map_err(js_err)?;
     let named = doc["name"].as_str().unwrap_or("");
-    if !presets::names().any(|p| p == named)
-        || kumiki_core::shape::estimate_cells(&doc) as f64 > check_up_to_cells
-    {
+    if !presets::names().any(|p| p == named) {
         return to_js(&None::<Vec<String>>);
     }
-    let s = kumiki_core::Scenario::from_value(doc).map_err(js_err)?;
-    to_js(&presets::changes_from_preset(&s))
+    match read_unless_large(doc, check_up_to_cells)? {
+        Some(s) => to_js(&presets::changes_from_preset(&s)),
+        None => to_js(&None::<Vec<String>>),
+    }
 }
 
 /// How a scenario (its JSON text) differs from `preset_json`, the built-in scenario it is named
@@ -94,12 +94,25 @@ pub fn scenario_changes(
     check_up_to_cells: f64,
 ) -> Result<JsValue, JsError> {
     let doc: Value = serde_json::from_str(scenario_json).map_err(js_err)?;
-    if kumiki_core::shape::estimate_cells(&doc) as f64 > check_up_to_cells {
+    let Some(scenario) = read_unless_large(doc, check_up_to_cells)? else {
         return to_js(&None::<Vec<String>>);
-    }
-    let scenario = kumiki_core::Scenario::from_value(doc).map_err(js_err)?;
+    };
     let preset = kumiki_core::Scenario::from_json(preset_json).map_err(js_err)?;
     to_js(&Some(presets::changes_between(&preset, &scenario)))
+}
+
+/// The scenario `doc` holds, or `None` when its shapes span more than `check_up_to_cells` cells:
+/// the page's thread never reads a large one (its worker does).
+fn read_unless_large(
+    doc: Value,
+    check_up_to_cells: f64,
+) -> Result<Option<kumiki_core::Scenario>, JsError> {
+    if kumiki_core::shape::estimate_cells(&doc) as f64 > check_up_to_cells {
+        return Ok(None);
+    }
+    kumiki_core::Scenario::from_value(doc)
+        .map(Some)
+        .map_err(js_err)
 }
 
 /// Every model's rule slots: `[{model, slot: {name, title, about, input, output, paper, random}}]`

@@ -2,6 +2,7 @@
 // exports saved as files: the Experiments tab's buttons that take things in and out of the page.
 import { experimentInfo, packExperiment } from '../../lab';
 import { byId, download } from '../../widgets/dom';
+import { copyLink } from '../../widgets/copylink';
 import * as core from '../../wasm';
 
 type Format = 'csv' | 'json' | 'traces';
@@ -29,14 +30,7 @@ export function shareFiles({ editor, status, problem, showEdited, exports }: Fil
     }
     const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
     history.replaceState(null, '', `#${payload}`);
-    linkButton.dataset.link = url;
-    try {
-      await navigator.clipboard.writeText(url);
-      linkButton.textContent = 'Link copied';
-    } catch {
-      linkButton.textContent = 'Link in address bar';
-    }
-    setTimeout(() => (linkButton.textContent = 'Copy experiment link'), 2000);
+    await copyLink(linkButton, url, 'Copy experiment link');
   });
   byId<HTMLButtonElement>('experiment-save').addEventListener('click', () => {
     let name = 'experiment';

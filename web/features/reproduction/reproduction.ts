@@ -10,6 +10,7 @@ import { experimentInfo, experimentJson, loadLab, reproduceClaim, reproductionRe
 import { ExperimentPool } from '../../lab/pool';
 import type { PageContext } from '../../page/context';
 import { clear, el, formatNumber } from '../../widgets/dom';
+import { copyLink } from '../../widgets/copylink';
 import * as core from '../../wasm';
 
 /** Each model's section of the report, once the lab module has loaded. */
@@ -136,14 +137,7 @@ function claimRow(model: string, c: Claim) {
   copy.addEventListener('click', async () => {
     const url = claimLink(c.id);
     history.replaceState(null, '', `${CLAIM_PREFIX}${encodeURIComponent(c.id)}`);
-    copy.dataset.link = url;
-    try {
-      await navigator.clipboard.writeText(url);
-      copy.textContent = 'Link copied';
-    } catch {
-      copy.textContent = 'Link in address bar';
-    }
-    setTimeout(() => (copy.textContent = 'Copy link'), 2000);
+    await copyLink(copy, url, 'Copy link');
   });
   actions.append(copy);
   row.append(

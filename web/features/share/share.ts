@@ -3,6 +3,7 @@
 import type { PageContext } from '../../page/context';
 import type { Exercise } from '../../scenario.gen';
 import { byId, clear, displayText, el, markup } from '../../widgets/dom';
+import { copyLink } from '../../widgets/copylink';
 import { renderMarkdown } from '../../widgets/markdown';
 import * as core from '../../wasm';
 import introHtml from './intro.html?raw';
@@ -93,15 +94,7 @@ export function setupShare(page: PageContext) {
     }
     const url = `${location.origin}${location.pathname}${location.search}#${payload}`;
     replaceHash(payload);
-    const button = byId('copy-link');
-    try {
-      await navigator.clipboard.writeText(url);
-      button.textContent = 'Link copied';
-    } catch {
-      button.textContent = 'Link in address bar';
-    }
-    button.dataset.link = url;
-    setTimeout(() => (button.textContent = 'Copy link'), 2000);
+    await copyLink(byId('copy-link'), url, 'Copy link');
   });
 
   /** Opens the scenario of the link in the address bar; false when it is bad (the banner says why). */
