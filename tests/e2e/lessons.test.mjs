@@ -37,6 +37,8 @@ describe('lessons', () => {
   test('the gallery lists every lesson with its section; one opens with its exercise, fails, then meets its goal', async () => {
     const { page, context, problems } = await openPage(s.browser, s.server.url);
     await page.click('#open-gallery');
+    // The gallery lists the catalogue once it has arrived (the page fetches it when first needed).
+    await page.waitForSelector('#gallery-list [data-lesson]');
     const lessons = wasm.lessons();
     assert.ok(lessons.length >= 8);
     const cards = await page.$$eval('#gallery-list [data-lesson]', (cs) => cs.map((c) => [c.dataset.lesson, c.textContent]));

@@ -164,14 +164,17 @@ export function setupTools(page: PageContext): Tools {
     tools.after(el('p', { class: 'hint recorded' }, `${count} scheduled or recorded disturbance${count > 1 ? 's' : ''}. `, clearButton));
   }
 
+  // A click counts from its step on: rewound past (or played past again), the exercise's answer
+  // changes, so the tools are asked again whenever the run's step crosses one of the scenario's.
+  // The count is of the clicks the scenario held at the last frame: a click recorded since
+  // (a frame may arrive before it is) makes it stale, and the next frame counts afresh.
+  let reached = -1;
   session.on('loaded', render);
   session.on('recorded', () => {
+    reached = -1;
     refresh();
     renderDisturbanceNote();
   });
-  // A click counts from its step on: rewound past (or played past again), the exercise's answer
-  // changes, so the tools are asked again whenever the run's step crosses one of the scenario's.
-  let reached = -1;
   session.on('frame', (frame) => {
     if (!session.doc().exercise) return;
     const list = (session.doc().disturbances as { at?: number }[] | undefined) ?? [];
