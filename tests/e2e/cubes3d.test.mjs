@@ -3,7 +3,7 @@
 // (errors that name the line, derive from shape), links, the Canvas 2D fallback and a tablet.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { loadWasm, openPage, session, settle } from './harness.mjs';
+import { afterDraw, loadWasm, openPage, session, settle } from './harness.mjs';
 
 const wasm = loadWasm();
 
@@ -68,11 +68,10 @@ describe('the 3-D view', () => {
     await settle(page);
     const turned = await pixels(page);
     assert.ok(changed(framed, turned) > 0.02, 'orbiting changes the picture');
-    for (let i = 0; i < 10; i++) await page.click('#zoom-out');
-    await settle(page);
+    for (let i = 0; i < 9; i++) await page.click('#zoom-out');
+    await afterDraw(page, () => page.click('#zoom-out'));
     const far = colourful(await pixels(page));
-    await page.click('#zoom-fit');
-    await settle(page);
+    await afterDraw(page, () => page.click('#zoom-fit'));
     const fitted = colourful(await pixels(page));
     assert.ok(fitted > 0.02 && fitted > 4 * far, `Fit brings the units back (${far} → ${fitted})`);
     assert.equal(Number(await page.textContent('#step-count')), 0, 'dragging does not step');

@@ -139,6 +139,19 @@ export async function settle(page) {
   await animationFrames(page, 2);
 }
 
+/**
+ * Does `action` (a click, a camera move) and waits until the worker has drawn a frame after it
+ * (its count of frames, body[data-work]) and the page has composited it: the view is drawn by the
+ * worker, so two of the page's animation frames alone may still show the frame before.
+ */
+export async function afterDraw(page, action) {
+  const drawn = () => page.evaluate(() => JSON.parse(document.body.dataset.work ?? '{}').frames ?? 0);
+  const before = await drawn();
+  await action();
+  await page.waitForFunction((n) => (JSON.parse(document.body.dataset.work ?? '{}').frames ?? 0) > n, before);
+  await settle(page);
+}
+
 export async function waitForSteps(page, atLeast, timeout = 20000) {
   await page.waitForFunction((n) => Number(document.querySelector('#step-count').textContent.replace(/,/g, '')) >= n, atLeast, { timeout });
   return stepCount(page);
