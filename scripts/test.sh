@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # npm test: the gates (formatting, lints), native tests, the wasm suites in headless Node, the type
 # check, the TypeScript unit tests (the features without a browser, on the page's wasm module), then
-# the browser end-to-end tests in headless Chromium against a fresh build. The gates come first,
-# the quickest first: they fail on what a review would. On two cores the rest overlaps: the page
-# builds while the lints and native tests run, and most browser files run while the wasm suites and
-# the reproduction report are checked.
+# the browser end-to-end tests in headless Chromium against a fresh build. The formatting gates come
+# first, the quickest first: they fail on what a review would. Clippy lints the crates as the test
+# builds compile them (it is the compiler's wrapper there, as `cargo clippy` makes it for a check),
+# so the code is analysed once, not once to lint and again to test. On two cores the rest overlaps:
+# the page builds while the native tests build and run, and most browser files run while the wasm
+# suites and the reproduction report are checked.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each step's header says how long the test has run so far and the CPU seconds its steps have
@@ -56,14 +58,14 @@ browser_log=$(mktemp)
 browser_tests=
 trap 'kill $page_build $browser_tests 2>/dev/null || true; rm -f "$page_log" "$browser_log"' EXIT
 
-step "gate: cargo clippy -D warnings (native)"
-cargo clippy --workspace --all-targets --quiet -- -D warnings
+# `cargo clippy -- -D warnings` runs clippy-driver as the workspace crates' compiler with these
+# arguments; the test builds below do the same, so every target clippy would check (--all-targets)
+# is linted while it is built, and the run after builds nothing again.
+lint=(env RUSTC_WORKSPACE_WRAPPER=clippy-driver CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__)
 
-step "gate: cargo clippy -D warnings (wasm32)"
-cargo clippy -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --all-targets --quiet -- -D warnings
-
-step "native tests (cargo test)"
-cargo test --workspace --quiet
+step "native tests, clippy -D warnings as they build (cargo test)"
+"${lint[@]}" cargo test --workspace --all-targets --no-run --quiet
+"${lint[@]}" cargo test --workspace --quiet
 
 # The command line in the quick profile (the release build without link-time optimisation: the
 # same results, built in a fraction of the time); the browser tests call it too.
@@ -98,9 +100,10 @@ step "browser tests (headless Chromium), in the background: ${#together[@]} file
 node --test --test-concurrency=3 "${together[@]}" >"$browser_log" 2>&1 &
 browser_tests=$!
 
-step "wasm tests (wasm-bindgen-test in headless Node)"
+step "wasm tests (wasm-bindgen-test in headless Node), clippy -D warnings (wasm32) as they build"
+"${lint[@]}" cargo test -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown --all-targets --no-run --quiet
 # Not --quiet: cargo would pass it on to wasm-bindgen-test-runner, which refuses it.
-CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
+"${lint[@]}" CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test -p kumiki-wasm -p kumiki-lab --target wasm32-unknown-unknown
 
 step "the reproduction report is current (kumiki reproduce --check)"
