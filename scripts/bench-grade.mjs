@@ -9,9 +9,10 @@
 // and input delay while it grades, against their goals (issue 39).
 // Alone: node scripts/bench-grade.mjs (KUMIKI_BIN: the CLI to time, default target/release/kumiki).
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { loadavg, tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { readCatalogue } from './catalog.mjs';
 
 const LESSON = 'lesson-amas-robots';
 /** The class `kumiki check` grades in one command. */
@@ -23,8 +24,7 @@ export const MAIN_THREAD_GOAL_MS = 100;
 
 /** `count` hand-in links of the lesson (its text as the page fetches it: scripts/catalog.mjs), made with the loaded wasm module. */
 export function handins(wasm, count) {
-  const catalog = JSON.parse(readFileSync(new URL('../web/pkg/catalog.json', import.meta.url), 'utf8'));
-  const lesson = JSON.parse(catalog.lessonText[LESSON]);
+  const lesson = JSON.parse(readCatalogue().lessonText[LESSON]);
   return Array.from({ length: count }, (_, i) => {
     const doc = structuredClone(lesson);
     doc.name = `Student ${i + 1}`;

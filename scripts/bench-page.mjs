@@ -129,6 +129,7 @@ async function browserStepperRate(browser, server, json, seconds) {
           const m = await import(URL.createObjectURL(new Blob([glue], { type: 'text/javascript' })));
           m.initSync({ module: await WebAssembly.compileStreaming(fetch(wasmUrl)) });
           const run = new m.Stepper(json);
+          // The play loop's pace (web/sim/host.ts: timedAdvance, stepsPerCall), which this worker cannot import.
           let perStep = 1;
           const play = (ms) => {
             const until = performance.now() + ms;

@@ -6,13 +6,14 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
 import * as lab from '../web/pkg/kumiki_lab.js';
+import { readCatalogue } from './catalog.mjs';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 import * as wasmRules from '../web/pkg/kumiki_wasm_rules.js';
 
 const root = new URL('..', import.meta.url);
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_bg.wasm', root))) });
-/** The built-in scenarios' texts, as the page fetches them (its module leaves them out: scripts/catalog.mjs). */
-const presetText = JSON.parse(readFileSync(fileURLToPath(new URL('web/pkg/catalog.json', root)), 'utf8')).presetText;
+/** The built-in scenarios' texts, as the page fetches them (its module leaves them out). */
+const { presetText } = readCatalogue();
 // The page's second simulation module, with the rule scripts' engine: the workloads with rules
 // run in it, as the page runs a scenario with rules.
 wasmRules.initSync({ module: readFileSync(fileURLToPath(new URL('web/pkg/kumiki_wasm_rules_bg.wasm', root))) });

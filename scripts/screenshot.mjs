@@ -9,12 +9,13 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
 import { launch, serve } from '../tests/e2e/harness.mjs';
+import { readCatalogue } from './catalog.mjs';
 
 wasm.initSync({ module: readFileSync(fileURLToPath(new URL('../web/pkg/kumiki_wasm_bg.wasm', import.meta.url))) });
 const [preset = 'amas-L', steps = '120', overlay = '', file = 'docs/screenshot.png', size = '1366x768'] = process.argv.slice(2);
 const [width, height] = size.split('x').map(Number);
 // The built-in scenarios and lessons, as the page fetches them (its module leaves them out: scripts/catalog.mjs).
-const catalog = JSON.parse(readFileSync(fileURLToPath(new URL('../web/pkg/catalog.json', import.meta.url)), 'utf8'));
+const catalog = readCatalogue();
 const link = wasm.encode_link(preset.startsWith('lesson-') ? catalog.lessonText[preset] : catalog.presetText[preset]);
 const server = await serve('/');
 const browser = await launch();

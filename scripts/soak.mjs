@@ -22,10 +22,11 @@
 import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import * as wasm from '../web/pkg/kumiki_wasm.js';
+import { readCatalogue } from './catalog.mjs';
 
 const root = new URL('..', import.meta.url).pathname;
-/** The built-in scenarios, as the page fetches them (its module leaves them out: scripts/catalog.mjs). */
-const catalog = JSON.parse(readFileSync(`${root}web/pkg/catalog.json`, 'utf8'));
+/** The built-in scenarios, as the page fetches them (its module leaves them out). */
+const catalog = readCatalogue();
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(`--${name}`);
   return i > 0 ? process.argv[i + 1] : fallback;

@@ -57,6 +57,8 @@ let stepMs = 0;
 /** About how long a step takes now. */
 let perStep = 1;
 export const msPerStep = () => perStep;
+/** How many steps one call into the run should take: about 2 ms of them, at least one. */
+export const stepsPerCall = () => Math.max(1, Math.floor(2 / Math.max(perStep, 1e-4)));
 
 /** Steps the run `count` steps, timing them for the page and for the pace; undefined if it failed. */
 export function timedAdvance(s: Sim, count: number): number | undefined {

@@ -7,7 +7,7 @@ import type { Sim } from '../pkg/kumiki_wasm.js';
 import type { Frame, Verdict } from '../contract.gen';
 import type { Drawn } from '../types';
 import type { RenderStats } from '../view.gen';
-import { guard, inLaterTask, msPerStep, panicked, post, run, SLICE_MS, scope, timedAdvance, work } from './host';
+import { guard, inLaterTask, msPerStep, panicked, post, run, SLICE_MS, scope, stepsPerCall, timedAdvance, work } from './host';
 /**
  * The state hash costs a pass over the state: while playing it is refreshed at most this often,
  * and no more often than keeps it under HASH_SHARE of the time (a 16 M-cell AMAS takes 0.1 s to
@@ -340,7 +340,7 @@ function followNow(): boolean {
   const start = performance.now();
   let moved = false;
   while (s.steps() < target && !s.finished() && performance.now() - start < SLICE_MS) {
-    const n = timedAdvance(s, Math.min(target - s.steps(), Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4)))));
+    const n = timedAdvance(s, Math.min(target - s.steps(), stepsPerCall()));
     if (!n) break;
     moved = true;
   }
@@ -366,8 +366,8 @@ function tick() {
     let taken = 0;
     while (budget >= 1 && performance.now() - start < SLICE_MS && !drawOverdue()) {
       const want = unlimited
-        ? Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4)))
-        : Math.min(Math.floor(budget), Math.max(1, Math.floor(2 / Math.max(msPerStep(), 1e-4))));
+        ? stepsPerCall()
+        : Math.min(Math.floor(budget), stepsPerCall());
       const n = timedAdvance(s, want);
       if (n === undefined) return;
       taken += n;
