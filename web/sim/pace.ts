@@ -365,9 +365,7 @@ function tick() {
     lastTick = start;
     let taken = 0;
     while (budget >= 1 && performance.now() - start < SLICE_MS && !drawOverdue()) {
-      const want = unlimited
-        ? stepsPerCall()
-        : Math.min(Math.floor(budget), stepsPerCall());
+      const want = unlimited ? stepsPerCall() : Math.min(Math.floor(budget), stepsPerCall());
       const n = timedAdvance(s, want);
       if (n === undefined) return;
       taken += n;
